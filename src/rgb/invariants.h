@@ -1,0 +1,19 @@
+#pragma once
+// Checks the global invariants of an RGB triangulation (spec §1.6) and reports each violation.
+#include <string>
+#include <vector>
+
+namespace rgb {
+
+class Mesh;
+
+struct InvariantReport {
+    std::vector<std::string> violations;  // one readable line per violation, naming faces/vertices
+    bool ok() const { return violations.empty(); }
+};
+
+// Edge agreement from both sides, vertex levels per face type, angle sums, manifold adjacency and
+// orientation, no two blues of one level sharing a red edge, counts of live slots.
+InvariantReport check_invariants(const Mesh& mesh, std::size_t max_reports = 50);
+
+}  // namespace rgb

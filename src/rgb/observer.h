@@ -1,0 +1,26 @@
+#pragma once
+// The one narrow interface through which every operator reports what it changed. The renderer uses it
+// to re-upload only dirty ranges; the editor uses it to record undo; tests use it to track vertex
+// identity for the uniform Loop oracle.
+//
+// Order within one operator: face_removed for each deleted face (the face is still readable), then
+// vertex_removed, then vertex_added, then face_added for each new face (already readable). The displayed
+// position of a vertex changes only when a face incident to it is added, so consumers refresh the
+// vertices of added faces.
+#include "rgb/handles.h"
+
+namespace rgb {
+
+class Mesh;
+
+class MeshObserver {
+public:
+    virtual ~MeshObserver() = default;
+    // v was inserted on the edge (a, b) of the next coarser uniform level.
+    virtual void vertex_added(const Mesh&, VertexId /*v*/, VertexId /*a*/, VertexId /*b*/) {}
+    virtual void vertex_removed(const Mesh&, VertexId /*v*/) {}
+    virtual void face_added(const Mesh&, FaceId) {}
+    virtual void face_removed(const Mesh&, FaceId) {}
+};
+
+}  // namespace rgb
