@@ -1,0 +1,32 @@
+#pragma once
+// The subcommands of the `rgbsub` executable. Each one lives in command_<name>.cpp and defines
+//     int cli::run_<name>(std::span<const std::string> args)
+// where args are the words after the subcommand's name. To add one, write that file and add one
+// line to RGBSUB_COMMANDS below: it both declares run_<name> and lists it in `rgbsub --help`.
+#include <span>
+#include <stdexcept>
+#include <string>
+
+namespace cli {
+
+// Exit codes shared by every subcommand.
+inline constexpr int exit_ok = 0;
+inline constexpr int exit_usage = 1;      // malformed command line
+inline constexpr int exit_bad_input = 2;  // the input (file, environment) cannot be used
+inline constexpr int exit_io_failure = 3; // reading or writing a file failed
+
+// Thrown for a malformed command line; the dispatcher prints it with a pointer to --help and
+// exits with exit_usage.
+struct UsageError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// X(name, one-line description); the first entry is what `rgbsub` runs without a subcommand.
+#define RGBSUB_COMMANDS(X) \
+    X(edit, "open the editor on an OBJ mesh (the default when no subcommand is given)")
+
+#define RGBSUB_DECLARE_COMMAND(name, description) int run_##name(std::span<const std::string> args);
+RGBSUB_COMMANDS(RGBSUB_DECLARE_COMMAND)
+#undef RGBSUB_DECLARE_COMMAND
+
+}  // namespace cli
