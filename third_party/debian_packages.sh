@@ -1,0 +1,32 @@
+# Sourced by run.sh and test.sh: the Debian 12 packages rgbsub needs and an idempotent installer.
+
+# Everything the CMake configure step finds (tests and benchmarks are part of the project).
+RGBSUB_BUILD_PACKAGES=(
+  build-essential cmake pkg-config python3-glad
+  libglfw3-dev libglm-dev libimgui-dev libstb-dev libtinyobjloader-dev libosmesa6-dev libgl-dev
+  libgtest-dev libbenchmark-dev libopenmesh-dev
+)
+# Only the test suite uses these: a virtual display, input injection, reference meshes, sanitizers.
+RGBSUB_TEST_PACKAGES=(xvfb xauth xdotool imagemagick assimp-testmodels clang libclang-rt-14-dev)
+
+# Installs whichever of the given packages are missing; apt-get runs only when one is.
+# Without root or sudo it prints the command to run and exits 2.
+install_missing_packages() {
+  local missing=() package
+  for package in "$@"; do
+    if [[ "$(dpkg-query -W -f='${db:Status-Abbrev}' "$package" 2>/dev/null)" != ii* ]]; then
+      missing+=("$package")
+    fi
+  done
+  [[ ${#missing[@]} -eq 0 ]] && return 0
+
+  local install="apt-get update && DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends ${missing[*]}"
+  if [[ "$(id -u)" -eq 0 ]]; then
+    bash -c "$install"
+  elif command -v sudo >/dev/null; then
+    sudo bash -c "$install"
+  else
+    echo "Missing Debian packages; as root, run: $install" >&2
+    exit 2
+  fi
+}
