@@ -16,7 +16,7 @@ build_and_test() {
   shift
   echo "=== $dir: $*"
   if cmake -S . -B "$dir" "$@" >/dev/null && cmake --build "$dir" -j"$jobs"; then
-    (cd "$dir" && ctest --output-on-failure -j2) || failed=1
+    (cd "$dir" && ctest --output-on-failure --no-tests=error -j2) || failed=1
   else
     echo "=== $dir: build failed" >&2
     failed=1
