@@ -1,0 +1,14 @@
+#include "io/number_format.h"
+
+#include <charconv>
+
+namespace rgbio {
+
+void append_double(std::string& out, double x) {
+    char buffer[32];  // the longest shortest form, e.g. -2.2250738585072014e-308, has 24 characters
+    const auto result = std::to_chars(buffer, buffer + sizeof buffer, x);
+    out += ' ';
+    out.append(buffer, result.ptr);
+}
+
+}  // namespace rgbio
