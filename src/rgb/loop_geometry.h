@@ -1,7 +1,6 @@
 #pragma once
 // Exact Loop positions of the vertices of an RGB mesh without a hierarchy (spec §4.2, §4.5, §4.6).
 #include <optional>
-#include <vector>
 
 #include <glm/vec3.hpp>
 
@@ -24,10 +23,5 @@ glm::dvec3 displayed_position(const Mesh& mesh, VertexId v);
 // p^inf(v) if the ring of v at its own level is present in the current mesh (computing and caching
 // it if needed); nullopt otherwise. Never changes the topology.
 std::optional<glm::dvec3> try_limit_position(const Mesh& mesh, VertexId v);
-
-// The ring of v in the uniform mesh of its own level, found by topological-angle navigation (§8.3):
-// 6 vertices for interior vertices of level >= 1, the base valence for base vertices, 2 for boundary
-// vertices (its boundary neighbours). Empty if some ring vertex is not in the current mesh.
-std::vector<VertexId> uniform_ring(const Mesh& mesh, VertexId v);
 
 }  // namespace rgb

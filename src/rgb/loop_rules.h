@@ -1,7 +1,6 @@
 #pragma once
-// Loop subdivision weights with Loop's original vertex weight (spec §4.1, §4.2). Shared by the core
-// and by the tests' independent uniform Loop oracle is NOT intended: the oracle has its own copy of
-// the formulas on purpose.
+// Loop subdivision weights with Loop's original vertex weight (spec §4.1, §4.2). The tests' uniform
+// Loop oracle deliberately does not use these: it has its own copy of the formulas.
 namespace rgb {
 
 // alpha_n = n * beta_n = 5/8 - (3 + 2 cos(2 pi / n))^2 / 64.

@@ -127,7 +127,9 @@ public:
 
     // ---- low-level editing, used by the operators; these keep adjacency but not RGB invariants ----
     VertexId add_vertex(int level, const glm::dvec3& insertion_position, bool boundary, VertexId a, VertexId b);
-    void set_limit_position(VertexId v, const glm::dvec3& p);
+    // Caches p^inf(v). Logically const: the limit is a function of the base mesh alone, computed on
+    // first need (loop_geometry.h), so caching it never changes what the mesh means.
+    void set_limit_position(VertexId v, const glm::dvec3& p) const;
     // Delete `old_faces` (and the listed vertices, which must be used by no new face) and create
     // `new_faces` over the same region. Adjacency with the outside is rebuilt by matching edges.
     // Returns the new face ids in the order given.
@@ -138,6 +140,9 @@ public:
     std::size_t memory_bytes() const;
 
 private:
+    friend struct MeshState capture_state(const Mesh& mesh);
+    friend Mesh restore_state(const struct MeshState& state);
+
     static constexpr std::uint32_t kNoLimit = 0xffffffffu;
     FaceId allocate_face();
     void release_face(FaceId f);
@@ -157,13 +162,13 @@ private:
     std::vector<std::uint8_t> vertex_level_;
     std::vector<std::uint8_t> vertex_boundary_;
     std::vector<std::uint8_t> vertex_alive_;
-    std::vector<std::uint32_t> limit_slot_;
+    mutable std::vector<std::uint32_t> limit_slot_;
     std::vector<std::uint32_t> free_vertices_;
     std::size_t vertex_count_ = 0;
     // Limit points are needed for a minority of vertices (those whose display level exceeds their
     // own), so they live in a pool instead of a dense array: this keeps the mesh under 2x a plain mesh.
-    std::vector<glm::dvec3> limit_pool_;
-    std::vector<std::uint32_t> free_limit_slots_;
+    mutable std::vector<glm::dvec3> limit_pool_;
+    mutable std::vector<std::uint32_t> free_limit_slots_;
     // Base vertices are never removed, so their ids stay below num_base_vertices().
     std::vector<std::uint16_t> base_valence_;
 

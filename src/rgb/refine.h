@@ -17,13 +17,15 @@ class Mesh;
 // the extra refinement its Loop stencil needs, then the split. Returns false if nothing was split
 // (no such edge, or red).
 bool refine_edge(Mesh& mesh, VertexId a, VertexId b);
-// Refines the three edges of f that are below `target_level` (a face request of the brush).
-void refine_face(Mesh& mesh, FaceId f, int target_level);
 // Splits the limit support of v into existence (§4.4 extra refinement) and returns true when the
 // limit position of v is then known.
 bool ensure_limit(Mesh& mesh, VertexId v);
+// The edge whose refinement moves face f one step towards a finer level: a green edge of f's level
+// for green and red faces, and for a blue face the coarse edge of the red beyond its red edge.
+HalfedgeId edge_refining_face(const Mesh& mesh, FaceId f);
 
-// Uniform refinement until every green triangle has level >= `level` (the mesh becomes Σ_level).
+// Uniform refinement until every triangle is green of level `level` (the mesh becomes Σ_level,
+// assuming no vertex is finer than that).
 void refine_uniform(Mesh& mesh, int level);
 
 // Which part of the mesh a set-level request covers.
@@ -34,6 +36,8 @@ struct Region {
     static Region sphere(const glm::dvec3& centre, double radius);
 };
 
+enum class LodDirection { Refine, Coarsen, Both };
+
 struct SetLevelStats {
     std::size_t splits = 0;
     std::size_t removals = 0;
@@ -41,12 +45,15 @@ struct SetLevelStats {
 
 // Refines faces in the region whose level is below `target`, and removes removable vertices in the
 // region whose level is above it, repeating until nothing changes.
-SetLevelStats set_level(Mesh& mesh, const Region& region, int target);
+// This scans every face once to find the region; brush dabs use set_level_faces instead.
+SetLevelStats set_level(Mesh& mesh, const Region& region, int target, LodDirection direction = LodDirection::Both);
 
-// The same for an explicit set of seed faces (what a brush dab hits): faces below their target
-// level are refined, vertices above it are removed where removable. `target_at` gives the target
-// level at a point (for falloff), return < 0 to leave a point alone.
-SetLevelStats set_level_faces(Mesh& mesh, std::span<const FaceId> faces,
-                              const std::function<int(const glm::dvec3&)>& target_at);
+// The same from an explicit set of seed faces (what a brush dab hits), spreading to the faces the
+// edits create. `target_at` gives the target level at a displayed position (a brush falloff);
+// negative means "leave alone". A face's target is the highest target of its corners. Costs in
+// proportion to the faces visited and the operators applied, never to the mesh size.
+SetLevelStats set_level_faces(Mesh& mesh, std::span<const FaceId> seeds,
+                              const std::function<int(const glm::dvec3&)>& target_at,
+                              LodDirection direction = LodDirection::Both);
 
 }  // namespace rgb
