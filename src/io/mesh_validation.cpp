@@ -163,7 +163,8 @@ bool has_directed_edge(const rgb::Triangle& t, std::uint32_t from, std::uint32_t
 }
 
 // Flips triangles so that every interior edge is traversed in opposite directions by its two faces.
-// Each connected component keeps the orientation of the majority of its faces.
+// Each connected component keeps the orientation of the majority of its faces (on a tie, that of
+// its first face in file order).
 void orient(TriangleSoup& soup, const std::vector<EdgeUse>& uses, const std::string& file, std::vector<std::string>& warnings) {
     auto& tris = soup.triangles;
     const std::size_t n = tris.size();

@@ -1,0 +1,110 @@
+// What loads: exact coordinates, the OBJ dialects found in the wild, and the fixes the loader makes
+// (re-orientation, unreferenced vertices, triangulation, ignored lines/points), each with a warning.
+#include <charconv>
+#include <map>
+#include <random>
+#include <set>
+
+#include <gtest/gtest.h>
+
+#include "obj_test_support.h"
+
+namespace rgbio {
+namespace {
+
+bool contains(const std::vector<std::string>& warnings, const std::string& part) {
+    for (const std::string& w : warnings)
+        if (w.find(part) != std::string::npos) return true;
+    return false;
+}
+
+// Every directed edge is used at most once: the orientation is consistent.
+void expect_consistently_oriented(const LoadedMesh& mesh) {
+    std::set<std::pair<std::uint32_t, std::uint32_t>> directed;
+    for (const rgb::Triangle& t : mesh.triangles)
+        for (int i = 0; i < 3; ++i) EXPECT_TRUE(directed.insert({t[i], t[(i + 1) % 3]}).second) << "edge used twice in one direction";
+}
+
+TEST(ObjLoadFixes, CleanMeshLoadsWithoutWarnings) {
+    const LoadedMesh mesh = read_obj_text(test::kOctahedron, "octahedron.obj");
+    EXPECT_EQ(mesh.positions.size(), 6u);
+    ASSERT_EQ(mesh.triangles.size(), 8u);
+    EXPECT_EQ(mesh.triangles[0], (rgb::Triangle{0, 2, 4}));
+    EXPECT_TRUE(mesh.warnings.empty());
+    EXPECT_FALSE(mesh.state);
+}
+
+TEST(ObjLoadFixes, CoordinatesAreExactAtSeventeenDigits) {
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> coordinate(-1000.0, 1000.0);
+    std::vector<glm::dvec3> written;
+    std::string text;
+    for (int i = 0; i < 3000; ++i) {
+        glm::dvec3 p(coordinate(rng), coordinate(rng), coordinate(rng));
+        written.push_back(p);
+        char line[128];
+        std::snprintf(line, sizeof line, "v %.17g %.17g %.17g\n", p.x, p.y, p.z);
+        text += line;
+    }
+    for (int i = 0; i + 2 < 3000; i += 3) text += "f " + std::to_string(i + 1) + " " + std::to_string(i + 2) + " " + std::to_string(i + 3) + "\n";
+    const LoadedMesh mesh = read_obj_text(text, "random.obj");
+    ASSERT_EQ(mesh.positions.size(), written.size());
+    for (std::size_t i = 0; i < written.size(); ++i) ASSERT_EQ(mesh.positions[i], written[i]) << "vertex " << i;
+}
+
+TEST(ObjLoadFixes, DialectsFromTheWild) {
+    // UTF-8 BOM, CRLF, tabs, a leading '+', w and colour values, v/vt/vn forms, negative
+    // indices, other keywords, and no newline at the end.
+    const std::string text =
+        "\xef\xbb\xbfmtllib x.mtl\r\no thing\r\nv\t+1 0 0 1\r\nv 0 1 0 0.5 0.5 0.5\r\nv 0 0 1\r\nv 1. 1e0 .5\r\n"
+        "vt 0 0\r\nvn 0 0 1\r\ng part\r\nusemtl m\r\ns off\r\nf 1/1/1 2//1 3\r\nf -1/1 -2/1 -3/1";
+    const LoadedMesh mesh = read_obj_text(text, "dialects.obj");
+    ASSERT_EQ(mesh.positions.size(), 4u);
+    EXPECT_EQ(mesh.positions[0], glm::dvec3(1, 0, 0));
+    EXPECT_EQ(mesh.positions[3], glm::dvec3(1, 1, 0.5));
+    ASSERT_EQ(mesh.triangles.size(), 2u);
+    EXPECT_EQ(mesh.triangles[1], (rgb::Triangle{3, 2, 1}));
+    EXPECT_TRUE(mesh.warnings.empty());
+}
+
+TEST(ObjLoadFixes, FlippedFacesAreReorientedToTheMajority) {
+    std::string text = test::kOctahedron;
+    text.replace(text.find("f 3 2 5"), 7, "f 2 3 5");
+    text.replace(text.find("f 4 2 6"), 7, "f 2 4 6");
+    const LoadedMesh mesh = read_obj_text(text, "flipped.obj");
+    expect_consistently_oriented(mesh);
+    EXPECT_TRUE(contains(mesh.warnings, "re-oriented 2 of 8 faces")) << mesh.warnings.size();
+    EXPECT_EQ(mesh.triangles[1], (rgb::Triangle{1, 4, 2}));  // 2 3 5 flipped back to outward (0-based)
+    EXPECT_EQ(mesh.triangles[0], (rgb::Triangle{0, 2, 4}));  // majority faces untouched
+}
+
+TEST(ObjLoadFixes, UnreferencedVerticesAreRemovedAndTheRestRenumbered) {
+    const std::string text = "v 9 9 9\nv 0 0 0\nv 8 8 8\nv 1 0 0\nv 0 1 0\nv 7 7 7\nf 2 4 5\n";
+    const LoadedMesh mesh = read_obj_text(text, "unreferenced.obj");
+    ASSERT_EQ(mesh.positions.size(), 3u);
+    EXPECT_EQ(mesh.positions[0], glm::dvec3(0, 0, 0));
+    EXPECT_EQ(mesh.positions[2], glm::dvec3(0, 1, 0));
+    EXPECT_EQ(mesh.triangles[0], (rgb::Triangle{0, 1, 2}));
+    EXPECT_TRUE(contains(mesh.warnings, "removed 3 vertices used by no face (the first on line 1)"));
+}
+
+TEST(ObjLoadFixes, QuadsAndPolygonsAreTriangulatedAndCounted) {
+    // A cube of 6 quads and a separate flat hexagon.
+    const std::string text =
+        "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+        "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n"
+        "v 5 0 0\nv 6 0 0\nv 6.5 1 0\nv 6 2 0\nv 5 2 0\nv 4.5 1 0\nf -6 -5 -4 -3 -2 -1\n";
+    const LoadedMesh mesh = read_obj_text(text, "polygons.obj");
+    EXPECT_EQ(mesh.triangles.size(), 12u + 4u);
+    EXPECT_TRUE(contains(mesh.warnings, "triangulated 6 quads and 1 polygons with more than 4 vertices into 16 triangles"));
+    expect_consistently_oriented(mesh);
+}
+
+TEST(ObjLoadFixes, LinesAndPointsAreIgnoredWithANotice) {
+    const LoadedMesh mesh = read_obj_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2\nl 2 3\np 1\nf 1 2 3\n", "mixed.obj");
+    EXPECT_EQ(mesh.triangles.size(), 1u);
+    EXPECT_TRUE(contains(mesh.warnings, "ignored 2 line elements (l) and 1 point elements (p)"));
+}
+
+}  // namespace
+}  // namespace rgbio

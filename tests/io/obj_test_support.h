@@ -1,0 +1,28 @@
+#pragma once
+// Helpers shared by the io tests: reading OBJ text in memory and asserting on the error it gives.
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "io/obj_error.h"
+#include "io/obj_reader.h"
+
+namespace rgbio::test {
+
+// The ObjError read_obj_text throws for `text` (named "test.obj"); fails the test if none.
+inline ObjError load_error(const std::string& text) {
+    try {
+        read_obj_text(text, "test.obj");
+    } catch (const ObjError& e) {
+        return e;
+    }
+    ADD_FAILURE() << "expected an ObjError for:\n" << text;
+    return ObjError(ObjProblem::Unreadable, "", 0, "no error");
+}
+
+// A closed octahedron (8 triangles, consistently oriented outwards).
+inline const std::string kOctahedron =
+    "v 1 0 0\nv -1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nv 0 0 -1\n"
+    "f 1 3 5\nf 3 2 5\nf 2 4 5\nf 4 1 5\nf 3 1 6\nf 2 3 6\nf 4 2 6\nf 1 4 6\n";
+
+}  // namespace rgbio::test
