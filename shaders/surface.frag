@@ -1,0 +1,60 @@
+#version 330 core
+// Surface shading, colouring, wireframe and brush cursor in one pass: the wireframe is drawn from
+// barycentric coordinates (a second glPolygonMode pass costs 3.5x on llvmpipe).
+const int kMaxLevelColours = 32;
+const int kColourPlain = 0;
+const int kColourRgb = 1;
+const int kColourLevel = 2;
+
+in vec3 v_position;
+in vec3 v_normal;
+in vec3 v_barycentric;
+flat in uint v_code;
+
+uniform vec3 u_eye;
+uniform bool u_flat;
+uniform int u_colouring;
+uniform vec3 u_plain_colour;
+uniform vec3 u_rgb_colours[3];
+uniform vec3 u_level_colours[kMaxLevelColours];
+uniform bool u_wire;
+uniform float u_wire_width;  // pixels
+uniform vec3 u_wire_colour;
+uniform bool u_brush;
+uniform vec3 u_brush_centre;
+uniform float u_brush_radius;
+uniform float u_brush_width;  // pixels
+uniform vec3 u_brush_colour;
+
+out vec4 frag_colour;
+
+vec3 base_colour() {
+    if (u_colouring == kColourRgb) return u_rgb_colours[min(v_code & 3u, 2u)];
+    if (u_colouring == kColourLevel) return u_level_colours[min(int((v_code >> 8) & 255u), kMaxLevelColours - 1)];
+    return u_plain_colour;
+}
+
+// 1 on a line of `width` pixels where `distance` (in units of its own screen derivative) is zero.
+float line_coverage(float distance_in_pixels, float width) {
+    return 1.0 - smoothstep(0.5 * width - 0.5, 0.5 * width + 0.5, distance_in_pixels);
+}
+
+void main() {
+    vec3 normal = u_flat ? cross(dFdx(v_position), dFdy(v_position)) : v_normal;
+    vec3 to_eye = normalize(u_eye - v_position);
+    // Headlight, lit from both sides so open meshes show their back faces.
+    float diffuse = abs(dot(normalize(normal), to_eye));
+    vec3 colour = base_colour() * (0.3 + 0.7 * diffuse);
+
+    if (u_wire) {
+        vec3 edge_pixels = v_barycentric / max(fwidth(v_barycentric), vec3(1e-6));
+        float d = min(edge_pixels.x, min(edge_pixels.y, edge_pixels.z));
+        colour = mix(colour, u_wire_colour, line_coverage(d, u_wire_width));
+    }
+    if (u_brush) {
+        float centre_distance = distance(v_position, u_brush_centre);
+        float d = abs(centre_distance - u_brush_radius) / max(fwidth(centre_distance), 1e-6);
+        colour = mix(colour, u_brush_colour, line_coverage(d, u_brush_width));
+    }
+    frag_colour = vec4(colour, 1.0);
+}

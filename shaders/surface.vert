@@ -1,0 +1,22 @@
+#version 330 core
+// One vertex per face corner (face slot f owns vertices 3f..3f+2), so the corner index, and with it
+// the barycentric coordinate used by the wireframe, follows from gl_VertexID alone.
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in uint a_code;  // bits 0-1: RGB colour, bits 8-15: face level
+
+uniform mat4 u_view_projection;
+
+out vec3 v_position;
+out vec3 v_normal;
+out vec3 v_barycentric;
+flat out uint v_code;
+
+void main() {
+    int corner = gl_VertexID % 3;
+    v_barycentric = vec3(corner == 0, corner == 1, corner == 2);
+    v_position = a_position;
+    v_normal = a_normal;
+    v_code = a_code;
+    gl_Position = u_view_projection * vec4(a_position, 1.0);
+}

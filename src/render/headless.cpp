@@ -1,0 +1,21 @@
+#include "render/headless.h"
+
+#include "render/offscreen_context.h"
+
+namespace render {
+
+OrbitCamera framing_camera(const BoundingSphere& bounds, const HeadlessView& view) {
+    return frame_sphere(bounds, view.azimuth_deg, view.elevation_deg,
+                        static_cast<float>(view.size.x) / static_cast<float>(view.size.y));
+}
+
+Image render_headless(rgb::Mesh& mesh, const RenderOptions& options, const HeadlessView& view) {
+    OffscreenContext context(view.size.x, view.size.y);
+    Renderer renderer;
+    renderer.attach(mesh);
+    renderer.set_positions(options.positions);
+    renderer.draw(framing_camera(renderer.bounds(options.base_mesh_overlay), view), options, view.size);
+    return context.read_pixels();
+}
+
+}  // namespace render

@@ -1,0 +1,50 @@
+#include "render/offscreen_context.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+// <GL/osmesa.h> needs the GLAPI macros that <glad/gl.h> provides (toolchain.md, pitfall 6).
+#include <glad/gl.h>
+#include <GL/osmesa.h>
+
+namespace render {
+namespace {
+
+OSMesaContext as_osmesa(void* context) { return static_cast<OSMesaContext>(context); }
+
+}  // namespace
+
+OffscreenContext::OffscreenContext(int width, int height) : width_(width), height_(height) {
+    if (width <= 0 || height <= 0)
+        throw std::runtime_error("offscreen size must be positive, got " + std::to_string(width) + "x" + std::to_string(height));
+    const int attributes[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24, OSMESA_PROFILE, OSMESA_CORE_PROFILE,
+                              OSMESA_CONTEXT_MAJOR_VERSION, 3, OSMESA_CONTEXT_MINOR_VERSION, 3, 0};
+    context_ = OSMesaCreateContextAttribs(attributes, nullptr);
+    if (context_ == nullptr) throw std::runtime_error("OSMesa could not create an OpenGL 3.3 core context");
+    buffer_.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
+    make_current();
+    if (gladLoadGL(reinterpret_cast<GLADloadfunc>(OSMesaGetProcAddress)) == 0) {
+        OSMesaDestroyContext(as_osmesa(context_));
+        throw std::runtime_error("could not load OpenGL 3.3 entry points from OSMesa");
+    }
+}
+
+OffscreenContext::~OffscreenContext() { OSMesaDestroyContext(as_osmesa(context_)); }
+
+void OffscreenContext::make_current() {
+    if (OSMesaMakeCurrent(as_osmesa(context_), buffer_.data(), GL_UNSIGNED_BYTE, width_, height_) == 0)
+        throw std::runtime_error("OSMesaMakeCurrent failed");
+}
+
+Image OffscreenContext::read_pixels() const {
+    glFinish();
+    Image image{width_, height_, std::vector<std::uint8_t>(buffer_.size())};
+    const std::size_t row = static_cast<std::size_t>(width_) * 4;
+    for (int y = 0; y < height_; ++y)
+        std::copy_n(buffer_.begin() + static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(height_ - 1 - y)), row,
+                    image.rgba.begin() + static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(y)));
+    return image;
+}
+
+}  // namespace render

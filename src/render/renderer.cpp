@@ -1,0 +1,205 @@
+#include "render/renderer.h"
+
+#include <stdexcept>
+#include <vector>
+
+#include <glad/gl.h>
+
+#include "render/base_mesh_lines.h"
+#include "render/colour_map.h"
+#include "render/gl_objects.h"
+#include "render/level_legend.h"
+#include "render/mesh_changes.h"
+#include "render/shader_program.h"
+#include "render/surface_buffer.h"
+#include "rgb/mesh.h"
+
+namespace render {
+namespace {
+
+constexpr glm::vec3 kPlainColour{0.78f, 0.78f, 0.76f};
+constexpr glm::vec3 kWireColour{0.12f, 0.12f, 0.12f};
+constexpr glm::vec3 kBrushColour{1.0f, 0.55f, 0.0f};
+constexpr glm::vec3 kBaseMeshColour{0.1f, 0.1f, 0.1f};
+constexpr glm::vec3 kLegendTextColour{0.1f, 0.1f, 0.1f};
+constexpr float kBrushWidthPx = 2.0f;
+constexpr float kOverlayDepthBias = 1e-3f;
+
+// A vertex array over one tightly packed buffer, for the small line and overlay geometry.
+class SimpleVertices {
+public:
+    template <class Vertex>
+    void upload(const std::vector<Vertex>& vertices) {
+        glBindBuffer(GL_ARRAY_BUFFER, buffer_.get());
+        glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)), vertices.data(), GL_DYNAMIC_DRAW);
+        count_ = static_cast<GLsizei>(vertices.size());
+    }
+    // Attribute `index` has `components` floats at `offset` bytes within a vertex of `stride` bytes.
+    void attribute(GLuint index, GLint components, std::size_t stride, std::size_t offset) {
+        glBindVertexArray(vertex_array_.get());
+        glBindBuffer(GL_ARRAY_BUFFER, buffer_.get());
+        glEnableVertexAttribArray(index);
+        glVertexAttribPointer(index, components, GL_FLOAT, GL_FALSE, static_cast<GLsizei>(stride),
+                              reinterpret_cast<const void*>(offset));
+        glBindVertexArray(0);
+    }
+    void draw(GLenum primitive) const {
+        if (count_ == 0) return;
+        glBindVertexArray(vertex_array_.get());
+        glDrawArrays(primitive, 0, count_);
+        glBindVertexArray(0);
+    }
+
+private:
+    GlVertexArray vertex_array_;
+    GlBuffer buffer_;
+    GLsizei count_ = 0;
+};
+
+}  // namespace
+
+struct Renderer::State {
+    ShaderProgram surface_program{"surface.vert", "surface.frag"};
+    ShaderProgram lines_program{"lines.vert", "lines.frag"};
+    ShaderProgram overlay_program{"overlay.vert", "overlay.frag"};
+    SurfaceBuffer surface;
+    SimpleVertices base_lines;
+    SimpleVertices overlay;
+    SurfaceGeometry geometry;
+    rgb::Mesh* mesh = nullptr;
+    std::unique_ptr<MeshChanges> changes;
+    UploadStats stats;
+
+    void count_upload(std::uint64_t before, std::size_t ranges) {
+        stats.last_sync_bytes = surface.bytes_uploaded() - before;
+        stats.last_sync_ranges = ranges;
+        stats.total_bytes = surface.bytes_uploaded();
+    }
+};
+
+Renderer::Renderer() : state_(std::make_unique<State>()) {
+    state_->base_lines.attribute(0, 3, sizeof(glm::vec3), 0);
+    state_->overlay.attribute(0, 2, sizeof(OverlayVertex), offsetof(OverlayVertex, pixel));
+    state_->overlay.attribute(1, 3, sizeof(OverlayVertex), offsetof(OverlayVertex, colour));
+}
+
+Renderer::~Renderer() = default;
+
+void Renderer::attach(rgb::Mesh& mesh) {
+    detach();
+    state_->mesh = &mesh;
+    state_->changes = std::make_unique<MeshChanges>(mesh);
+    state_->base_lines.upload(base_mesh_lines(mesh));
+    reupload_all();
+}
+
+void Renderer::detach() {
+    state_->changes.reset();
+    state_->mesh = nullptr;
+    state_->geometry = SurfaceGeometry(state_->geometry.source());
+    state_->surface.upload_all({});
+    state_->base_lines.upload(std::vector<glm::vec3>{});
+}
+
+void Renderer::sync() {
+    State& s = *state_;
+    if (s.mesh == nullptr || s.changes->empty()) return;
+    const std::uint64_t before = s.surface.bytes_uploaded();
+    const std::vector<SlotRange> ranges = s.geometry.update(*s.mesh, *s.changes);
+    s.changes->clear();
+    s.surface.upload(s.geometry.vertices(), ranges);
+    s.count_upload(before, ranges.size());
+}
+
+void Renderer::reupload_all() {
+    State& s = *state_;
+    if (s.mesh == nullptr) return;
+    const std::uint64_t before = s.surface.bytes_uploaded();
+    s.changes->clear();
+    s.geometry.rebuild(*s.mesh);
+    s.surface.upload_all(s.geometry.vertices());
+    s.count_upload(before, 1);
+}
+
+void Renderer::set_positions(PositionSource source) {
+    if (state_->geometry.source() == source) return;
+    state_->geometry.set_source(source);
+    reupload_all();
+}
+
+void Renderer::draw(const OrbitCamera& camera, const RenderOptions& options, glm::ivec2 viewport) {
+    State& s = *state_;
+    set_positions(options.positions);
+    sync();
+
+    glViewport(0, 0, viewport.x, viewport.y);
+    glClearColor(options.background.r, options.background.g, options.background.b, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_BLEND);
+    const glm::mat4 view_projection =
+        camera.view_projection(static_cast<float>(viewport.x) / static_cast<float>(std::max(viewport.y, 1)));
+
+    const int max_level = s.geometry.max_face_level();
+    std::vector<glm::vec3> level_colours(kMaxLevelColours);
+    for (int level = 0; level < kMaxLevelColours; ++level)
+        level_colours[static_cast<std::size_t>(level)] = level_colour(level, max_level);
+    const glm::vec3 rgb_colours[3] = {rgb_type_colour(rgb::Colour::Green), rgb_type_colour(rgb::Colour::Red),
+                                      rgb_type_colour(rgb::Colour::Blue)};
+
+    const ShaderProgram& surface = s.surface_program;
+    surface.use();
+    surface.set("u_view_projection", view_projection);
+    surface.set("u_eye", camera.eye());
+    surface.set("u_flat", options.shading == Shading::Flat);
+    surface.set("u_colouring", static_cast<int>(options.colouring));
+    surface.set("u_plain_colour", kPlainColour);
+    surface.set_array("u_rgb_colours", rgb_colours, 3);
+    surface.set_array("u_level_colours", level_colours.data(), kMaxLevelColours);
+    surface.set("u_wire", options.wireframe);
+    surface.set("u_wire_width", options.wire_width_px);
+    surface.set("u_wire_colour", kWireColour);
+    surface.set("u_brush", options.brush.has_value());
+    if (options.brush) {
+        surface.set("u_brush_centre", options.brush->centre);
+        surface.set("u_brush_radius", options.brush->radius);
+        surface.set("u_brush_width", kBrushWidthPx);
+        surface.set("u_brush_colour", kBrushColour);
+    }
+    s.surface.draw();
+
+    if (options.base_mesh_overlay) {
+        s.lines_program.use();
+        s.lines_program.set("u_view_projection", view_projection);
+        s.lines_program.set("u_depth_bias", kOverlayDepthBias);
+        s.lines_program.set("u_colour", kBaseMeshColour);
+        s.base_lines.draw(GL_LINES);
+    }
+
+    if (options.colouring == Colouring::Level && options.level_legend) {
+        glDisable(GL_DEPTH_TEST);
+        s.overlay.upload(level_legend(max_level, viewport, kLegendTextColour));
+        s.overlay_program.use();
+        s.overlay_program.set("u_viewport_size", glm::vec2(viewport));
+        s.overlay.draw(GL_TRIANGLES);
+        glEnable(GL_DEPTH_TEST);
+    }
+    glUseProgram(0);
+}
+
+BoundingSphere Renderer::bounds(bool with_base_mesh) const {
+    if (state_->mesh == nullptr) return {};
+    std::vector<glm::vec3> points = state_->geometry.live_positions(*state_->mesh);
+    if (with_base_mesh)
+        for (std::uint32_t i = 0; i < state_->mesh->num_base_vertices(); ++i)
+            points.emplace_back(state_->mesh->insertion_position(rgb::VertexId(i)));
+    return bounding_sphere(points);
+}
+
+const SurfaceGeometry& Renderer::geometry() const { return state_->geometry; }
+
+const UploadStats& Renderer::upload_stats() const { return state_->stats; }
+
+}  // namespace render

@@ -1,0 +1,82 @@
+#pragma once
+// Draws an rgb::Mesh with OpenGL 3.3 core, in a GLFW window or an OffscreenContext alike: the caller
+// makes a context current and loads GL (gladLoadGL) before constructing it.
+//
+// The GPU copy of the mesh follows the core's change observer: draw() (or sync()) uploads only the
+// face slots an edit touched. Modes are uniforms, so switching costs nothing except the limit
+// positions, which rebuild the buffer.
+#include <cstdint>
+#include <memory>
+#include <optional>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "render/camera.h"
+#include "render/surface_geometry.h"
+
+namespace rgb {
+class Mesh;
+}
+
+namespace render {
+
+enum class Shading { Smooth, Flat };
+enum class Colouring { Plain, RgbType, Level };
+
+// A circle on the surface: where a sphere around `centre` cuts it.
+struct BrushCursor {
+    glm::vec3 centre{0.0f};
+    float radius = 0.1f;
+};
+
+struct RenderOptions {
+    Shading shading = Shading::Smooth;
+    Colouring colouring = Colouring::Plain;
+    bool wireframe = false;
+    float wire_width_px = 1.0f;
+    PositionSource positions = PositionSource::Displayed;
+    bool base_mesh_overlay = false;
+    bool level_legend = true;  // shown with Colouring::Level
+    std::optional<BrushCursor> brush;
+    glm::vec3 background{1.0f};
+};
+
+struct UploadStats {
+    std::uint64_t total_bytes = 0;      // since attach
+    std::uint64_t last_sync_bytes = 0;  // by the most recent sync that had changes
+    std::size_t last_sync_ranges = 0;
+};
+
+class Renderer {
+public:
+    Renderer();  // compiles the shaders; throws ShaderError
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    // Starts following `mesh` (which must outlive the attachment) and uploads it whole.
+    void attach(rgb::Mesh& mesh);
+    void detach();
+
+    // Uploads what changed since the last sync.
+    void sync();
+    // Rebuilds and uploads everything (what an observer-less renderer would do after each edit).
+    void reupload_all();
+    void set_positions(PositionSource source);
+
+    // Clears the viewport and draws the mesh seen by `camera`.
+    void draw(const OrbitCamera& camera, const RenderOptions& options, glm::ivec2 viewport);
+
+    // Of the attached mesh at the current positions, and of the base mesh (which encloses a
+    // subdivision surface) if asked, for framing the base mesh overlay too.
+    BoundingSphere bounds(bool with_base_mesh = false) const;
+    const SurfaceGeometry& geometry() const;
+    const UploadStats& upload_stats() const;
+
+private:
+    struct State;
+    std::unique_ptr<State> state_;
+};
+
+}  // namespace render

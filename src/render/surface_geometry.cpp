@@ -1,0 +1,146 @@
+#include "render/surface_geometry.h"
+
+#include <algorithm>
+
+#include <glm/geometric.hpp>
+
+#include "render/mesh_changes.h"
+#include "rgb/loop_geometry.h"
+#include "rgb/mesh.h"
+
+namespace render {
+namespace {
+
+// Dirty slots closer than this are uploaded as one range: a few wasted bytes are cheaper than a
+// separate glBufferSubData call.
+constexpr std::uint32_t kCoalesceGap = 8;
+
+template <class Fn>
+void for_each_face_around(const rgb::Mesh& mesh, rgb::VertexId v, Fn&& fn) {
+    const rgb::HalfedgeId start = mesh.vertex_halfedge(v);
+    if (!start.valid()) return;
+    rgb::HalfedgeId h = start;
+    do {
+        fn(rgb::Mesh::face(h));
+        h = mesh.ccw_rotated(h);
+    } while (h.valid() && h != start);
+}
+
+template <class Id>
+void sort_unique(std::vector<Id>& ids) {
+    std::sort(ids.begin(), ids.end());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+}
+
+std::vector<SlotRange> coalesce(const std::vector<rgb::FaceId>& sorted_faces) {
+    std::vector<SlotRange> ranges;
+    for (rgb::FaceId f : sorted_faces) {
+        if (!ranges.empty() && f.idx <= ranges.back().first + ranges.back().count + kCoalesceGap)
+            ranges.back().count = f.idx + 1 - ranges.back().first;
+        else
+            ranges.push_back({f.idx, 1});
+    }
+    return ranges;
+}
+
+std::uint32_t face_code(const rgb::Mesh& mesh, rgb::FaceId f) {
+    return static_cast<std::uint32_t>(mesh.colour(f)) | (static_cast<std::uint32_t>(mesh.level(f)) << kCodeLevelShift) |
+           kCodeLiveBit;
+}
+
+}  // namespace
+
+int SurfaceGeometry::max_face_level() const {
+    for (int level = static_cast<int>(level_counts_.size()) - 1; level > 0; --level)
+        if (level_counts_[static_cast<std::size_t>(level)] > 0) return level;
+    return 0;
+}
+
+std::vector<glm::vec3> SurfaceGeometry::live_positions(const rgb::Mesh& mesh) const {
+    std::vector<glm::vec3> live;
+    live.reserve(mesh.num_vertices());
+    for (rgb::VertexId v : mesh.vertices()) live.push_back(positions_[v.idx]);
+    return live;
+}
+
+void SurfaceGeometry::resize(const rgb::Mesh& mesh) {
+    positions_.resize(mesh.vertex_capacity());
+    normals_.resize(mesh.vertex_capacity());
+    const std::size_t slots = mesh.face_capacity();
+    for (std::size_t i = slots * 3; i < vertices_.size(); i += 3) count(vertices_[i].code, -1);
+    vertices_.resize(slots * 3);
+}
+
+void SurfaceGeometry::update_position(const rgb::Mesh& mesh, rgb::VertexId v) {
+    const glm::dvec3 p = source_ == PositionSource::Limit
+                             ? rgb::try_limit_position(mesh, v).value_or(rgb::displayed_position(mesh, v))
+                             : rgb::displayed_position(mesh, v);
+    positions_[v.idx] = glm::vec3(p);
+}
+
+void SurfaceGeometry::update_normal(const rgb::Mesh& mesh, rgb::VertexId v) {
+    glm::vec3 sum(0.0f);
+    for_each_face_around(mesh, v, [&](rgb::FaceId f) {
+        const auto& c = mesh.face_vertices(f);
+        const glm::vec3& p0 = positions_[c[0].idx];
+        sum += glm::cross(positions_[c[1].idx] - p0, positions_[c[2].idx] - p0);
+    });
+    const float length = glm::length(sum);
+    normals_[v.idx] = length > 0.0f ? sum / length : glm::vec3(0.0f, 0.0f, 1.0f);
+}
+
+void SurfaceGeometry::count(std::uint32_t code, int delta) {
+    if ((code & kCodeLiveBit) == 0) return;
+    colour_counts_[code & kCodeColourMask] += static_cast<std::size_t>(delta);
+    level_counts_[(code >> kCodeLevelShift) & 0xffu] += static_cast<std::size_t>(delta);
+}
+
+void SurfaceGeometry::write_slot(const rgb::Mesh& mesh, rgb::FaceId f) {
+    SurfaceVertex* slot = &vertices_[3 * static_cast<std::size_t>(f.idx)];
+    count(slot[0].code, -1);
+    if (!mesh.is_live(f)) {
+        std::fill(slot, slot + 3, SurfaceVertex{});
+        return;
+    }
+    const std::uint32_t code = face_code(mesh, f);
+    const auto& corners = mesh.face_vertices(f);
+    for (int i = 0; i < 3; ++i) slot[i] = {positions_[corners[i].idx], normals_[corners[i].idx], code};
+    count(code, +1);
+}
+
+void SurfaceGeometry::rebuild(const rgb::Mesh& mesh) {
+    vertices_.clear();
+    colour_counts_ = {};
+    level_counts_ = {};
+    resize(mesh);
+    for (rgb::VertexId v : mesh.vertices()) update_position(mesh, v);
+    for (rgb::VertexId v : mesh.vertices()) update_normal(mesh, v);
+    for (std::uint32_t f = 0; f < mesh.face_capacity(); ++f) write_slot(mesh, rgb::FaceId(f));
+}
+
+std::vector<SlotRange> SurfaceGeometry::update(const rgb::Mesh& mesh, const MeshChanges& changes) {
+    resize(mesh);
+    std::vector<rgb::VertexId> moved;
+    for (rgb::VertexId v : changes.moved_vertices())
+        if (mesh.is_live(v)) moved.push_back(v);
+    sort_unique(moved);
+    for (rgb::VertexId v : moved) update_position(mesh, v);
+
+    // A vertex's normal depends on its one-ring's positions.
+    std::vector<rgb::VertexId> renormal = moved;
+    for (rgb::VertexId v : moved)
+        for_each_face_around(mesh, v, [&](rgb::FaceId f) {
+            for (rgb::VertexId u : mesh.face_vertices(f)) renormal.push_back(u);
+        });
+    sort_unique(renormal);
+    for (rgb::VertexId v : renormal) update_normal(mesh, v);
+
+    std::vector<rgb::FaceId> dirty = changes.changed_faces();
+    for (rgb::VertexId v : renormal) for_each_face_around(mesh, v, [&](rgb::FaceId f) { dirty.push_back(f); });
+    sort_unique(dirty);
+    std::erase_if(dirty, [&](rgb::FaceId f) { return f.idx >= mesh.face_capacity(); });
+    for (rgb::FaceId f : dirty) write_slot(mesh, f);
+    return coalesce(dirty);
+}
+
+}  // namespace render

@@ -1,0 +1,89 @@
+#pragma once
+// The CPU image of the surface vertex buffer (GL-free). Face slot f owns vertices 3f..3f+2, each
+// carrying position, normal and a code (colour, face level, liveness), so a face change is a
+// three-vertex range and the GPU buffer mirrors the core's slot arrays; dead slots are degenerate
+// triangles that rasterise to nothing. Smooth normals are area-weighted averages of the incident
+// face normals, so moving a vertex dirties the faces around its one-ring.
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "render/camera.h"
+#include "rgb/face_type.h"
+#include "rgb/handles.h"
+
+namespace rgb {
+class Mesh;
+}
+
+namespace render {
+
+class MeshChanges;
+
+enum class PositionSource {
+    Displayed,  // where the vertex is shown at its display level
+    Limit,      // its limit-surface position where the core knows it, else the displayed position
+};
+
+struct SurfaceVertex {
+    glm::vec3 position{0.0f};
+    glm::vec3 normal{0.0f};
+    std::uint32_t code = 0;
+
+    friend bool operator==(const SurfaceVertex&, const SurfaceVertex&) = default;
+};
+static_assert(sizeof(SurfaceVertex) == 28, "the vertex layout in surface_buffer.cpp assumes packed floats");
+
+// Layout of SurfaceVertex::code, mirrored in shaders/surface.frag.
+inline constexpr std::uint32_t kCodeColourMask = 0x3u;
+inline constexpr int kCodeLevelShift = 8;
+inline constexpr std::uint32_t kCodeLiveBit = 1u << 16;
+
+// Consecutive face slots [first, first + count).
+struct SlotRange {
+    std::uint32_t first = 0;
+    std::uint32_t count = 0;
+    friend bool operator==(const SlotRange&, const SlotRange&) = default;
+};
+
+class SurfaceGeometry {
+public:
+    explicit SurfaceGeometry(PositionSource source = PositionSource::Displayed) : source_(source) {}
+
+    PositionSource source() const { return source_; }
+    void set_source(PositionSource source) { source_ = source; }
+
+    // Recomputes every slot from the mesh.
+    void rebuild(const rgb::Mesh& mesh);
+    // Recomputes the slots `changes` affects and returns them as sorted, coalesced ranges. The result
+    // equals rebuild(mesh) bit for bit.
+    std::vector<SlotRange> update(const rgb::Mesh& mesh, const MeshChanges& changes);
+
+    std::span<const SurfaceVertex> vertices() const { return vertices_; }
+    std::size_t face_slots() const { return vertices_.size() / 3; }
+    // Live triangles of each colour and the highest face level present.
+    std::size_t triangles_of(rgb::Colour colour) const { return colour_counts_[static_cast<int>(colour)]; }
+    int max_face_level() const;
+    // The positions of the live vertices, and their bounding sphere.
+    std::vector<glm::vec3> live_positions(const rgb::Mesh& mesh) const;
+    BoundingSphere bounds(const rgb::Mesh& mesh) const { return bounding_sphere(live_positions(mesh)); }
+
+private:
+    void resize(const rgb::Mesh& mesh);
+    void update_position(const rgb::Mesh& mesh, rgb::VertexId v);
+    void update_normal(const rgb::Mesh& mesh, rgb::VertexId v);
+    void write_slot(const rgb::Mesh& mesh, rgb::FaceId f);
+    void count(std::uint32_t code, int delta);
+
+    PositionSource source_;
+    std::vector<glm::vec3> positions_;  // by vertex slot
+    std::vector<glm::vec3> normals_;    // by vertex slot
+    std::vector<SurfaceVertex> vertices_;
+    std::array<std::size_t, 3> colour_counts_{};
+    std::array<std::size_t, 256> level_counts_{};
+};
+
+}  // namespace render

@@ -1,0 +1,31 @@
+#include "gl_test_support.h"
+
+#include <algorithm>
+
+namespace render_test {
+
+PixelClass classify(const render::Image& image, int x, int y) {
+    const glm::u8vec4 p = image.pixel(x, y);
+    if (p.r == 255 && p.g == 255 && p.b == 255) return PixelClass::Background;
+    constexpr int kMargin = 40;  // out of 255
+    const int r = p.r, g = p.g, b = p.b;
+    if (g > std::max(r, b) + kMargin) return PixelClass::Green;
+    if (r > std::max(g, b) + kMargin) return PixelClass::Red;
+    if (b > std::max(r, g) + kMargin) return PixelClass::Blue;
+    return PixelClass::Neutral;
+}
+
+PixelCounts count_pixels(const render::Image& image) {
+    PixelCounts counts;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) switch (classify(image, x, y)) {
+                case PixelClass::Background: ++counts.background; break;
+                case PixelClass::Neutral: ++counts.neutral; break;
+                case PixelClass::Green: ++counts.green; break;
+                case PixelClass::Red: ++counts.red; break;
+                case PixelClass::Blue: ++counts.blue; break;
+            }
+    return counts;
+}
+
+}  // namespace render_test

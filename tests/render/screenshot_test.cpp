@@ -1,0 +1,192 @@
+// Headless screenshots (OSMesa) checked against what the mesh says they must show.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <numbers>
+
+#include <glm/geometric.hpp>
+#include <glm/vec4.hpp>
+
+#include "gl_test_support.h"
+#include "render/colour_map.h"
+#include "render/headless.h"
+#include "render/surface_geometry.h"
+#include "rgb/mesh.h"
+#include "rgb/loop_geometry.h"
+#include "rgb/refine.h"
+#include "test_meshes.h"
+
+namespace {
+
+using render::Colouring;
+using render::HeadlessView;
+using render::Image;
+using render::RenderOptions;
+using render_test::count_pixels;
+
+RenderOptions rgb_options(bool wire) {
+    RenderOptions options;
+    options.shading = render::Shading::Flat;
+    options.colouring = Colouring::RgbType;
+    options.wireframe = wire;
+    return options;
+}
+
+// The camera render_headless uses for this mesh.
+render::OrbitCamera camera_for(const rgb::Mesh& mesh, const HeadlessView& view) {
+    render::SurfaceGeometry geometry;
+    geometry.rebuild(mesh);
+    return render::framing_camera(geometry.bounds(mesh), view);
+}
+
+std::string file_bytes(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), {}};
+}
+
+TEST(Screenshot, SameInputGivesTheSameBytes) {
+    rgb::Mesh mesh = render_test::icosphere(2);
+    rgb::set_level(mesh, rgb::Region::sphere({0.0, 0.0, 1.0}, 0.5), 2);
+    const HeadlessView view{{160, 120}, 30.0f, 20.0f};
+    const Image first = render::render_headless(mesh, rgb_options(true), view);
+    const Image second = render::render_headless(mesh, rgb_options(true), view);
+    EXPECT_EQ(first.rgba, second.rgba);
+
+    const auto dir = std::filesystem::temp_directory_path() / "rgbsub_render_determinism";
+    std::filesystem::create_directories(dir);
+    render::write_png(first, dir / "a.png");
+    render::write_png(second, dir / "b.png");
+    EXPECT_EQ(file_bytes(dir / "a.png"), file_bytes(dir / "b.png"));
+    const Image back = render::read_png(dir / "a.png");
+    EXPECT_EQ(back.rgba, first.rgba) << "the PNG round trip is lossless and keeps the row order";
+    std::filesystem::remove_all(dir);
+}
+
+TEST(Screenshot, BaseMeshInRgbModeIsAllGreen) {
+    rgb::Mesh mesh = render_test::icosphere(2);
+    const auto counts = count_pixels(render::render_headless(mesh, rgb_options(true), {{200, 150}, 30.0f, 20.0f}));
+    EXPECT_EQ(counts.red, 0u);
+    EXPECT_EQ(counts.blue, 0u);
+    EXPECT_GT(counts.green, 200u * 150u / 5) << "the framed sphere covers a good part of the view";
+}
+
+// Seen from straight above, the flat grid's triangles do not overlap, so the pixels of each colour
+// must add up to the screen area of that colour's triangles, up to the pixels along the outline of
+// the colour's region: a pixel centre can fall on the wrong side only within half a pixel diagonal
+// (sqrt(2)/2) of it, a band of area at most sqrt(2) * outline length.
+TEST(Screenshot, ColourAreasMatchTheProjectedTriangles) {
+    rgb::Mesh mesh = render_test::grid(4);
+    rgb::set_level(mesh, rgb::Region::sphere({-1.0, 0.0, -1.0}, 1.0), 3);
+    const HeadlessView view{{400, 400}, 0.0f, 90.0f};
+    const render_test::PixelCounts counts = count_pixels(render::render_headless(mesh, rgb_options(false), view));
+
+    const render::OrbitCamera camera = camera_for(mesh, view);
+    const glm::mat4 vp = camera.view_projection(1.0f);
+    const auto to_pixels = [&](rgb::VertexId v) {
+        const glm::vec4 clip = vp * glm::vec4(glm::vec3(rgb::displayed_position(mesh, v)), 1.0f);
+        return (glm::vec2(clip) / clip.w + 1.0f) * 0.5f * glm::vec2(view.size);
+    };
+    double area[3] = {0, 0, 0};
+    double outline[3] = {0, 0, 0};
+    for (rgb::FaceId f : mesh.faces()) {
+        const int c = static_cast<int>(mesh.colour(f));
+        const auto& v = mesh.face_vertices(f);
+        const glm::vec2 p0 = to_pixels(v[0]), p1 = to_pixels(v[1]), p2 = to_pixels(v[2]);
+        const glm::vec2 e1 = p1 - p0, e2 = p2 - p0;
+        area[c] += 0.5 * std::abs(e1.x * e2.y - e1.y * e2.x);
+        for (int i = 0; i < 3; ++i) {
+            const rgb::HalfedgeId h = rgb::Mesh::halfedge(f, i);
+            if (mesh.is_boundary(h) || mesh.colour(rgb::Mesh::face(mesh.opposite(h))) != mesh.colour(f))
+                outline[c] += glm::distance(to_pixels(mesh.from_vertex(h)), to_pixels(mesh.to_vertex(h)));
+        }
+    }
+    ASSERT_GT(area[1], 100.0) << "the refinement made red triangles";
+    ASSERT_GT(area[2], 100.0) << "the refinement made blue triangles";
+    const double got[3] = {static_cast<double>(counts.green), static_cast<double>(counts.red), static_cast<double>(counts.blue)};
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(got[c], area[c], std::sqrt(2.0) * outline[c]) << rgb::colour_name(static_cast<rgb::Colour>(c));
+    EXPECT_EQ(counts.neutral, 0u);
+}
+
+// An inscribed polyhedron's silhouette lies between those of its inner sphere (touching the face
+// planes) and its circumsphere; a centred sphere of radius r seen from distance d under vertical
+// field of view fov covers a disc of radius tan(asin(r / d)) / tan(fov / 2) * H / 2 pixels. Pixel
+// sampling adds at most sqrt(2)/2 pixel around the outline.
+TEST(Screenshot, SphereSilhouetteCoversItsProjectedArea) {
+    rgb::Mesh mesh = render_test::icosphere(3);
+    const HeadlessView view{{300, 300}, 40.0f, 25.0f};
+    const render_test::PixelCounts counts = count_pixels(render::render_headless(mesh, RenderOptions{}, view));
+    const double covered = static_cast<double>(view.size.x * view.size.y) - static_cast<double>(counts.background);
+
+    double inner = 1.0;
+    for (rgb::FaceId f : mesh.faces()) {
+        const auto& v = mesh.face_vertices(f);
+        const glm::dvec3 p0 = mesh.insertion_position(v[0]);
+        const glm::dvec3 n = glm::normalize(glm::cross(mesh.insertion_position(v[1]) - p0, mesh.insertion_position(v[2]) - p0));
+        inner = std::min(inner, std::abs(glm::dot(n, p0)));
+    }
+    const render::OrbitCamera camera = camera_for(mesh, view);
+    ASSERT_LT(glm::length(camera.target), 1e-5f) << "the icosphere is centrally symmetric";
+    const double half_fov = 0.5 * camera.fov_y_deg * std::numbers::pi / 180.0;
+    const auto disc_radius = [&](double r) { return std::tan(std::asin(r / camera.distance)) / std::tan(half_fov) * view.size.y / 2; };
+    const double r_in = disc_radius(inner), r_out = disc_radius(1.0);
+    const double band = std::sqrt(2.0) * std::numbers::pi * r_out;
+    EXPECT_GE(covered, std::numbers::pi * r_in * r_in - band);
+    EXPECT_LE(covered, std::numbers::pi * r_out * r_out + band);
+}
+
+TEST(Screenshot, LevelLegendShowsEachLevelsColour) {
+    rgb::Mesh mesh = render_test::icosphere(1);
+    rgb::set_level(mesh, rgb::Region::sphere({0.0, 0.0, 1.0}, 0.7), 2);
+    RenderOptions options;
+    options.colouring = Colouring::Level;
+    const HeadlessView view{{240, 200}, 0.0f, 0.0f};
+    const Image image = render::render_headless(mesh, options, view);
+    int max_level = 0;
+    for (rgb::FaceId f : mesh.faces()) max_level = std::max(max_level, mesh.level(f));
+    ASSERT_EQ(max_level, 2);
+    for (int level = 0; level <= max_level; ++level) {
+        // Swatch centres, as laid out in level_legend.cpp (12 px margin, 16 px swatches, 4 px gap).
+        const int y = view.size.y - 12 - (level + 1) * 20 + 4 + 8;
+        const glm::u8vec4 p = image.pixel(12 + 8, y);
+        const glm::vec3 want = render::level_colour(level, max_level) * 255.0f;
+        EXPECT_NEAR(p.r, want.r, 1.0) << "level " << level;
+        EXPECT_NEAR(p.g, want.g, 1.0) << "level " << level;
+        EXPECT_NEAR(p.b, want.b, 1.0) << "level " << level;
+    }
+}
+
+TEST(Screenshot, BrushCursorAndBaseOverlayAddOnlyWhatTheyDraw) {
+    rgb::Mesh mesh = render_test::icosphere(0);
+    rgb::refine_uniform(mesh, 2);
+    const HeadlessView view{{200, 200}, 0.0f, 0.0f};
+    const Image plain = render::render_headless(mesh, RenderOptions{}, view);
+    RenderOptions with_brush;
+    with_brush.brush = render::BrushCursor{{0.0f, 0.0f, 0.8f}, 0.3f};
+    RenderOptions with_cage;
+    with_cage.base_mesh_overlay = true;
+    const auto orange = [](const Image& image) {
+        std::size_t n = 0;
+        for (int y = 0; y < image.height; ++y)
+            for (int x = 0; x < image.width; ++x) {
+                const glm::u8vec4 p = image.pixel(x, y);
+                n += p.r > 150 && p.r > p.g + 40 && p.g > p.b + 40;
+            }
+        return n;
+    };
+    const auto dark = [](const Image& image) {
+        std::size_t n = 0;
+        for (int y = 0; y < image.height; ++y)
+            for (int x = 0; x < image.width; ++x) n += image.pixel(x, y).r < 50;
+        return n;
+    };
+    EXPECT_EQ(orange(plain), 0u);
+    EXPECT_GT(orange(render::render_headless(mesh, with_brush, view)), 50u) << "a ring about 2 pixels wide";
+    EXPECT_EQ(dark(plain), 0u) << "the lit grey surface never gets that dark";
+    EXPECT_GT(dark(render::render_headless(mesh, with_cage, view)), 50u) << "the icosahedron's edges";
+}
+
+}  // namespace

@@ -1,0 +1,102 @@
+// The CPU image of the vertex buffer: incremental updates driven by the observer must give exactly
+// what a full rebuild gives, and touch only the neighbourhood of an edit.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "render/mesh_changes.h"
+#include "render/surface_geometry.h"
+#include "rgb/mesh.h"
+#include "rgb/refine.h"
+#include "test_meshes.h"
+
+namespace {
+
+using render::MeshChanges;
+using render::PositionSource;
+using render::SlotRange;
+using render::SurfaceGeometry;
+
+void expect_equals_rebuild(const rgb::Mesh& mesh, const SurfaceGeometry& incremental) {
+    SurfaceGeometry fresh(incremental.source());
+    fresh.rebuild(mesh);
+    ASSERT_EQ(incremental.vertices().size(), fresh.vertices().size());
+    for (std::size_t i = 0; i < fresh.vertices().size(); ++i)
+        ASSERT_EQ(incremental.vertices()[i], fresh.vertices()[i]) << "vertex " << i << " of face slot " << i / 3;
+}
+
+bool in_ranges(std::uint32_t slot, const std::vector<SlotRange>& ranges) {
+    return std::any_of(ranges.begin(), ranges.end(),
+                       [slot](const SlotRange& r) { return slot >= r.first && slot < r.first + r.count; });
+}
+
+class SurfaceGeometryTest : public ::testing::TestWithParam<PositionSource> {};
+
+TEST_P(SurfaceGeometryTest, IncrementalUpdatesEqualARebuildThroughRefineAndCoarsen) {
+    rgb::Mesh mesh = render_test::icosphere(1);
+    MeshChanges changes(mesh);
+    SurfaceGeometry geometry(GetParam());
+    geometry.rebuild(mesh);
+
+    const rgb::Region cap = rgb::Region::sphere({0.0, 0.0, 1.0}, 0.6);
+    for (int target : {1, 3, 2, 0}) {
+        rgb::set_level(mesh, cap, target);
+        geometry.update(mesh, changes);
+        changes.clear();
+        SCOPED_TRACE(testing::Message() << "after set_level " << target);
+        expect_equals_rebuild(mesh, geometry);
+    }
+}
+
+TEST_P(SurfaceGeometryTest, ColourCountsFollowTheMesh) {
+    rgb::Mesh mesh = render_test::icosphere(1);
+    MeshChanges changes(mesh);
+    SurfaceGeometry geometry(GetParam());
+    geometry.rebuild(mesh);
+    rgb::set_level(mesh, rgb::Region::sphere({1.0, 0.0, 0.0}, 0.5), 2);
+    geometry.update(mesh, changes);
+
+    std::size_t counts[3] = {0, 0, 0};
+    int max_level = 0;
+    for (rgb::FaceId f : mesh.faces()) {
+        ++counts[static_cast<int>(mesh.colour(f))];
+        max_level = std::max(max_level, mesh.level(f));
+    }
+    EXPECT_EQ(geometry.triangles_of(rgb::Colour::Green), counts[0]);
+    EXPECT_EQ(geometry.triangles_of(rgb::Colour::Red), counts[1]);
+    EXPECT_EQ(geometry.triangles_of(rgb::Colour::Blue), counts[2]);
+    EXPECT_GT(counts[1] + counts[2], 0u) << "a local refinement leaves red/blue transition triangles";
+    EXPECT_EQ(geometry.max_face_level(), max_level);
+}
+
+INSTANTIATE_TEST_SUITE_P(Positions, SurfaceGeometryTest, ::testing::Values(PositionSource::Displayed, PositionSource::Limit));
+
+TEST(SurfaceGeometry, OneSplitRewritesOnlyItsNeighbourhood) {
+    rgb::Mesh mesh = render_test::icosphere(3);  // 1280 faces
+    MeshChanges changes(mesh);
+    SurfaceGeometry geometry;
+    geometry.rebuild(mesh);
+    const std::vector<render::SurfaceVertex> before(geometry.vertices().begin(), geometry.vertices().end());
+
+    const auto& corners = mesh.face_vertices(rgb::FaceId(0));
+    ASSERT_TRUE(rgb::refine_edge(mesh, corners[0], corners[1]));
+    const std::vector<SlotRange> ranges = geometry.update(mesh, changes);
+
+    std::size_t rewritten = 0;
+    for (const SlotRange& r : ranges) rewritten += r.count;
+    for (std::uint32_t slot = 0; slot < geometry.face_slots(); ++slot) {
+        const bool changed = slot >= before.size() / 3 ||
+                             !std::equal(before.begin() + 3 * slot, before.begin() + 3 * slot + 3, geometry.vertices().begin() + 3 * slot);
+        if (changed) {
+            EXPECT_TRUE(in_ranges(slot, ranges)) << "face slot " << slot << " changed but is not uploaded";
+        }
+    }
+    // A GG-split replaces 2 faces by 4 and moves 4 vertices: with their rings' normals that is a few
+    // dozen faces, far from the 1280 of a full upload.
+    EXPECT_GT(rewritten, 0u);
+    EXPECT_LT(rewritten, 100u);
+    expect_equals_rebuild(mesh, geometry);
+}
+
+}  // namespace
