@@ -4,6 +4,7 @@
 // Σl, displayed positions are the oracle's at the display level. Every few hundred operations the
 // whole mesh is compared. At the end everything removable is removed, which must give back the base
 // mesh bit for bit.
+#include <algorithm>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -57,12 +58,14 @@ void run(const RandomRun& r) {
     ChangeRecorder changes(mesh);
     const OracleView view{mesh, ids, oracle_tolerance(r.base)};
     std::mt19937 rng(r.seed);
-    int done = 0;
+    int done = 0, removals = 0, deepest = 0;
     for (long attempt = 0; done < r.operations && attempt < 50L * r.operations; ++attempt) {
         changes.clear();
         const std::string what = random_operation(mesh, rng, r.max_level);
         if (what.empty()) continue;
         ++done;
+        removals += what.starts_with("remove");
+        deepest = std::max(deepest, mesh.max_vertex_level());
         SCOPED_TRACE("operation " + std::to_string(done) + ": " + what);
         ASSERT_FALSE(testing::Test::HasFailure());
         ASSERT_TRUE(invariants_hold(mesh));
@@ -76,6 +79,10 @@ void run(const RandomRun& r) {
         }
     }
     ASSERT_EQ(done, r.operations) << "the random driver found too few applicable operations";
+    // The run must exercise what it claims: both directions, down to the finest level.
+    EXPECT_GE(removals, r.operations / 5);
+    EXPECT_LE(removals, r.operations * 4 / 5);
+    EXPECT_EQ(deepest, r.max_level);
     ASSERT_TRUE(everything_agrees(view));
     remove_everything_removable(mesh);
     ASSERT_TRUE(invariants_hold(mesh));
