@@ -23,7 +23,8 @@ struct UsageError : std::runtime_error {
 
 // X(name, one-line description); the first entry is what `rgbsub` runs without a subcommand.
 #define RGBSUB_COMMANDS(X) \
-    X(edit, "open the editor on an OBJ mesh (the default when no subcommand is given)")
+    X(edit, "open the editor on an OBJ mesh (the default when no subcommand is given)") \
+    X(render, "render an OBJ mesh to a PNG headless (no display needed)")
 
 #define RGBSUB_DECLARE_COMMAND(name, description) int run_##name(std::span<const std::string> args);
 RGBSUB_COMMANDS(RGBSUB_DECLARE_COMMAND)

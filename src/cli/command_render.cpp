@@ -1,0 +1,150 @@
+// `rgbsub render`: a headless screenshot of an OBJ through OSMesa, framed automatically.
+#include <charconv>
+#include <cstdio>
+#include <iostream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "cli/arguments.h"
+#include "cli/commands.h"
+#include "io/mesh_file.h"
+#include "io/obj_error.h"
+#include "render/headless.h"
+#include "rgb/loop_geometry.h"
+#include "rgb/mesh.h"
+
+namespace cli {
+namespace {
+
+constexpr std::string_view kUsage =
+    "usage: rgbsub render IN.obj -o OUT.png [--size WxH] [--mode shaded|flat|rgb|level] [--wire]\n"
+    "                     [--view AZIMUTH,ELEVATION] [--limit] [--base]\n"
+    "Renders the mesh headless (OSMesa, no display needed), framed automatically.\n"
+    "  -o, --output PATH   the PNG to write (replaced atomically)\n"
+    "  --size WxH          image size in pixels (default 1024x768)\n"
+    "  --mode MODE         shaded (smooth), flat, rgb (triangle types: green/red/blue),\n"
+    "                      level (heat map of face levels with a legend); default shaded\n"
+    "  --wire              draw the triangle edges\n"
+    "  --view AZ,EL        camera azimuth and elevation in degrees (default 30,20)\n"
+    "  --limit             limit-surface positions where the mesh holds a vertex's ring,\n"
+    "                      displayed positions elsewhere (the count is reported)\n"
+    "  --base              overlay the base mesh's edges\n"
+    "The same input gives the same bytes.\n";
+
+constexpr int kMaxImageSide = 8192;
+
+// Arguments knows only --long names; -o is the conventional spelling of the output.
+std::vector<std::string> spell_out_short_options(std::span<const std::string> args) {
+    std::vector<std::string> out(args.begin(), args.end());
+    for (std::string& word : out)
+        if (word == "-o") word = "--output";
+    return out;
+}
+
+template <class T>
+T parse_part(std::string_view text, std::string_view option, std::string_view whole) {
+    T value{};
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (text.empty() || error != std::errc() || end != text.data() + text.size())
+        throw UsageError(std::string(option) + ": cannot read '" + std::string(whole) + "'");
+    return value;
+}
+
+glm::ivec2 parse_size(const std::string& text) {
+    const std::size_t x = text.find('x');
+    if (x == std::string::npos) throw UsageError("--size expects WIDTHxHEIGHT, got '" + text + "'");
+    const glm::ivec2 size(parse_part<int>(std::string_view(text).substr(0, x), "--size", text),
+                          parse_part<int>(std::string_view(text).substr(x + 1), "--size", text));
+    if (size.x < 1 || size.y < 1 || size.x > kMaxImageSide || size.y > kMaxImageSide)
+        throw UsageError("--size must be between 1x1 and " + std::to_string(kMaxImageSide) + "x" +
+                         std::to_string(kMaxImageSide) + ", got " + text);
+    return size;
+}
+
+void parse_view(const std::string& text, render::HeadlessView& view) {
+    const std::size_t comma = text.find(',');
+    if (comma == std::string::npos) throw UsageError("--view expects AZIMUTH,ELEVATION in degrees, got '" + text + "'");
+    view.azimuth_deg = parse_part<float>(std::string_view(text).substr(0, comma), "--view", text);
+    view.elevation_deg = parse_part<float>(std::string_view(text).substr(comma + 1), "--view", text);
+    if (view.elevation_deg < -90.0f || view.elevation_deg > 90.0f)
+        throw UsageError("--view: elevation must be between -90 and 90, got '" + text + "'");
+}
+
+void apply_mode(const std::string& mode, render::RenderOptions& options) {
+    if (mode == "shaded") {
+        options.shading = render::Shading::Smooth;
+    } else if (mode == "flat") {
+        options.shading = render::Shading::Flat;
+    } else if (mode == "rgb") {
+        options.shading = render::Shading::Flat;
+        options.colouring = render::Colouring::RgbType;
+    } else if (mode == "level") {
+        options.colouring = render::Colouring::Level;
+    } else {
+        throw UsageError("--mode must be shaded, flat, rgb or level, got '" + mode + "'");
+    }
+}
+
+std::size_t count_limit_fallbacks(const rgb::Mesh& mesh) {
+    std::size_t fallbacks = 0;
+    for (rgb::VertexId v : mesh.vertices()) fallbacks += !rgb::try_limit_position(mesh, v).has_value();
+    return fallbacks;
+}
+
+}  // namespace
+
+int run_render(std::span<const std::string> args) {
+    const std::vector<std::string> words = spell_out_short_options(args);
+    const Arguments arguments(words, {"--wire", "--limit", "--base"}, {"--output", "--size", "--mode", "--view"});
+    if (arguments.has("--help")) {
+        std::cout << kUsage;
+        return exit_ok;
+    }
+    if (arguments.positional().size() != 1) throw UsageError("expects exactly one IN.obj");
+    const std::optional<std::string> output = arguments.value("--output");
+    if (!output) throw UsageError("needs -o OUT.png");
+
+    render::HeadlessView view;
+    view.size = {1024, 768};
+    if (const auto size = arguments.value("--size")) view.size = parse_size(*size);
+    if (const auto angles = arguments.value("--view")) parse_view(*angles, view);
+    render::RenderOptions options;
+    apply_mode(arguments.value("--mode").value_or("shaded"), options);
+    options.wireframe = arguments.has("--wire");
+    options.base_mesh_overlay = arguments.has("--base");
+    if (arguments.has("--limit")) options.positions = render::PositionSource::Limit;
+
+    const std::string& input = arguments.positional().front();
+    std::vector<std::string> warnings;
+    rgb::Mesh mesh;
+    try {
+        mesh = rgbio::load_mesh(input, &warnings);
+    } catch (const rgbio::ObjError& error) {
+        std::cerr << "rgbsub render: " << error.what() << '\n';
+        return error.problem() == rgbio::ObjProblem::Unreadable ? exit_io_failure : exit_bad_input;
+    }
+    for (const std::string& warning : warnings) std::cerr << "rgbsub render: " << input << ": " << warning << '\n';
+    if (options.positions == render::PositionSource::Limit) {
+        if (const std::size_t fallbacks = count_limit_fallbacks(mesh); fallbacks > 0)
+            std::cerr << "rgbsub render: --limit: " << fallbacks << " of " << mesh.num_vertices()
+                      << " vertices lack their limit position in this mesh and are drawn where displayed\n";
+    }
+
+    render::Image image;
+    try {
+        image = render::render_headless(mesh, options, view);
+    } catch (const std::runtime_error& error) {
+        std::cerr << "rgbsub render: cannot render headless: " << error.what() << '\n';
+        return exit_bad_input;
+    }
+    try {
+        render::write_png(image, *output);
+    } catch (const std::runtime_error& error) {
+        std::cerr << "rgbsub render: " << error.what() << '\n';
+        return exit_io_failure;
+    }
+    return exit_ok;
+}
+
+}  // namespace cli
