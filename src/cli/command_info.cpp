@@ -1,0 +1,34 @@
+// rgbsub info FILE.obj: the loader's validation report and the mesh's statistics.
+#include <iostream>
+
+#include "cli/arguments.h"
+#include "cli/commands.h"
+#include "cli/mesh_io_support.h"
+#include "cli/mesh_summary.h"
+#include "io/obj_reader.h"
+
+namespace cli {
+
+int run_info(std::span<const std::string> args) {
+    const Arguments arguments(args, {}, {});
+    if (arguments.has("--help")) {
+        std::cout << "usage: rgbsub info FILE.obj\n"
+                     "Validates FILE.obj as rgbsub loads it (fixes are reported as warnings, problems as errors\n"
+                     "naming the line) and prints V, E, F, boundary loops, Euler characteristic, and the\n"
+                     "triangles per colour and per level.\n";
+        return exit_ok;
+    }
+    if (arguments.positional().size() != 1) throw UsageError("expects exactly one FILE.obj");
+    const std::string& file = arguments.positional()[0];
+    return report_io_errors("info", [&] {
+        const rgbio::LoadedMesh loaded = rgbio::read_obj_file(file);
+        const rgb::Mesh mesh = rgbio::build_mesh(loaded, file);
+        std::cout << file << ": valid" << (loaded.warnings.empty() ? "" : " after fixes") << '\n';
+        for (const std::string& warning : loaded.warnings) std::cout << "warning: " << warning << '\n';
+        std::cout << "adaptive state: " << (loaded.state ? "restored from the file's #rgb lines" : "none (base mesh)") << '\n';
+        print_summary(std::cout, summarize(mesh));
+        return exit_ok;
+    });
+}
+
+}  // namespace cli

@@ -1,0 +1,21 @@
+#pragma once
+// The numbers `rgbsub info` prints about a mesh: counts, topology and the RGB make-up.
+#include <cstddef>
+#include <map>
+#include <ostream>
+
+#include "rgb/mesh.h"
+
+namespace cli {
+
+struct MeshSummary {
+    std::size_t vertices = 0, edges = 0, faces = 0, boundary_loops = 0;
+    long euler_characteristic = 0;  // V - E + F
+    std::size_t green = 0, red = 0, blue = 0;
+    std::map<int, std::size_t> faces_per_level;
+};
+
+MeshSummary summarize(const rgb::Mesh& mesh);
+void print_summary(std::ostream& out, const MeshSummary& summary);
+
+}  // namespace cli
