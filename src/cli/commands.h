@@ -24,7 +24,10 @@ struct UsageError : std::runtime_error {
 // X(name, one-line description); the first entry is what `rgbsub` runs without a subcommand.
 #define RGBSUB_COMMANDS(X) \
     X(edit, "open the editor on an OBJ mesh (the default when no subcommand is given)") \
-    X(render, "render an OBJ mesh to a PNG headless (no display needed)")
+    X(render, "render an OBJ mesh to a PNG headless (no display needed)") \
+    X(info, "validate an OBJ file and print its counts, topology and RGB make-up") \
+    X(refine, "set the level of detail of an OBJ mesh (everywhere or in a sphere) and save it") \
+    X(apply, "run a script of level-of-detail edits on an OBJ mesh and save it")
 
 #define RGBSUB_DECLARE_COMMAND(name, description) int run_##name(std::span<const std::string> args);
 RGBSUB_COMMANDS(RGBSUB_DECLARE_COMMAND)
