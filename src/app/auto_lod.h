@@ -1,0 +1,44 @@
+#pragma once
+// Budget-driven automatic level of detail (spec §3.3), run a slice at a time so the window stays
+// responsive: refine where displayed edges are longest until the triangle budget is reached or no
+// edge is longer than the threshold.
+//
+// Until the core's driver (rgb/lod_driver.h) lands this is the refinement half of §3.3 on top of
+// refine_edge; the editor only sees AutoLodJob, so switching over is local to auto_lod.cpp.
+#include <cstddef>
+#include <memory>
+
+#include "app/mesh_job.h"
+
+namespace rgb {
+class Mesh;
+}
+
+namespace app {
+
+struct AutoLodSettings {
+    std::size_t triangle_budget = 100000;
+    // Criterion: edges longer than this fraction of the mesh's bounding-box diagonal get refined.
+    double max_edge_fraction = 0.01;
+    int max_level = 8;
+};
+
+class AutoLodJob : public MeshJob {
+public:
+    AutoLodJob(rgb::Mesh& mesh, const AutoLodSettings& settings);
+    ~AutoLodJob() override;
+    AutoLodJob(const AutoLodJob&) = delete;
+    AutoLodJob& operator=(const AutoLodJob&) = delete;
+
+    bool step(std::chrono::microseconds slice) override;
+    // The share of the triangle budget reached so far (1 once the criterion is met).
+    float progress() const override;
+    bool changed() const override;
+    std::string label() const override { return "automatic LOD"; }
+
+private:
+    struct State;
+    std::unique_ptr<State> state_;
+};
+
+}  // namespace app

@@ -1,0 +1,83 @@
+#include "app/undo_history.h"
+
+#include <utility>
+
+#include "rgb/mesh.h"
+
+namespace app {
+
+std::size_t state_bytes(const rgb::MeshState& state) {
+    return state.vertices.capacity() * sizeof(rgb::VertexState) + state.faces.capacity() * sizeof(rgb::FaceState) +
+           state.base_valence.capacity() * sizeof(std::uint16_t) +
+           (state.free_vertices.capacity() + state.free_faces.capacity()) * sizeof(std::uint32_t);
+}
+
+UndoHistory::Step UndoHistory::make_step(std::string label, rgb::MeshState state) {
+    const std::size_t bytes = state_bytes(state);
+    return Step{std::move(label), std::move(state), bytes};
+}
+
+void UndoHistory::begin_edit(const rgb::Mesh& mesh, std::string label) {
+    pending_ = make_step(std::move(label), rgb::capture_state(mesh));
+}
+
+void UndoHistory::end_edit(const rgb::Mesh& /*mesh*/, bool changed) {
+    if (!pending_) return;
+    if (changed) {
+        for (const Step& step : redo_) bytes_ -= step.bytes;
+        redo_.clear();
+        bytes_ += pending_->bytes;
+        undo_.push_back(std::move(*pending_));
+        enforce_bound();
+    }
+    pending_.reset();
+}
+
+std::optional<rgb::Mesh> UndoHistory::undo(const rgb::Mesh& current) {
+    if (undo_.empty()) return std::nullopt;
+    Step step = std::move(undo_.back());
+    undo_.pop_back();
+    rgb::Mesh before = rgb::restore_state(step.other);
+    bytes_ -= step.bytes;
+    Step forward = make_step(std::move(step.label), rgb::capture_state(current));
+    bytes_ += forward.bytes;
+    redo_.push_back(std::move(forward));
+    enforce_bound();
+    return before;
+}
+
+std::optional<rgb::Mesh> UndoHistory::redo(const rgb::Mesh& current) {
+    if (redo_.empty()) return std::nullopt;
+    Step step = std::move(redo_.back());
+    redo_.pop_back();
+    rgb::Mesh after = rgb::restore_state(step.other);
+    bytes_ -= step.bytes;
+    Step back = make_step(std::move(step.label), rgb::capture_state(current));
+    bytes_ += back.bytes;
+    undo_.push_back(std::move(back));
+    enforce_bound();
+    return after;
+}
+
+void UndoHistory::clear() {
+    undo_.clear();
+    redo_.clear();
+    pending_.reset();
+    bytes_ = 0;
+}
+
+void UndoHistory::set_byte_bound(std::size_t bound) {
+    byte_bound_ = bound;
+    enforce_bound();
+}
+
+// Forgets the oldest steps first (the redo side's oldest is its front, the furthest step away).
+void UndoHistory::enforce_bound() {
+    while (bytes_ > byte_bound_ && (!undo_.empty() || !redo_.empty())) {
+        std::deque<Step>& side = undo_.empty() ? redo_ : undo_;
+        bytes_ -= side.front().bytes;
+        side.pop_front();
+    }
+}
+
+}  // namespace app

@@ -1,0 +1,193 @@
+// The editor scripted through its own input layer, without X or GL: open the bunny, paint a stroke
+// across it, undo, redo, save, and check the file.
+#include <filesystem>
+#include <fstream>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "app/editor.h"
+#include "io/mesh_file.h"
+#include "io/mesh_state_compare.h"
+#include "rgb/invariants.h"
+#include "rgb/state.h"
+#include "stroke_support.h"
+
+namespace app {
+namespace {
+
+constexpr glm::ivec2 kViewport{800, 600};
+
+class EditorScript : public ::testing::Test {
+protected:
+    void SetUp() override {
+        ASSERT_TRUE(editor.open(test::bunny_path())) << editor.message();
+        editor.brush().mode = BrushMode::Refine;
+        editor.brush().target_level = 3;
+        editor.brush().radius_px = 30.0f;
+        editor.brush().falloff = 0.0f;
+    }
+
+    // A left-drag from `from` to `to` in `samples` mouse events, as a fast mouse delivers them.
+    void stroke(glm::vec2 from, glm::vec2 to, int samples, Modifiers mods = {}) {
+        editor.mouse_moved(from);
+        editor.mouse_pressed(MouseButton::Left, mods);
+        for (int i = 1; i <= samples; ++i) editor.mouse_moved(from + (to - from) * (float(i) / float(samples)));
+        editor.mouse_released(MouseButton::Left);
+    }
+
+    // Where the stroke's path meets the surface, before painting changes it.
+    std::vector<glm::dvec3> surface_points(glm::vec2 from, glm::vec2 to, int count) {
+        std::vector<glm::dvec3> points;
+        for (int i = 0; i <= count; ++i) {
+            editor.mouse_moved(from + (to - from) * (float(i) / float(count)));
+            if (auto hit = editor.cursor_hit()) points.push_back(hit->point);
+        }
+        return points;
+    }
+
+    Editor editor{kViewport};
+    const glm::vec2 from{0.4f * kViewport.x, 0.55f * kViewport.y};
+    const glm::vec2 to{0.6f * kViewport.x, 0.55f * kViewport.y};
+};
+
+TEST_F(EditorScript, StrokeUndoRedoSaveRoundTrip) {
+    const std::vector<glm::dvec3> path = surface_points(from, to, 20);
+    ASSERT_EQ(path.size(), 21u) << "the stroke must cross the framed bunny";
+    const rgb::MeshState original = rgb::capture_state(editor.document().mesh());
+    const std::size_t original_faces = editor.document().mesh().num_faces();
+    const double near_radius = editor.brush_world_radius(path.front());
+    const std::size_t original_near = test::faces_near(editor.document().mesh(), path, near_radius);
+
+    stroke(from, to, 3);  // three samples for a long stroke: interpolation must fill the gaps
+    const rgb::MeshState painted = rgb::capture_state(editor.document().mesh());
+    EXPECT_GT(editor.document().mesh().num_faces(), original_faces);
+    EXPECT_TRUE(editor.document().dirty());
+    EXPECT_EQ(editor.window_title(), "bunny.obj* - rgbsub");
+    EXPECT_GT(editor.dab_timing().dabs, 10u);
+    EXPECT_TRUE(rgb::check_invariants(editor.document().mesh()).ok());
+    // Every point of the path got refined, not just the mouse samples.
+    const std::size_t painted_near = test::faces_near(editor.document().mesh(), path, near_radius);
+    for (const glm::dvec3& p : path)
+        EXPECT_GT(test::faces_near(editor.document().mesh(), std::span(&p, 1), 0.5 * near_radius),
+                  test::faces_near(rgb::restore_state(original), std::span(&p, 1), 0.5 * near_radius));
+
+    editor.key_pressed(Key::Z, {.ctrl = true});
+    EXPECT_EQ(editor.document().mesh().num_faces(), original_faces);
+    rgbio::test::expect_identical(rgb::capture_state(editor.document().mesh()), original);
+
+    editor.key_pressed(Key::Z, {.shift = true, .ctrl = true});
+    rgbio::test::expect_identical(rgb::capture_state(editor.document().mesh()), painted);
+
+    const std::filesystem::path saved = std::filesystem::path(::testing::TempDir()) / "editor_script_saved.obj";
+    ASSERT_TRUE(editor.save_as(saved.string())) << editor.message();
+    EXPECT_FALSE(editor.document().dirty());
+
+    const rgb::Mesh reloaded = rgbio::load_mesh(saved.string());
+    const rgb::InvariantReport report = rgb::check_invariants(reloaded);
+    EXPECT_TRUE(report.ok()) << (report.ok() ? "" : report.violations.front());
+    rgbio::test::expect_identical(rgb::capture_state(reloaded), painted);
+    EXPECT_EQ(test::faces_near(reloaded, path, near_radius), painted_near);
+    EXPECT_GT(painted_near, original_near);
+}
+
+TEST_F(EditorScript, ShiftInvertsRefineIntoCoarsen) {
+    const std::size_t original_faces = editor.document().mesh().num_faces();
+    stroke(from, to, 3);
+    const std::size_t refined_faces = editor.document().mesh().num_faces();
+    ASSERT_GT(refined_faces, original_faces);
+    editor.brush().target_level = 0;
+    stroke(from, to, 3, {.shift = true});
+    EXPECT_LT(editor.document().mesh().num_faces(), refined_faces);
+    EXPECT_TRUE(rgb::check_invariants(editor.document().mesh()).ok());
+    EXPECT_EQ(editor.document().history().undo_steps(), 2u);
+}
+
+TEST_F(EditorScript, NavigationDragsDoNotPaint) {
+    const std::size_t original_faces = editor.document().mesh().num_faces();
+    const glm::vec3 eye = editor.camera().camera().eye();
+    stroke(from, to, 5, {.alt = true});  // Alt+left orbits
+    EXPECT_NE(editor.camera().camera().eye(), eye);
+    editor.mouse_pressed(MouseButton::Right, {});
+    editor.mouse_moved(from);
+    editor.mouse_released(MouseButton::Right);
+    EXPECT_EQ(editor.document().mesh().num_faces(), original_faces);
+    EXPECT_FALSE(editor.document().history().can_undo());
+}
+
+TEST_F(EditorScript, StrokeOffTheMeshLeavesNoUndoStep) {
+    stroke({5.0f, 5.0f}, {40.0f, 5.0f}, 4);
+    EXPECT_FALSE(editor.document().history().can_undo());
+    EXPECT_FALSE(editor.document().dirty());
+}
+
+TEST_F(EditorScript, FloodFillRunsInSlicesAndUndoes) {
+    const rgb::MeshState original = rgb::capture_state(editor.document().mesh());
+    editor.start_flood_fill(1);
+    ASSERT_NE(editor.job(), nullptr);
+    int frames = 0;
+    while (editor.job() != nullptr && frames < 100000) {
+        editor.update(std::chrono::microseconds(200));
+        ++frames;
+    }
+    EXPECT_GT(frames, 1) << "a flood fill must give the window frames while it works";
+    EXPECT_EQ(editor.document().mesh().num_faces(), 4 * original.faces.size());
+    EXPECT_TRUE(editor.undo());
+    rgbio::test::expect_identical(rgb::capture_state(editor.document().mesh()), original);
+}
+
+TEST_F(EditorScript, SampleLevelReadsTheFaceUnderTheCursor) {
+    stroke(from, to, 3);
+    editor.brush().target_level = 0;
+    editor.mouse_moved(0.5f * (from + to));
+    ASSERT_TRUE(editor.sample_level_under_cursor());
+    EXPECT_EQ(editor.brush().target_level, editor.document().mesh().level(editor.cursor_hit()->face));
+    EXPECT_GE(editor.brush().target_level, 2);
+}
+
+TEST_F(EditorScript, QuittingWithUnsavedChangesAsksFirst) {
+    editor.request_quit();
+    EXPECT_TRUE(editor.should_quit());  // nothing to lose
+}
+
+TEST_F(EditorScript, UnsavedChangesAskBeforeQuitOrOpen) {
+    stroke(from, to, 3);
+    editor.request_quit();
+    EXPECT_EQ(editor.pending(), Pending::DiscardForQuit);
+    EXPECT_FALSE(editor.should_quit());
+    editor.answer_pending(false);
+    EXPECT_FALSE(editor.should_quit());
+    const std::size_t painted = editor.document().mesh().num_faces();
+    editor.request_open(test::bunny_path());
+    EXPECT_EQ(editor.pending(), Pending::DiscardForOpen);
+    EXPECT_EQ(editor.document().mesh().num_faces(), painted);
+    editor.answer_pending(true);
+    EXPECT_LT(editor.document().mesh().num_faces(), painted);
+    EXPECT_FALSE(editor.document().dirty());
+}
+
+TEST_F(EditorScript, LoadErrorsBecomeMessages) {
+    const std::filesystem::path bad = std::filesystem::path(::testing::TempDir()) / "editor_bad.obj";
+    { std::ofstream(bad) << "v 0 0 0\nv 1 0 0\nf 1 2 7\n"; }
+    const std::size_t faces = editor.document().mesh().num_faces();
+    EXPECT_FALSE(editor.open(bad.string()));
+    EXPECT_TRUE(editor.message_is_error());
+    EXPECT_NE(editor.message().find("editor_bad.obj:3"), std::string::npos) << editor.message();
+    EXPECT_EQ(editor.document().mesh().num_faces(), faces);
+}
+
+TEST_F(EditorScript, SaveAsOverAnotherFileAsksFirst) {
+    const std::filesystem::path other = std::filesystem::path(::testing::TempDir()) / "editor_other.obj";
+    { std::ofstream(other) << "keep me\n"; }
+    editor.request_save_as(other.string());
+    EXPECT_EQ(editor.pending(), Pending::Overwrite);
+    editor.answer_pending(false);
+    EXPECT_EQ(std::filesystem::file_size(other), 8u);
+    editor.request_save_as(other.string());
+    editor.answer_pending(true);
+    EXPECT_GT(std::filesystem::file_size(other), 8u);
+    EXPECT_EQ(editor.document().path(), other.string());
+}
+
+}  // namespace
+}  // namespace app
