@@ -2,10 +2,10 @@
 
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
 #include "io/obj_error.h"
+#include "io/obj_reader.h"
 
 namespace cli {
 
@@ -60,11 +60,7 @@ std::vector<LodEdit> parse_lod_script(const std::string& text, const std::string
 }
 
 std::vector<LodEdit> read_lod_script(const std::string& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
-    if (!in || in.bad()) throw rgbio::ObjError(rgbio::ObjProblem::Unreadable, file, 0, "cannot read the script");
-    return parse_lod_script(text.str(), file);
+    return parse_lod_script(rgbio::read_text_file(file), file);
 }
 
 rgb::SetLevelStats apply_lod_edit(rgb::Mesh& mesh, const LodEdit& edit) {

@@ -14,9 +14,7 @@
 
 namespace rgbio {
 
-namespace {
-
-std::string read_whole_file(const std::string& path) {
+std::string read_text_file(const std::string& path) {
     auto unreadable = [&](const std::string& why) { return ObjError(ObjProblem::Unreadable, path, 0, "cannot read the file: " + why); };
     const int fd = ::open(path.c_str(), O_RDONLY);
     if (fd < 0) throw unreadable(std::strerror(errno));
@@ -41,6 +39,8 @@ std::string read_whole_file(const std::string& path) {
     ::close(fd);
     return text;
 }
+
+namespace {
 
 // The state's live vertices, in slot order, must be the v lines and its live faces the f lines.
 bool state_matches_body(const rgb::MeshState& state, const ObjRecords& records) {
@@ -82,6 +82,6 @@ LoadedMesh read_obj_text(std::string_view text, const std::string& name) {
     return loaded;
 }
 
-LoadedMesh read_obj_file(const std::string& path) { return read_obj_text(read_whole_file(path), path); }
+LoadedMesh read_obj_file(const std::string& path) { return read_obj_text(read_text_file(path), path); }
 
 }  // namespace rgbio

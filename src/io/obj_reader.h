@@ -7,6 +7,10 @@
 
 namespace rgbio {
 
+// The whole file as bytes; throws ObjError(Unreadable) naming the system's reason (missing,
+// a directory, no permission, read error).
+std::string read_text_file(const std::string& path);
+
 // Throws ObjError; ObjProblem::Unreadable when the file cannot be opened or read.
 LoadedMesh read_obj_file(const std::string& path);
 

@@ -1,0 +1,93 @@
+// The info/refine/apply subcommands through the dispatcher: exit codes 0/1/2/3, and refine then
+// `--level 0` gives back the input mesh exactly.
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <set>
+
+#include <gtest/gtest.h>
+
+#include "cli/dispatch.h"
+#include "io/obj_reader.h"
+#include "obj_test_support.h"
+
+namespace rgbio {
+namespace {
+
+namespace fs = std::filesystem;
+
+class CliCommands : public ::testing::Test {
+protected:
+    void SetUp() override {
+        folder_ = fs::temp_directory_path() / ("rgbsub_cli_" + std::to_string(::getpid()) + "_" +
+                                               ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(folder_);
+        fs::create_directories(folder_);
+        write("octahedron.obj", test::kOctahedron);
+    }
+    void TearDown() override { fs::remove_all(folder_); }
+    std::string path(const std::string& name) const { return (folder_ / name).string(); }
+    void write(const std::string& name, const std::string& text) const { std::ofstream(folder_ / name, std::ios::binary) << text; }
+    static int run(std::vector<std::string> args) { return cli::dispatch(args); }
+    fs::path folder_;
+};
+
+// Triangles as triples of positions, rotated to start at the smallest, so that meshes can be
+// compared regardless of vertex and face numbering.
+using PositionTriangle = std::array<std::array<double, 3>, 3>;
+std::multiset<PositionTriangle> triangles_by_position(const LoadedMesh& mesh) {
+    std::multiset<PositionTriangle> set;
+    for (const rgb::Triangle& t : mesh.triangles) {
+        PositionTriangle p;
+        for (int i = 0; i < 3; ++i) p[i] = {mesh.positions[t[i]].x, mesh.positions[t[i]].y, mesh.positions[t[i]].z};
+        std::rotate(p.begin(), std::min_element(p.begin(), p.end()), p.end());
+        set.insert(p);
+    }
+    return set;
+}
+
+TEST_F(CliCommands, ExitCodes) {
+    EXPECT_EQ(run({"info", path("octahedron.obj")}), 0);
+    EXPECT_EQ(run({"info", "--help"}), 0);
+    EXPECT_EQ(run({"refine", "--help"}), 0);
+    EXPECT_EQ(run({"apply", "--help"}), 0);
+    EXPECT_EQ(run({"info"}), 1);
+    EXPECT_EQ(run({"refine", path("octahedron.obj"), "--level", "2"}), 1);                           // no -o
+    EXPECT_EQ(run({"refine", path("octahedron.obj"), "-o", path("o.obj"), "--level", "x"}), 1);
+    EXPECT_EQ(run({"refine", path("octahedron.obj"), "-o", path("o.obj"), "--level", "1", "--sphere", "1,2"}), 1);
+    EXPECT_EQ(run({"refine", path("octahedron.obj"), "-o", path("o.obj"), "--level", "1", "--positions", "x"}), 1);
+    write("bowtie.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv -1 0 0\nv -1 -1 0\nf 1 2 3\nf 1 4 5\n");
+    EXPECT_EQ(run({"info", path("bowtie.obj")}), 2);
+    EXPECT_EQ(run({"info", path("missing.obj")}), 3);
+    EXPECT_EQ(run({"refine", path("octahedron.obj"), "-o", path("octahedron.obj/x.obj"), "--level", "1"}), 3);
+    write("script.txt", "level 2\nlevel 3 sphere 1 0 0 0.5\nbogus\n");
+    EXPECT_EQ(run({"apply", path("octahedron.obj"), path("script.txt"), "-o", path("o.obj")}), 2);
+    EXPECT_FALSE(fs::exists(path("o.obj")));
+    EXPECT_EQ(run({"apply", path("octahedron.obj"), path("missing.txt"), "-o", path("o.obj")}), 3);
+}
+
+TEST_F(CliCommands, RefineThenLevelZeroGivesBackTheInput) {
+    ASSERT_EQ(run({"refine", path("octahedron.obj"), "-o", path("fine.obj"), "--level", "3", "--sphere", "1,0,0,0.8"}), 0);
+    const LoadedMesh fine = read_obj_file(path("fine.obj"));
+    ASSERT_TRUE(fine.state);
+    EXPECT_GT(fine.triangles.size(), 8u);
+    ASSERT_EQ(run({"refine", path("fine.obj"), "-o", path("base.obj"), "--level", "0"}), 0);
+    const LoadedMesh input = read_obj_file(path("octahedron.obj"));
+    const LoadedMesh base = read_obj_file(path("base.obj"));
+    EXPECT_EQ(base.positions, input.positions);
+    EXPECT_EQ(triangles_by_position(base), triangles_by_position(input));
+}
+
+TEST_F(CliCommands, ApplyRunsTheScriptLikeRefine) {
+    write("script.txt", "# comment\nlevel 2\n\nlevel 4 sphere 1 0 0 0.5\n");
+    ASSERT_EQ(run({"apply", path("octahedron.obj"), path("script.txt"), "-o", path("applied.obj")}), 0);
+    ASSERT_EQ(run({"refine", path("octahedron.obj"), "-o", path("step.obj"), "--level", "2"}), 0);
+    ASSERT_EQ(run({"refine", path("step.obj"), "-o", path("refined.obj"), "--level", "4", "--sphere", "1,0,0,0.5"}), 0);
+    const LoadedMesh applied = read_obj_file(path("applied.obj"));
+    const LoadedMesh refined = read_obj_file(path("refined.obj"));
+    EXPECT_EQ(applied.positions, refined.positions);
+    EXPECT_EQ(applied.triangles, refined.triangles);
+}
+
+}  // namespace
+}  // namespace rgbio
