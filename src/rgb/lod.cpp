@@ -123,10 +123,28 @@ SetLevelStats set_level(Mesh& mesh, const Region& region, int target, LodDirecti
 }
 
 void refine_uniform(Mesh& mesh, int level) {
-    std::vector<FaceId> all;
-    for (FaceId f : mesh.faces()) all.push_back(f);
-    set_level_faces(
-        mesh, all, [level](const glm::dvec3&) { return level; }, LodDirection::Refine);
+    // One level at a time: while going from level l to l+1 no triangle is coarser than l, so every
+    // green edge of level l can be split at once, with no recursion and no extra refinement (the
+    // rings of all coarser vertices exist). Splits reuse freed slots, so sweep until a pass is idle.
+    for (int l = 0; l < level; ++l) {
+        // Each pass quadruples the faces and adds one vertex per edge (about 1.5 per face).
+        mesh.reserve(4 * mesh.face_capacity(), mesh.vertex_capacity() + 2 * mesh.face_capacity());
+        bool split_any = true;
+        while (split_any) {
+            split_any = false;
+            for (std::uint32_t i = 0; i < mesh.face_capacity(); ++i) {
+                const FaceId f(i);
+                for (int c = 0; c < 3 && mesh.is_live(f); ++c) {
+                    const HalfedgeId h = Mesh::halfedge(f, c);
+                    const EdgeType e = mesh.edge_type(h);
+                    if (e.colour != Colour::Green || e.level != l) continue;
+                    split_edge(mesh, h);
+                    split_any = true;
+                    c = -1;  // the slot now holds a new face: look at it afresh
+                }
+            }
+        }
+    }
 }
 
 }  // namespace rgb

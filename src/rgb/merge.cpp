@@ -153,8 +153,8 @@ void merge_vertex(Mesh& mesh, VertexId v) {
     const auto star = analyse(mesh, v);
     if (!star || !mergeable(*star)) throw std::logic_error("merge_vertex: the star of the vertex is not mergeable");
     const int L = mesh.level(v);
-    std::vector<FaceId> old_faces;
-    std::vector<NewFace> new_faces;
+    FaceList old_faces;
+    InlineVector<NewFace, 2> new_faces;
     for (const Half& half : star->halves) {
         // The half is (v,p,x), (v,x,other); it becomes (p,x,other) one level coarser.
         const VertexId p = mesh.to_vertex(half.out[0]);

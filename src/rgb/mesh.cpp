@@ -143,6 +143,19 @@ int Mesh::valence(VertexId v) const {
     return is_boundary(v) ? n + 1 : n;
 }
 
+void Mesh::reserve(std::size_t faces, std::size_t vertices) {
+    face_vertices_.reserve(faces);
+    face_type_.reserve(faces);
+    opposite_.reserve(3 * faces);
+    face_alive_.reserve(faces);
+    insertion_position_.reserve(vertices);
+    vertex_halfedge_.reserve(vertices);
+    vertex_level_.reserve(vertices);
+    vertex_boundary_.reserve(vertices);
+    vertex_alive_.reserve(vertices);
+    limit_slot_.reserve(vertices);
+}
+
 void Mesh::add_observer(MeshObserver* o) { observers_.push_back(o); }
 
 void Mesh::remove_observer(MeshObserver* o) { std::erase(observers_, o); }
@@ -226,15 +239,22 @@ void Mesh::update_vertex_halfedge(VertexId v, HalfedgeId h) {
     vertex_halfedge_[v.idx] = h;
 }
 
-std::vector<FaceId> Mesh::replace_faces(std::span<const FaceId> old_faces, std::span<const NewFace> new_faces,
-                                        std::span<const VertexId> removed_vertices) {
+void Mesh::refresh_vertex_halfedge(VertexId v, HalfedgeId outgoing) {
+    const HalfedgeId cur = vertex_halfedge_[v.idx];
+    const bool still_valid = cur.valid() && face_alive_[cur.idx / 3] && from_vertex(cur) == v;
+    if (still_valid && (!vertex_boundary_[v.idx] || is_boundary(cur))) return;
+    if (vertex_boundary_[v.idx]) update_vertex_halfedge(v, outgoing);
+    else vertex_halfedge_[v.idx] = outgoing;
+}
+
+FaceList Mesh::replace_faces(std::span<const FaceId> old_faces, std::span<const NewFace> new_faces,
+                             std::span<const VertexId> removed_vertices) {
     // Outside halfedges that face the region, keyed by the directed edge as seen from inside.
     struct Border {
         VertexId from, to;
         HalfedgeId outside;
     };
-    std::vector<Border> border;
-    border.reserve(3 * old_faces.size());
+    InlineVector<Border, 18> border;
     auto in_old = [&](FaceId f) { return std::find(old_faces.begin(), old_faces.end(), f) != old_faces.end(); };
     for (FaceId f : old_faces) {
         for (int i = 0; i < 3; ++i) {
@@ -252,40 +272,40 @@ std::vector<FaceId> Mesh::replace_faces(std::span<const FaceId> old_faces, std::
         release_vertex(v);
     }
 
-    std::vector<FaceId> created;
-    created.reserve(new_faces.size());
+    FaceList created;
     for (const NewFace& nf : new_faces) {
         const FaceId f = allocate_face();
         face_vertices_[f.idx] = nf.v;
         face_type_[f.idx] = nf.type;
         created.push_back(f);
     }
-    for (std::size_t k = 0; k < created.size(); ++k) {
-        for (int i = 0; i < 3; ++i) {
-            const HalfedgeId h = halfedge(created[k], i);
-            if (opposite_[h.idx].valid()) continue;
-            const VertexId a = from_vertex(h), b = to_vertex(h);
-            HalfedgeId match;
-            for (std::size_t j = 0; j < created.size() && !match.valid(); ++j)
-                for (int c = 0; c < 3; ++c) {
-                    const HalfedgeId g = halfedge(created[j], c);
-                    if (from_vertex(g) == b && to_vertex(g) == a) {
-                        match = g;
-                        break;
-                    }
+    // Pair the new halfedges with each other, then with the border, by their directed vertex pairs.
+    auto key = [](VertexId a, VertexId b) { return (std::uint64_t(a.idx) << 32) | b.idx; };
+    InlineVector<std::uint64_t, 18> new_keys;
+    for (FaceId f : created)
+        for (int i = 0; i < 3; ++i) new_keys.push_back(key(face_vertices_[f.idx][i], face_vertices_[f.idx][(i + 1) % 3]));
+    for (std::size_t k = 0; k < new_keys.size(); ++k) {
+        const HalfedgeId h = halfedge(created[k / 3], static_cast<int>(k % 3));
+        if (opposite_[h.idx].valid()) continue;
+        const std::uint64_t reverse = (new_keys[k] << 32) | (new_keys[k] >> 32);
+        HalfedgeId match;
+        // Pairs are linked from their first member, so the partner can only come later.
+        for (std::size_t j = k + 1; j < new_keys.size(); ++j)
+            if (new_keys[j] == reverse) {
+                match = halfedge(created[j / 3], static_cast<int>(j % 3));
+                break;
+            }
+        if (!match.valid())
+            for (const Border& e : border)
+                if (key(e.from, e.to) == new_keys[k]) {
+                    match = e.outside;
+                    break;
                 }
-            if (!match.valid())
-                for (const Border& e : border)
-                    if (e.from == a && e.to == b) {
-                        match = e.outside;
-                        break;
-                    }
-            opposite_[h.idx] = match;
-            if (match.valid()) opposite_[match.idx] = h;
-        }
+        opposite_[h.idx] = match;
+        if (match.valid()) opposite_[match.idx] = h;
     }
     for (FaceId f : created)
-        for (int i = 0; i < 3; ++i) update_vertex_halfedge(face_vertices_[f.idx][i], halfedge(f, i));
+        for (int i = 0; i < 3; ++i) refresh_vertex_halfedge(face_vertices_[f.idx][i], halfedge(f, i));
     for (FaceId f : created)
         for (MeshObserver* o : observers_) o->face_added(*this, f);
     return created;

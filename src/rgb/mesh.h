@@ -19,6 +19,7 @@
 
 #include "rgb/face_type.h"
 #include "rgb/handles.h"
+#include "rgb/inline_vector.h"
 #include "rgb/observer.h"
 
 namespace rgb {
@@ -47,6 +48,9 @@ public:
 private:
     const std::vector<std::uint8_t>* alive_;
 };
+
+// The faces one operator deletes or creates: at most six (a split that completes two parents).
+using FaceList = InlineVector<FaceId, 6>;
 
 // A triangle to be created by replace_faces.
 struct NewFace {
@@ -121,6 +125,9 @@ public:
     int uniform_valence(VertexId v) const;
     int valence(VertexId v) const;  // in the current mesh
 
+    // Room for this many face and vertex slots, so that a large refinement does not regrow the arrays.
+    void reserve(std::size_t faces, std::size_t vertices);
+
     // ---- observers ----
     void add_observer(MeshObserver* o);
     void remove_observer(MeshObserver* o);
@@ -132,8 +139,8 @@ public:
     void set_limit_position(VertexId v, const glm::dvec3& p) const;
     // Delete `old_faces` (and the listed vertices, which must be used by no new face) and create
     // `new_faces` over the same region. Adjacency with the outside is rebuilt by matching edges.
-    // Returns the new face ids in the order given.
-    std::vector<FaceId> replace_faces(std::span<const FaceId> old_faces, std::span<const NewFace> new_faces,
+    // Returns the new face ids in the order given. At most six faces each way.
+    FaceList replace_faces(std::span<const FaceId> old_faces, std::span<const NewFace> new_faces,
                                       std::span<const VertexId> removed_vertices = {});
 
     // Bytes held by the core arrays (capacity, not just size), for the memory benchmark.
@@ -148,6 +155,9 @@ private:
     void release_face(FaceId f);
     void release_vertex(VertexId v);
     void update_vertex_halfedge(VertexId v, HalfedgeId any_outgoing);
+    // After a replace: keep v's outgoing halfedge if it is still one (and still on the boundary for a
+    // boundary vertex), otherwise derive it from `outgoing`, a halfedge of v in a new face.
+    void refresh_vertex_halfedge(VertexId v, HalfedgeId outgoing);
 
     // faces
     std::vector<std::array<VertexId, 3>> face_vertices_;

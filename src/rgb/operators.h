@@ -2,9 +2,9 @@
 // The atomic operators of RGB subdivision (spec §2), each with its predicate. They keep the mesh a
 // valid RGB triangulation and report every change through the mesh observers.
 #include <optional>
-#include <vector>
 
 #include "rgb/handles.h"
+#include "rgb/inline_vector.h"
 
 namespace rgb {
 
@@ -23,7 +23,7 @@ std::optional<SplitKind> split_kind(const Mesh& mesh, HalfedgeId h);
 bool can_split_edge(const Mesh& mesh, HalfedgeId h);
 // The vertices whose control points at the edge's level give the new vertex's position: the two
 // endpoints, then (interior edges) the two opposite vertices of the uniform mesh of that level.
-std::vector<VertexId> split_stencil(const Mesh& mesh, HalfedgeId h);
+InlineVector<VertexId, 4> split_stencil(const Mesh& mesh, HalfedgeId h);
 // True when the Loop stencil of the edge has every control point it needs (§4.4).
 bool has_split_stencil(const Mesh& mesh, HalfedgeId h);
 // Splits the edge of h (requires can_split_edge and has_split_stencil) and applies the automatic

@@ -1,7 +1,6 @@
 // Edge splits (spec §2.1, §2.2) and the Loop position of the inserted vertex (§4.4).
 #include <array>
 #include <stdexcept>
-#include <vector>
 
 #include "rgb/loop_geometry.h"
 #include "rgb/mesh.h"
@@ -12,8 +11,8 @@ namespace rgb {
 namespace {
 
 // The halfedges of the edge of h, one per incident face (one on the boundary).
-std::vector<HalfedgeId> edge_sides(const Mesh& mesh, HalfedgeId h) {
-    std::vector<HalfedgeId> sides{h};
+InlineVector<HalfedgeId, 2> edge_sides(const Mesh& mesh, HalfedgeId h) {
+    InlineVector<HalfedgeId, 2> sides{h};
     if (!mesh.is_boundary(h)) sides.push_back(mesh.opposite(h));
     return sides;
 }
@@ -44,10 +43,16 @@ VertexId stencil_opposite(const Mesh& mesh, HalfedgeId h) {
     }
 }
 
+bool stencil_ready(const Mesh& mesh, std::span<const VertexId> stencil, int level) {
+    for (VertexId w : stencil)
+        if (mesh.level(w) < level && !mesh.has_limit(w) && !try_limit_position(mesh, w)) return false;
+    return true;
+}
+
 }  // namespace
 
-std::vector<VertexId> split_stencil(const Mesh& mesh, HalfedgeId h) {
-    std::vector<VertexId> s{mesh.from_vertex(h), mesh.to_vertex(h)};
+InlineVector<VertexId, 4> split_stencil(const Mesh& mesh, HalfedgeId h) {
+    InlineVector<VertexId, 4> s{mesh.from_vertex(h), mesh.to_vertex(h)};
     if (!mesh.is_boundary(h)) {
         s.push_back(stencil_opposite(mesh, h));
         s.push_back(stencil_opposite(mesh, mesh.opposite(h)));
@@ -70,7 +75,7 @@ const char* split_kind_name(SplitKind k) {
 std::optional<SplitKind> split_kind(const Mesh& mesh, HalfedgeId h) {
     const EdgeType e = mesh.edge_type(h);
     if (e.colour != Colour::Green) return std::nullopt;
-    const std::vector<HalfedgeId> sides = edge_sides(mesh, h);
+    const auto sides = edge_sides(mesh, h);
     int reds = 0;
     for (HalfedgeId s : sides) {
         const FaceId f = Mesh::face(s);
@@ -87,17 +92,14 @@ std::optional<SplitKind> split_kind(const Mesh& mesh, HalfedgeId h) {
 bool can_split_edge(const Mesh& mesh, HalfedgeId h) { return split_kind(mesh, h).has_value(); }
 
 bool has_split_stencil(const Mesh& mesh, HalfedgeId h) {
-    const int l = mesh.edge_type(h).level;
-    for (VertexId w : split_stencil(mesh, h))
-        if (mesh.level(w) < l && !try_limit_position(mesh, w)) return false;
-    return true;
+    return stencil_ready(mesh, split_stencil(mesh, h), mesh.edge_type(h).level);
 }
 
 VertexId split_edge(Mesh& mesh, HalfedgeId h) {
     if (!can_split_edge(mesh, h)) throw std::logic_error("split_edge: the edge is not splittable");
-    if (!has_split_stencil(mesh, h)) throw std::logic_error("split_edge: the Loop stencil is incomplete");
     const int l = mesh.edge_type(h).level;
-    const std::vector<VertexId> s = split_stencil(mesh, h);
+    const auto s = split_stencil(mesh, h);
+    if (!stencil_ready(mesh, s, l)) throw std::logic_error("split_edge: the Loop stencil is incomplete");
     const VertexId a = s[0], b = s[1];
     const bool boundary = s.size() == 2;
     const glm::dvec3 pa = control_point(mesh, a, l), pb = control_point(mesh, b, l);
@@ -105,43 +107,45 @@ VertexId split_edge(Mesh& mesh, HalfedgeId h) {
                                          : 0.375 * (pa + pb) + 0.125 * (control_point(mesh, s[2], l) +
                                                                         control_point(mesh, s[3], l));
 
-    const std::vector<HalfedgeId> sides = edge_sides(mesh, h);
-    std::vector<FaceId> old_faces;
-    std::vector<std::array<VertexId, 3>> corners;  // (x0, x1, x) with the split edge x0->x1
-    std::vector<FaceType> old_types;
-    std::vector<int> red_at;  // 0: green, 1: red edge reaches x1, 2: red edge reaches x0
-    for (HalfedgeId side : sides) {
-        const FaceId f = Mesh::face(side);
-        old_faces.push_back(f);
-        corners.push_back({mesh.from_vertex(side), mesh.to_vertex(side), mesh.opposite_vertex(side)});
-        old_types.push_back(mesh.type(f));
-        const int i = Mesh::corner(side);
-        red_at.push_back(mesh.colour(f) == Colour::Green ? 0 : (old_types.back().red_edge == (i + 1) % 3 ? 1 : 2));
-    }
-
+    const auto sides = edge_sides(mesh, h);
+    FaceList old_faces;
+    for (HalfedgeId side : sides) old_faces.push_back(Mesh::face(side));
     const VertexId v = mesh.add_vertex(l + 1, position, boundary, a, b);
     const auto lvl = static_cast<std::uint8_t>(l);
     const FaceType red_first{Colour::Red, lvl, 1}, red_second{Colour::Red, lvl, 2};
     const FaceType green_fine{Colour::Green, static_cast<std::uint8_t>(l + 1), 0};
-    const FaceType blue_first{Colour::Blue, lvl, 2}, blue_second{Colour::Blue, lvl, 1};
-    std::vector<NewFace> new_faces;
-    for (std::size_t k = 0; k < sides.size(); ++k) {
-        const auto [x0, x1, x] = corners[k];
-        const std::array<VertexId, 3> t1{x0, v, x}, t2{v, x1, x};
-        switch (red_at[k]) {
-            case 0: new_faces.push_back({t1, red_first}); new_faces.push_back({t2, red_second}); break;
-            case 1: new_faces.push_back({t1, green_fine}); new_faces.push_back({t2, blue_second}); break;
-            default: new_faces.push_back({t1, blue_first}); new_faces.push_back({t2, green_fine}); break;
+    InlineVector<NewFace, 6> new_faces;
+    // A red side becomes a corner G_{l+1} and a blue that keeps the red edge. If the triangle across
+    // that red edge is a blue of the same level, this split completes the parent and the two blues
+    // are BB-swapped into two G_{l+1} (§2.1); that swap is folded into this one replacement.
+    auto add_blue = [&](std::array<VertexId, 3> blue, int red, HalfedgeId outside) {
+        const FaceId across = Mesh::face(outside);
+        if (mesh.colour(across) == Colour::Blue && mesh.level(across) == l) {
+            const VertexId p = blue[red], q = blue[(red + 1) % 3], r = blue[(red + 2) % 3];
+            const VertexId t = mesh.opposite_vertex(outside);
+            old_faces.push_back(across);
+            new_faces.push_back({{p, t, r}, green_fine});
+            new_faces.push_back({{t, q, r}, green_fine});
+        } else {
+            new_faces.push_back({blue, FaceType{Colour::Blue, lvl, static_cast<std::uint8_t>(red)}});
+        }
+    };
+    for (HalfedgeId side : sides) {
+        const FaceId f = Mesh::face(side);
+        const int i = Mesh::corner(side);
+        const VertexId x0 = mesh.from_vertex(side), x1 = mesh.to_vertex(side), x = mesh.opposite_vertex(side);
+        if (mesh.colour(f) == Colour::Green) {
+            new_faces.push_back({{x0, v, x}, red_first});
+            new_faces.push_back({{v, x1, x}, red_second});
+        } else if (mesh.type(f).red_edge == (i + 1) % 3) {  // red edge x1-x
+            new_faces.push_back({{x0, v, x}, green_fine});
+            add_blue({v, x1, x}, 1, mesh.opposite(Mesh::halfedge(f, (i + 1) % 3)));
+        } else {  // red edge x-x0
+            add_blue({x0, v, x}, 2, mesh.opposite(Mesh::halfedge(f, (i + 2) % 3)));
+            new_faces.push_back({{v, x1, x}, green_fine});
         }
     }
-    const std::vector<FaceId> created = mesh.replace_faces(old_faces, new_faces);
-
-    // Completing the third edge of a parent leaves two blues on one red edge: swap them (§2.1).
-    for (FaceId f : created) {
-        if (!mesh.is_live(f) || mesh.colour(f) != Colour::Blue) continue;
-        const HalfedgeId red = Mesh::halfedge(f, mesh.type(f).red_edge);
-        if (can_bb_swap(mesh, red)) bb_swap(mesh, red);
-    }
+    mesh.replace_faces(old_faces, new_faces);
     return v;
 }
 
