@@ -71,6 +71,7 @@ void Editor::key_pressed(Key key, Modifiers mods) {
     switch (key) {
         case Key::F: frame_mesh(); break;
         case Key::R: reset_view(); break;
+        case Key::S: sample_level_under_cursor(); break;
         case Key::LeftBracket: grow_radius(brush_, -1); break;
         case Key::RightBracket: grow_radius(brush_, 1); break;
         case Key::Digit1: brush_.mode = BrushMode::Refine; break;
@@ -95,18 +96,19 @@ double Editor::brush_world_radius(const glm::dvec3& at) const {
     return brush_.radius_px * camera_.world_per_pixel(camera_.depth_of(at), viewport_);
 }
 
-std::optional<SurfaceHit> Editor::cursor_hit() { return pick(mouse_, false); }
+std::optional<SurfaceHit> Editor::cursor_hit() {
+    const double reach = cursor_hit_ ? 2.0 * brush_world_radius(cursor_hit_->point) : 0.0;
+    cursor_hit_ = pick(mouse_, cursor_hit_, reach);
+    return cursor_hit_;
+}
 
-std::optional<SurfaceHit> Editor::pick(glm::vec2 px, bool near_previous) {
+std::optional<SurfaceHit> Editor::pick(glm::vec2 px, const std::optional<SurfaceHit>& previous, double reach) {
     const Ray ray = camera_.ray_through(px, viewport_);
     const render::SurfaceGeometry& geometry = document_.geometry();
-    if (near_previous && last_hit_) {
-        // spec §3.4: grow from the faces hit before; the whole surface only if the stroke left them.
-        const double reach = 2.0 * last_radius_ + camera_.world_per_pixel(camera_.depth_of(last_hit_->point), viewport_) *
-                                                      kDabSpacing * brush_.radius_px;
-        if (auto hit = pick_surface_near(document_.mesh(), geometry, ray, last_hit_->face, last_hit_->point, reach))
+    // The whole surface only when the cursor left the neighbourhood of the previous hit.
+    if (previous && document_.mesh().is_live(previous->face))
+        if (auto hit = pick_surface_near(document_.mesh(), geometry, ray, previous->face, previous->point, reach))
             return hit;
-    }
     return pick_surface(geometry, ray);
 }
 
@@ -134,7 +136,11 @@ void Editor::end_stroke() {
 
 void Editor::dab(glm::vec2 px) {
     const auto pick_start = std::chrono::steady_clock::now();
-    const std::optional<SurfaceHit> hit = pick(px, true);
+    const double reach =
+        last_hit_ ? 2.0 * last_radius_ + kDabSpacing * brush_.radius_px *
+                                             camera_.world_per_pixel(camera_.depth_of(last_hit_->point), viewport_)
+                  : 0.0;
+    const std::optional<SurfaceHit> hit = pick(px, last_hit_, reach);
     if (!hit) {
         last_hit_.reset();
         return;

@@ -107,7 +107,8 @@ private:
     void continue_stroke(glm::vec2 px);
     void end_stroke();
     void dab(glm::vec2 px);
-    std::optional<SurfaceHit> pick(glm::vec2 px, bool near_previous);
+    // The surface under px, searched near `previous` first when given (spec §3.4).
+    std::optional<SurfaceHit> pick(glm::vec2 px, const std::optional<SurfaceHit>& previous, double reach);
     void reseed_after_dab(const std::array<rgb::VertexId, 3>& corners);
     void finish_job();
     void remember_recent(const std::string& path);
@@ -129,6 +130,7 @@ private:
     bool stroke_changed_ = false;
     StrokeSampler sampler_;
     std::optional<SurfaceHit> last_hit_;
+    std::optional<SurfaceHit> cursor_hit_;
     double last_radius_ = 0.0;
     DabTiming timing_;
 

@@ -33,31 +33,22 @@ void UndoHistory::end_edit(const rgb::Mesh& /*mesh*/, bool changed) {
     pending_.reset();
 }
 
-std::optional<rgb::Mesh> UndoHistory::undo(const rgb::Mesh& current) {
-    if (undo_.empty()) return std::nullopt;
-    Step step = std::move(undo_.back());
-    undo_.pop_back();
-    rgb::Mesh before = rgb::restore_state(step.other);
+std::optional<rgb::Mesh> UndoHistory::cross(std::deque<Step>& from, std::deque<Step>& to, const rgb::Mesh& current) {
+    if (from.empty()) return std::nullopt;
+    Step step = std::move(from.back());
+    from.pop_back();
+    rgb::Mesh restored = rgb::restore_state(step.other);
     bytes_ -= step.bytes;
-    Step forward = make_step(std::move(step.label), rgb::capture_state(current));
-    bytes_ += forward.bytes;
-    redo_.push_back(std::move(forward));
+    Step opposite = make_step(std::move(step.label), rgb::capture_state(current));
+    bytes_ += opposite.bytes;
+    to.push_back(std::move(opposite));
     enforce_bound();
-    return before;
+    return restored;
 }
 
-std::optional<rgb::Mesh> UndoHistory::redo(const rgb::Mesh& current) {
-    if (redo_.empty()) return std::nullopt;
-    Step step = std::move(redo_.back());
-    redo_.pop_back();
-    rgb::Mesh after = rgb::restore_state(step.other);
-    bytes_ -= step.bytes;
-    Step back = make_step(std::move(step.label), rgb::capture_state(current));
-    bytes_ += back.bytes;
-    undo_.push_back(std::move(back));
-    enforce_bound();
-    return after;
-}
+std::optional<rgb::Mesh> UndoHistory::undo(const rgb::Mesh& current) { return cross(undo_, redo_, current); }
+
+std::optional<rgb::Mesh> UndoHistory::redo(const rgb::Mesh& current) { return cross(redo_, undo_, current); }
 
 void UndoHistory::clear() {
     undo_.clear();

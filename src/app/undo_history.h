@@ -49,6 +49,8 @@ private:
         std::size_t bytes = 0;
     };
     static Step make_step(std::string label, rgb::MeshState state);
+    // Pops the newest step of `from`, pushes its opposite onto `to` and returns the mesh it restores.
+    std::optional<rgb::Mesh> cross(std::deque<Step>& from, std::deque<Step>& to, const rgb::Mesh& current);
     void enforce_bound();
 
     std::size_t byte_bound_;

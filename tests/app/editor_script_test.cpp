@@ -18,10 +18,12 @@ namespace {
 
 constexpr glm::ivec2 kViewport{800, 600};
 
+std::string bunny_path() { return std::string(RGBSUB_SOURCE_DIR) + "/assets/bunny.obj"; }
+
 class EditorScript : public ::testing::Test {
 protected:
     void SetUp() override {
-        ASSERT_TRUE(editor.open(test::bunny_path())) << editor.message();
+        ASSERT_TRUE(editor.open(bunny_path())) << editor.message();
         editor.brush().mode = BrushMode::Refine;
         editor.brush().target_level = 3;
         editor.brush().radius_px = 30.0f;
@@ -158,7 +160,7 @@ TEST_F(EditorScript, UnsavedChangesAskBeforeQuitOrOpen) {
     editor.answer_pending(false);
     EXPECT_FALSE(editor.should_quit());
     const std::size_t painted = editor.document().mesh().num_faces();
-    editor.request_open(test::bunny_path());
+    editor.request_open(bunny_path());
     EXPECT_EQ(editor.pending(), Pending::DiscardForOpen);
     EXPECT_EQ(editor.document().mesh().num_faces(), painted);
     editor.answer_pending(true);

@@ -1,16 +1,13 @@
 #pragma once
-// What the editor's end-to-end tests share: the bunny, and counting faces near a stroke.
+// What the editor's end-to-end tests share: counting faces near a stroke.
 #include <cstddef>
 #include <span>
-#include <string>
 
 #include <glm/vec3.hpp>
 
 #include "rgb/mesh.h"
 
 namespace app::test {
-
-inline std::string bunny_path() { return std::string(RGBSUB_SOURCE_DIR) + "/assets/bunny.obj"; }
 
 // Faces with a corner within `radius` of one of `points` (displayed positions).
 std::size_t faces_near(const rgb::Mesh& mesh, std::span<const glm::dvec3> points, double radius);

@@ -1,0 +1,33 @@
+#pragma once
+// One editor frame on the current GL context: the mesh through render::Renderer with the brush
+// cursor, then the ImGui panels. Shared by the window and the headless `--ui` screenshot, so both
+// show the same thing. The caller owns the ImGui context and its platform/renderer backends.
+#include <cstdint>
+
+#include <glm/vec2.hpp>
+
+#include "app/editor_panels.h"
+#include "render/renderer.h"
+
+namespace app {
+
+class Editor;
+
+class EditorView {
+public:
+    EditorView() = default;
+
+    // Builds the ImGui frame (between ImGui::NewFrame and ImGui::Render) and draws the mesh.
+    // Call ImGui_ImplOpenGL3_RenderDrawData afterwards.
+    void draw(Editor& editor, glm::ivec2 framebuffer, double dt_s, bool show_cursor);
+
+    render::RenderOptions& options() { return options_; }
+
+private:
+    render::Renderer renderer_;
+    render::RenderOptions options_;
+    PanelState panels_;
+    std::uint64_t attached_generation_ = ~std::uint64_t{0};
+};
+
+}  // namespace app
