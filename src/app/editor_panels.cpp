@@ -113,16 +113,18 @@ void files_panel(Editor& editor, PanelState& state) {
     }
 }
 
-void display_panel(PanelState& state, render::RenderOptions& options) {
+void display_panel(render::RenderOptions& options) {
     ImGui::TextUnformatted("Display");
-    const char* current = kDisplayModes[state.display_mode].name;
-    if (ImGui::BeginCombo("mode", current)) {
-        for (int i = 0; i < static_cast<int>(std::size(kDisplayModes)); ++i)
-            if (ImGui::Selectable(kDisplayModes[i].name, i == state.display_mode)) state.display_mode = i;
+    const DisplayMode* current = &kDisplayModes[0];
+    for (const DisplayMode& mode : kDisplayModes)
+        if (mode.shading == options.shading && mode.colouring == options.colouring) current = &mode;
+    if (ImGui::BeginCombo("mode", current->name)) {
+        for (const DisplayMode& mode : kDisplayModes)
+            if (ImGui::Selectable(mode.name, &mode == current)) current = &mode;
         ImGui::EndCombo();
     }
-    options.shading = kDisplayModes[state.display_mode].shading;
-    options.colouring = kDisplayModes[state.display_mode].colouring;
+    options.shading = current->shading;
+    options.colouring = current->colouring;
     ImGui::Checkbox("wireframe", &options.wireframe);
     ImGui::SameLine();
     ImGui::Checkbox("base mesh", &options.base_mesh_overlay);
@@ -144,10 +146,10 @@ void statistics_panel(Editor& editor, PanelState& state, double dt_s) {
     ImGui::Text("V %zu   F %zu", mesh.num_vertices(), mesh.num_faces());
     ImGui::Text("green %zu  red %zu  blue %zu", geometry.triangles_of(rgb::Colour::Green),
                 geometry.triangles_of(rgb::Colour::Red), geometry.triangles_of(rgb::Colour::Blue));
-    std::vector<float> bars;
+    std::vector<float> bars(kMaxBrushLevel + 1, 0.0f);  // a fixed axis, levels 0..max
     std::string levels;
     for (const auto& [level, count] : state.faces_per_level) {
-        bars.resize(static_cast<std::size_t>(level) + 1, 0.0f);
+        bars.resize(std::max(bars.size(), static_cast<std::size_t>(level) + 1), 0.0f);
         bars[static_cast<std::size_t>(level)] = static_cast<float>(count);
         if (!levels.empty()) levels += ' ';
         levels += std::to_string(level);
@@ -220,7 +222,7 @@ void draw_panels(Editor& editor, PanelState& state, render::RenderOptions& optio
     ImGui::Separator();
     files_panel(editor, state);
     ImGui::Separator();
-    display_panel(state, options);
+    display_panel(options);
     ImGui::Separator();
     statistics_panel(editor, state, dt_s);
     ImGui::Separator();

@@ -16,7 +16,6 @@ class Editor;
 struct PanelState {
     std::array<char, 1024> path{};
     int flood_level = 2;
-    int display_mode = 0;  // index into the display-mode list
     double frame_ms = 0.0;
     // Level histogram, refreshed now and then (it costs a pass over the faces).
     std::map<int, std::size_t> faces_per_level;

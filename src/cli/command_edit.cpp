@@ -2,25 +2,59 @@
 // to the headless command instead of failing inside GLFW.
 #include <cstdlib>
 #include <iostream>
+#include <stdexcept>
 
 #include "app/editor_window.h"
+#include "app/headless_frame.h"
 #include "cli/arguments.h"
 #include "cli/commands.h"
 
 namespace cli {
+namespace {
+
+// `--screenshot OUT.png`: one editor frame through OSMesa, no display needed.
+int write_screenshot(const std::string& file, const std::string& output, const std::string& mode) {
+    app::HeadlessFrame frame;
+    if (mode == "rgb") {
+        frame.shading = render::Shading::Flat;
+        frame.colouring = render::Colouring::RgbType;
+    } else if (mode == "level") {
+        frame.colouring = render::Colouring::Level;
+    } else if (mode == "wire") {
+        frame.wireframe = true;
+    } else if (mode != "shaded") {
+        throw UsageError("--mode must be shaded, wire, rgb or level, got '" + mode + "'");
+    }
+    try {
+        render::write_png(app::render_editor_frame(file, frame), output);
+    } catch (const std::runtime_error& error) {
+        std::cerr << "rgbsub edit: " << error.what() << '\n';
+        return exit_bad_input;
+    }
+    return exit_ok;
+}
+
+}  // namespace
 
 int run_edit(std::span<const std::string> args) {
-    const Arguments arguments(args, {}, {"--frames"});
+    const Arguments arguments(args, {}, {"--frames", "--screenshot", "--mode"});
     if (arguments.has("--help")) {
-        std::cout << "usage: rgbsub edit [FILE.obj] [--frames N]\n"
+        std::cout << "usage: rgbsub edit [FILE.obj] [--frames N] [--screenshot OUT.png [--mode MODE]]\n"
                      "Opens the editor window (needs a display) on FILE.obj, or on the default mesh.\n"
-                     "  --frames N   quit after N frames and print the time to the first frame\n";
+                     "  --frames N          quit after N frames and print the time to the first frame\n"
+                     "  --screenshot PATH   write one editor frame, panels included, as a PNG and exit\n"
+                     "                      (headless through OSMesa: no display needed)\n"
+                     "  --mode MODE         for the screenshot: shaded, wire, rgb or level\n";
         return exit_ok;
     }
     if (arguments.positional().size() > 1) throw UsageError("expects at most one FILE.obj");
     app::WindowLaunch launch;
     launch.file = arguments.positional().empty() ? app::default_mesh_path() : arguments.positional().front();
     if (arguments.has("--frames")) launch.frames = static_cast<int>(arguments.integer("--frames", 1, 1, 1000000));
+    if (const auto output = arguments.value("--screenshot")) {
+        if (!launch.file) throw UsageError("--screenshot needs a FILE.obj");
+        return write_screenshot(*launch.file, *output, arguments.value("--mode").value_or("shaded"));
+    }
     if (std::getenv("DISPLAY") == nullptr) {
         std::cerr << "rgbsub edit: no display (DISPLAY is not set); headless alternative: rgbsub render\n";
         return exit_bad_input;

@@ -1,0 +1,26 @@
+#pragma once
+// A full editor frame, panels included, rendered headless through OSMesa: the README's screenshots
+// come from the program itself. Needs no display.
+#include <string>
+
+#include <glm/vec2.hpp>
+
+#include "render/image.h"
+#include "render/renderer.h"
+
+namespace app {
+
+struct HeadlessFrame {
+    glm::ivec2 size{1280, 800};
+    render::Shading shading = render::Shading::Smooth;
+    render::Colouring colouring = render::Colouring::Plain;
+    bool wireframe = false;
+    // Where the mouse rests, as a fraction of the size (the brush cursor shows there).
+    glm::vec2 cursor{0.5f, 0.5f};
+};
+
+// Opens `file` in an editor and renders one frame of it. Throws std::runtime_error with the load
+// error or when no OSMesa context can be made.
+render::Image render_editor_frame(const std::string& file, const HeadlessFrame& frame);
+
+}  // namespace app
