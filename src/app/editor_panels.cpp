@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -157,12 +158,13 @@ void statistics_panel(Editor& editor, PanelState& state, double dt_s) {
         levels += std::to_string(count);
     }
     ImGui::PlotHistogram("##levels", bars.data(), static_cast<int>(bars.size()), 0, "triangles per level", 0.0f,
-                         FLT_MAX, ImVec2(-1.0f, 50.0f));
+                         FLT_MAX, ImVec2(ImGui::GetContentRegionAvail().x, 50.0f));
     ImGui::PushTextWrapPos(0.0f);
     ImGui::TextUnformatted(levels.c_str());
     ImGui::PopTextWrapPos();
     const DabTiming& dab = editor.dab_timing();
-    ImGui::Text("last dab: engine %.2f ms, pick %.2f ms, %zu faces", dab.last_ms, dab.last_pick_ms, dab.last_footprint);
+    ImGui::Text("last dab: engine %.2f ms, pick %.2f ms", dab.last_ms, dab.last_pick_ms);
+    ImGui::Text("          %zu faces under the brush", dab.last_footprint);
     ImGui::Text("frame %.1f ms", state.frame_ms);
 }
 
@@ -212,7 +214,8 @@ void questions(Editor& editor) {
 void draw_panels(Editor& editor, PanelState& state, render::RenderOptions& options, double dt_s) {
     state.frame_ms = 0.9 * state.frame_ms + 0.1 * dt_s * 1000.0;
     if (state.path[0] == '\0' && !editor.document().path().empty()) copy_path(state, editor.document().path());
-    ImGui::SetNextWindowPos(ImVec2(8.0f, 8.0f), ImGuiCond_FirstUseEver);
+    // On the right: the renderer's level legend sits in the bottom-left corner.
+    ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - kPanelWidth - 8.0f, 8.0f), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(kPanelWidth, 0.0f), ImGuiCond_FirstUseEver);
     ImGui::Begin("rgbsub");
     ImGui::PushItemWidth(-110.0f);

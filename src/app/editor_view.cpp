@@ -21,7 +21,6 @@ void EditorView::draw(Editor& editor, glm::ivec2 framebuffer, double dt_s, bool 
     if (show_cursor && !ImGui::GetIO().WantCaptureMouse)
         if (const auto hit = editor.cursor_hit())
             options_.brush = render::BrushCursor{glm::vec3(hit->point), static_cast<float>(editor.brush_world_radius(hit->point))};
-    options_.background = glm::vec3(0.16f, 0.17f, 0.19f);
     renderer_.draw(editor.camera().camera(), options_, framebuffer);
 }
 
