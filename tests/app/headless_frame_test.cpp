@@ -1,0 +1,28 @@
+// rgbsub edit --screenshot: a full editor frame through OSMesa, panels included.
+#include <gtest/gtest.h>
+
+#include "app/headless_frame.h"
+
+namespace app {
+namespace {
+
+TEST(HeadlessFrame, DrawsTheMeshAndThePanel) {
+    HeadlessFrame frame;
+    frame.size = {800, 600};
+    const render::Image image = render_editor_frame(std::string(RGBSUB_SOURCE_DIR) + "/assets/default.obj", frame);
+    ASSERT_EQ(image.width, 800);
+    ASSERT_EQ(image.height, 600);
+    const glm::u8vec4 background = image.pixel(2, image.height / 2);
+    // The framed mesh covers the centre of the view, left of the panel.
+    EXPECT_NE(image.pixel(400, 320), background);
+    // The panel sits at the top right: its title bar is neither background nor mesh.
+    EXPECT_NE(image.pixel(image.width - 100, 16), background);
+    EXPECT_NE(image.pixel(image.width - 100, 16), image.pixel(400, 320));
+}
+
+TEST(HeadlessFrame, ALoadErrorIsReported) {
+    EXPECT_THROW(render_editor_frame("/nonexistent/mesh.obj", HeadlessFrame{}), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace app
