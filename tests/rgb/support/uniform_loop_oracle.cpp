@@ -5,6 +5,7 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "support/triangle_keys.h"
 
@@ -88,29 +89,31 @@ void UniformLoopOracle::subdivide_once() {
     const std::vector<Edge> edges = edges_of(coarse.faces);
 
     // Even vertices: interior rule over all neighbours, boundary rule over the boundary neighbours.
-    std::vector<glm::dvec3> ring_sum(p.size(), glm::dvec3(0.0)), boundary_sum(p.size(), glm::dvec3(0.0));
-    std::vector<int> valence(p.size(), 0), boundary_valence(p.size(), 0);
+    struct Neighbours {
+        glm::dvec3 sum{0.0}, boundary_sum{0.0};
+        int count = 0, boundary_count = 0;
+    };
+    std::vector<Neighbours> around(p.size());
     for (const Edge& e : edges) {
-        ring_sum[e.a] += p[e.b];
-        ring_sum[e.b] += p[e.a];
-        ++valence[e.a];
-        ++valence[e.b];
-        if (e.opposite.size() == 1) {
-            boundary_sum[e.a] += p[e.b];
-            boundary_sum[e.b] += p[e.a];
-            ++boundary_valence[e.a];
-            ++boundary_valence[e.b];
+        for (const auto& [centre, other] : {std::pair{e.a, e.b}, std::pair{e.b, e.a}}) {
+            around[centre].sum += p[other];
+            ++around[centre].count;
+            if (e.opposite.size() == 1) {
+                around[centre].boundary_sum += p[other];
+                ++around[centre].boundary_count;
+            }
         }
     }
     Level fine;
-    fine.positions.resize(p.size());
+    fine.positions.reserve(p.size() + edges.size());
     for (std::size_t v = 0; v < p.size(); ++v) {
-        if (boundary_valence[v] > 0) {
-            if (boundary_valence[v] != 2) throw std::invalid_argument("oracle: vertex on two boundary loops");
-            fine.positions[v] = 0.75 * p[v] + 0.125 * boundary_sum[v];
+        const Neighbours& n = around[v];
+        if (n.boundary_count > 0) {
+            if (n.boundary_count != 2) throw std::invalid_argument("oracle: vertex on two boundary loops");
+            fine.positions.push_back(0.75 * p[v] + 0.125 * n.boundary_sum);
         } else {
-            const double beta = loop_beta(valence[v]);
-            fine.positions[v] = (1.0 - valence[v] * beta) * p[v] + beta * ring_sum[v];
+            const double beta = loop_beta(n.count);
+            fine.positions.push_back((1.0 - n.count * beta) * p[v] + beta * n.sum);
         }
     }
     // Odd vertices, numbered in edge order.
