@@ -9,6 +9,7 @@
 
 #include "rgb/operators.h"
 #include "rgb/refine.h"
+#include "support/checked_operators.h"
 #include "support/face_expectations.h"
 #include "support/identity_tracker.h"
 #include "support/operator_printing.h"
@@ -17,26 +18,17 @@
 namespace rgbtest {
 namespace {
 
-// Splits {a, b} after checking which operator applies; returns the new vertex.
-rgb::VertexId split(rgb::Mesh& mesh, rgb::VertexId a, rgb::VertexId b, rgb::SplitKind expected) {
-    const rgb::HalfedgeId h = mesh.find_edge(a, b);
-    EXPECT_TRUE(h.valid()) << "no edge " << a.idx << "-" << b.idx;
-    EXPECT_EQ(rgb::split_kind(mesh, h), expected) << "edge " << a.idx << "-" << b.idx;
-    EXPECT_TRUE(rgb::has_split_stencil(mesh, h));
-    return rgb::split_edge(mesh, h);
-}
-
 TEST(WorkedExampleA, OneTriangleThreeBoundarySplitsAndBack) {
     rgb::Mesh mesh = make_rgb_mesh(single_triangle());
     const rgb::VertexId A(0), B(1), C(2);
 
-    const rgb::VertexId M = split(mesh, A, B, rgb::SplitKind::BoundaryG);
+    const rgb::VertexId M = split_checked(mesh, A, B, rgb::SplitKind::BoundaryG);
     const std::vector<ExpectedFace> step1{red(0, A, M, C, M, C), red(0, M, B, C, C, M)};
     ASSERT_TRUE(faces_are(mesh, step1));
 
-    const rgb::VertexId N = split(mesh, B, C, rgb::SplitKind::BoundaryR);
+    const rgb::VertexId N = split_checked(mesh, B, C, rgb::SplitKind::BoundaryR);
     ASSERT_TRUE(faces_are(mesh, {red(0, A, M, C, M, C), green(1, B, N, M), blue(0, N, C, M, C, M)}));
-    const rgb::VertexId P = split(mesh, C, A, rgb::SplitKind::BoundaryR);
+    const rgb::VertexId P = split_checked(mesh, C, A, rgb::SplitKind::BoundaryR);
     // The blues B0(N,C,M) and B0(C,P,M) shared the red edge M-C and were BB-swapped.
     ASSERT_TRUE(faces_are(mesh, {green(1, B, N, M), green(1, P, A, M), green(1, M, N, P), green(1, N, C, P)}));
     for (rgb::VertexId v : {M, N, P}) EXPECT_EQ(mesh.level(v), 1);
@@ -76,7 +68,7 @@ TEST(WorkedExampleB, TetrahedronToLevel1InLexicographicOrder) {
     EXPECT_EQ(colour_counts(mesh), (ColourCounts{4, 0, 0}));
     for (const TetrahedronStep& s : steps) {
         SCOPED_TRACE("split v" + std::to_string(s.a) + "v" + std::to_string(s.b));
-        split(mesh, rgb::VertexId(s.a), rgb::VertexId(s.b), s.kind);
+        split_checked(mesh, rgb::VertexId(s.a), rgb::VertexId(s.b), s.kind);
         EXPECT_EQ(mesh.num_faces(), s.triangles);
         EXPECT_EQ(colour_counts(mesh), s.colours);
     }

@@ -1,0 +1,12 @@
+#pragma once
+// Operator calls for configuration tests that first check which operator the core says applies.
+#include "rgb/mesh.h"
+#include "rgb/operators.h"
+
+namespace rgbtest {
+
+// Splits the edge {a, b} after expecting split_kind == `expected` and a complete Loop stencil;
+// returns the new vertex.
+rgb::VertexId split_checked(rgb::Mesh& mesh, rgb::VertexId a, rgb::VertexId b, rgb::SplitKind expected);
+
+}  // namespace rgbtest
