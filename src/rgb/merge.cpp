@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "rgb/mesh.h"
+#include "rgb/navigation.h"
 #include "rgb/operators.h"
 
 namespace rgb {
@@ -43,7 +44,7 @@ std::optional<StarOfRemovable> analyse(const Mesh& mesh, VertexId v) {
     const int L = mesh.level(v);
     if (L == 0) return std::nullopt;
     std::vector<HalfedgeId> out;
-    const HalfedgeId start = mesh.vertex_halfedge(v);
+    const HalfedgeId start = canonical_outgoing(mesh, v);
     HalfedgeId h = start;
     do {
         const FaceId f = Mesh::face(h);

@@ -4,6 +4,15 @@
 
 namespace rgb {
 
+HalfedgeId canonical_outgoing(const Mesh& mesh, VertexId v) {
+    const HalfedgeId start = mesh.vertex_halfedge(v);
+    if (mesh.is_boundary(v)) return start;
+    HalfedgeId best = start;
+    for (HalfedgeId h = mesh.ccw_rotated(start); h != start; h = mesh.ccw_rotated(h))
+        if (mesh.to_vertex(h) < mesh.to_vertex(best)) best = h;
+    return best;
+}
+
 std::optional<VertexId> turn_ccw(const Mesh& mesh, VertexId c, VertexId from, int units) {
     HalfedgeId h = mesh.find_halfedge(c, from);
     if (!h.valid()) return std::nullopt;
@@ -60,7 +69,7 @@ bool star_reaches_level(const Mesh& mesh, VertexId v) {
 std::vector<VertexId> uniform_ring(const Mesh& mesh, VertexId v) {
     const int l = mesh.level(v);
     if (!star_reaches_level(mesh, v)) return {};
-    const HalfedgeId start = mesh.vertex_halfedge(v);
+    const HalfedgeId start = canonical_outgoing(mesh, v);
     std::vector<VertexId> ring;
     if (mesh.is_boundary(v)) {
         HalfedgeId last = start;

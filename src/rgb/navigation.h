@@ -11,6 +11,12 @@ namespace rgb {
 
 class Mesh;
 
+// An outgoing halfedge of v chosen by a rule that depends only on the mesh's contents (the boundary
+// halfedge, or the one to the neighbour with the smallest id), never on edit history. Operators
+// that walk a star start here, so a mesh restored from its state (state.h) makes the same choices,
+// and so the same slot allocations, as the original.
+HalfedgeId canonical_outgoing(const Mesh& mesh, VertexId v);
+
 // Neighbour of c reached by turning `units` (30-degree steps) from the direction c->from,
 // counter-clockwise or clockwise; nullopt if the boundary or no edge lies at that angle.
 std::optional<VertexId> turn_ccw(const Mesh& mesh, VertexId c, VertexId from, int units);

@@ -85,7 +85,7 @@ bool ensure_limit(Mesh& mesh, VertexId v) {
                 if (mesh.level(w) < mesh.level(v) && !try_limit_position(mesh, w)) advanced = ensure_limit(mesh, w) || advanced;
         } else {
             // Split the coarse green edges around v until its ring at its own level exists.
-            const HalfedgeId start = mesh.vertex_halfedge(v);
+            const HalfedgeId start = canonical_outgoing(mesh, v);
             HalfedgeId h = start;
             do {
                 for (HalfedgeId e : {h, Mesh::prev(h)}) {

@@ -93,6 +93,9 @@ Mesh restore_state(const MeshState& s) {
     for (const auto& [k, h] : directed) {
         auto it = directed.find((k << 32) | (k >> 32));
         if (it != directed.end()) m.opposite_[h.idx] = it->second;
+    }
+    // Only once every opposite is known can a boundary vertex find its boundary halfedge.
+    for (const auto& [k, h] : directed) {
         const VertexId from(static_cast<std::uint32_t>(k >> 32));
         if (!m.vertex_halfedge_[from.idx].valid()) m.update_vertex_halfedge(from, h);
     }
