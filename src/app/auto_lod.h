@@ -1,10 +1,6 @@
 #pragma once
-// Budget-driven automatic level of detail (spec §3.3), run a slice at a time so the window stays
-// responsive: refine where displayed edges are longest until the triangle budget is reached or no
-// edge is longer than the threshold.
-//
-// Until the core's driver (rgb/lod_driver.h) lands this is the refinement half of §3.3 on top of
-// refine_edge; the editor only sees AutoLodJob, so switching over is local to auto_lod.cpp.
+// Budget-driven automatic level of detail (spec §3.3): the core's LodDriver with an edge-length
+// criterion, run a slice at a time so the window stays responsive and the job can be cancelled.
 #include <cstddef>
 #include <memory>
 

@@ -6,12 +6,14 @@
 
 #include "io/obj_error.h"
 #include "io/obj_reader.h"
+#include "rgb/lod_driver.h"
 
 namespace cli {
 
 namespace {
 
 constexpr int kMaxLevel = 20;
+constexpr std::size_t kMaxBudget = 500'000'000;
 
 std::vector<std::string> split_words(const std::string& line) {
     std::istringstream in(line);
@@ -37,12 +39,19 @@ std::vector<LodEdit> parse_lod_script(const std::string& text, const std::string
         auto fail = [&](const std::string& reason) { return rgbio::ObjError(rgbio::ObjProblem::Syntax, file, number, reason); };
         const std::vector<std::string> words = split_words(line);
         if (words.empty() || words[0].starts_with('#')) continue;
-        if (words[0] == "budget")
-            throw fail("'budget' is not supported by this build yet (it needs the core's budget driver)");
-        if (words[0] != "level") throw fail("unknown command '" + words[0] + "' (expected 'level N [sphere X Y Z R]' or 'budget TRIANGLES')");
+        if (words[0] != "level" && words[0] != "budget")
+            throw fail("unknown command '" + words[0] + "' (expected 'level N [sphere X Y Z R]' or 'budget TRIANGLES')");
         LodEdit edit;
         edit.line = number;
         edit.text = line.substr(0, line.find_last_not_of(" \t\r") + 1);
+        if (words[0] == "budget") {
+            std::size_t triangles = 0;
+            if (words.size() != 2 || !parse_whole(words[1], triangles) || triangles == 0 || triangles > kMaxBudget)
+                throw fail("'budget' needs a whole number of triangles from 1 to " + std::to_string(kMaxBudget));
+            edit.budget = triangles;
+            edits.push_back(std::move(edit));
+            continue;
+        }
         if (words.size() < 2 || !parse_whole(words[1], edit.level) || edit.level < 0 || edit.level > kMaxLevel)
             throw fail("'level' needs a whole number from 0 to " + std::to_string(kMaxLevel));
         if (words.size() > 2) {
@@ -63,7 +72,25 @@ std::vector<LodEdit> read_lod_script(const std::string& file) {
     return parse_lod_script(rgbio::read_text_file(file), file);
 }
 
+namespace {
+struct OperationCounter : rgb::MeshObserver {
+    rgb::SetLevelStats stats;
+    void vertex_added(const rgb::Mesh&, rgb::VertexId, rgb::VertexId, rgb::VertexId) override { ++stats.splits; }
+    void vertex_removed(const rgb::Mesh&, rgb::VertexId) override { ++stats.removals; }
+};
+}  // namespace
+
 rgb::SetLevelStats apply_lod_edit(rgb::Mesh& mesh, const LodEdit& edit) {
+    if (edit.budget) {
+        rgb::LodSettings settings;
+        settings.excess = rgb::edge_length_excess([](const glm::dvec3&) { return 0.0; });
+        settings.max_triangles = *edit.budget;
+        OperationCounter counter;
+        mesh.add_observer(&counter);
+        rgb::LodDriver(mesh, settings).run();
+        mesh.remove_observer(&counter);
+        return counter.stats;
+    }
     const rgb::Region region = edit.sphere ? rgb::Region::sphere(edit.sphere->first, edit.sphere->second) : rgb::Region::everywhere();
     return rgb::set_level(mesh, region, edit.level);
 }

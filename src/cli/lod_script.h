@@ -12,10 +12,11 @@
 
 namespace cli {
 
-// `level N [sphere X Y Z R]`. (`budget TRIANGLES` is recognised and rejected until the core's
-// budget driver exists.)
+// `level N [sphere X Y Z R]`, or `budget TRIANGLES`: the core's LOD driver refining the longest
+// edges first until the budget (and trimming the finest vertices if the mesh is over it).
 struct LodEdit {
     int level = 0;
+    std::optional<std::size_t> budget;
     std::optional<std::pair<glm::dvec3, double>> sphere;  // centre, radius
     std::size_t line = 0;
     std::string text;  // the line as written, for --timings

@@ -26,7 +26,14 @@ EdgeExcess level_excess(std::function<int(const glm::dvec3&)> target_level) {
 }
 
 LodDriver::LodDriver(Mesh& mesh, LodSettings settings) : mesh_(mesh), settings_(std::move(settings)) {
-    for (FaceId f : mesh_.faces()) push_face(f);
+    for (FaceId f : mesh_.faces())
+        for (int i = 0; i < 3; ++i) {
+            const HalfedgeId h = Mesh::halfedge(f, i);
+            const HalfedgeId o = mesh_.opposite(h);
+            if (!o.valid() || h < o) push_edge(h);  // each edge once
+        }
+    for (VertexId v : mesh_.vertices())
+        if (mesh_.level(v) > 0) coarsen_queue_.push({vertex_priority(v), v});
     mesh_.add_observer(this);
 }
 
@@ -34,18 +41,26 @@ LodDriver::~LodDriver() { mesh_.remove_observer(this); }
 
 void LodDriver::face_added(const Mesh&, FaceId f) { added_.push_back(f); }
 
+void LodDriver::push_edge(HalfedgeId h) {
+    const EdgeType t = mesh_.edge_type(h);
+    if (t.colour != Colour::Green || t.level >= settings_.max_level) return;
+    const double p = settings_.excess(mesh_, h);
+    if (p > 0) refine_queue_.push({p, mesh_.from_vertex(h), mesh_.to_vertex(h)});
+}
+
 void LodDriver::push_face(FaceId f) {
-    for (int i = 0; i < 3; ++i) {
-        const HalfedgeId h = Mesh::halfedge(f, i);
-        const HalfedgeId o = mesh_.opposite(h);
-        const EdgeType t = mesh_.edge_type(h);
-        // Each interior edge once (from its smaller halfedge), green only, below the level cap.
-        if ((o.valid() && o < h) || t.colour != Colour::Green || t.level >= settings_.max_level) continue;
-        const double p = settings_.excess(mesh_, h);
-        if (p > 0) refine_queue_.push({p, mesh_.from_vertex(h), mesh_.to_vertex(h)});
-    }
-    for (VertexId v : mesh_.face_vertices(f))
+    // A new face moves its corners (their display level may change), which changes the length of
+    // every edge at those corners: re-queue them all, not only the face's own edges.
+    for (VertexId v : mesh_.face_vertices(f)) {
+        const HalfedgeId start = mesh_.vertex_halfedge(v);
+        HalfedgeId h = start;
+        do {
+            push_edge(h);
+            push_edge(Mesh::prev(h));
+            h = mesh_.ccw_rotated(h);
+        } while (h.valid() && h != start);
         if (mesh_.level(v) > 0) coarsen_queue_.push({vertex_priority(v), v});
+    }
 }
 
 double LodDriver::vertex_priority(VertexId v) const {

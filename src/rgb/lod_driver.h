@@ -66,6 +66,7 @@ private:
         bool operator<(const VertexEntry& o) const { return priority > o.priority; }  // min-heap
     };
     void face_added(const Mesh&, FaceId f) override;
+    void push_edge(HalfedgeId h);
     void push_face(FaceId f);
     double vertex_priority(VertexId v) const;
     bool try_coarsen();

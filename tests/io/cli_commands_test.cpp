@@ -89,5 +89,20 @@ TEST_F(CliCommands, ApplyRunsTheScriptLikeRefine) {
     EXPECT_EQ(applied.triangles, refined.triangles);
 }
 
+// Every operation on a closed mesh changes the triangle count by exactly two, and the driver refines
+// until the count reaches the budget and trims back down to it, so an even budget is met exactly.
+TEST_F(CliCommands, ApplyBudgetMeetsTheTriangleCountExactly) {
+    write("script.txt", "budget 500\n");
+    ASSERT_EQ(run({"apply", path("octahedron.obj"), path("script.txt"), "-o", path("budget.obj")}), 0);
+    const LoadedMesh fine = read_obj_file(path("budget.obj"));
+    ASSERT_TRUE(fine.state);
+    EXPECT_EQ(fine.triangles.size(), 500u);
+    write("down.txt", "level 4\nbudget 100\n");
+    ASSERT_EQ(run({"apply", path("octahedron.obj"), path("down.txt"), "-o", path("down.obj")}), 0);
+    EXPECT_EQ(read_obj_file(path("down.obj")).triangles.size(), 100u);
+    write("bad.txt", "budget lots\n");
+    EXPECT_EQ(run({"apply", path("octahedron.obj"), path("bad.txt"), "-o", path("bad.obj")}), 2);
+}
+
 }  // namespace
 }  // namespace rgbio
