@@ -125,22 +125,42 @@ SetLevelStats set_level(Mesh& mesh, const Region& region, int target, LodDirecti
 void refine_uniform(Mesh& mesh, int level) {
     // One level at a time: while going from level l to l+1 no triangle is coarser than l, so every
     // green edge of level l can be split at once, with no recursion and no extra refinement (the
-    // rings of all coarser vertices exist). Splits reuse freed slots, so sweep until a pass is idle.
+    // rings of all coarser vertices exist).
+    std::vector<FaceId> revisit;
     for (int l = 0; l < level; ++l) {
         // Each pass quadruples the faces and adds one vertex per edge (about 1.5 per face).
         mesh.reserve(4 * mesh.face_capacity(), mesh.vertex_capacity() + 2 * mesh.face_capacity());
-        bool split_any = true;
-        while (split_any) {
-            split_any = false;
-            for (std::uint32_t i = 0; i < mesh.face_capacity(); ++i) {
-                const FaceId f(i);
-                for (int c = 0; c < 3 && mesh.is_live(f); ++c) {
-                    const HalfedgeId h = Mesh::halfedge(f, c);
-                    const EdgeType e = mesh.edge_type(h);
-                    if (e.colour != Colour::Green || e.level != l) continue;
-                    split_edge(mesh, h);
-                    split_any = true;
-                    c = -1;  // the slot now holds a new face: look at it afresh
+        // Only a G_l or R_l triangle can have a green edge of level l.
+        auto splittable_edge = [&](FaceId f) {
+            const FaceType& t = mesh.type(f);
+            if (!mesh.is_live(f) || t.level != l || t.colour == Colour::Blue) return HalfedgeId();
+            for (int c = 0; c < 3; ++c) {
+                const HalfedgeId h = Mesh::halfedge(f, c);
+                const EdgeType e = mesh.edge_type(h);
+                if (e.colour == Colour::Green && e.level == l) return h;
+            }
+            return HalfedgeId();
+        };
+        // Every face a split creates contains the new vertex. Those that land in slots the sweep has
+        // passed (reused ones) are looked at right away, so one sweep finishes the level.
+        auto split_and_revisit = [&](HalfedgeId h, std::uint32_t swept) {
+            const VertexId v = split_edge(mesh, h);
+            const HalfedgeId start = mesh.vertex_halfedge(v);
+            HalfedgeId o = start;
+            do {
+                if (Mesh::face(o).idx < swept) revisit.push_back(Mesh::face(o));
+                o = mesh.ccw_rotated(o);
+            } while (o.valid() && o != start);
+        };
+        for (std::uint32_t i = 0; i < mesh.face_capacity(); ++i) {
+            for (HalfedgeId h = splittable_edge(FaceId(i)); h.valid(); h = splittable_edge(FaceId(i)))
+                split_and_revisit(h, i + 1);
+            while (!revisit.empty()) {
+                const FaceId f = revisit.back();
+                revisit.pop_back();
+                if (const HalfedgeId h = splittable_edge(f); h.valid()) {
+                    revisit.push_back(f);
+                    split_and_revisit(h, i + 1);
                 }
             }
         }

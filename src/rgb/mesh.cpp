@@ -232,19 +232,28 @@ void Mesh::release_vertex(VertexId v) {
     --vertex_count_;
 }
 
-void Mesh::update_vertex_halfedge(VertexId v, HalfedgeId h) {
+void Mesh::update_vertex_halfedge(VertexId v, HalfedgeId h) { vertex_halfedge_[v.idx] = boundary_outgoing(h); }
+
+HalfedgeId Mesh::boundary_outgoing(HalfedgeId h) const {
     // Turn clockwise to the boundary, if there is one, so that ccw turns from it see the whole star.
     const HalfedgeId start = h;
     for (HalfedgeId c = cw_rotated(h); c.valid() && c != start; c = cw_rotated(c)) h = c;
-    vertex_halfedge_[v.idx] = h;
+    return h;
 }
 
-void Mesh::refresh_vertex_halfedge(VertexId v, HalfedgeId outgoing) {
+void Mesh::refresh_vertex_halfedge(VertexId v, HalfedgeId outgoing, std::span<const FaceId> replaced) {
     const HalfedgeId cur = vertex_halfedge_[v.idx];
-    const bool still_valid = cur.valid() && face_alive_[cur.idx / 3] && from_vertex(cur) == v;
+    if (!cur.valid()) {
+        vertex_halfedge_[v.idx] = vertex_boundary_[v.idx] ? boundary_outgoing(outgoing) : outgoing;
+        return;
+    }
+    // A halfedge outside the replaced faces kept its face, its vertices and its boundary status, so
+    // only one inside needs a look (and that face is in cache, unlike an arbitrary one outside).
+    const FaceId f = face(cur);
+    if (std::find(replaced.begin(), replaced.end(), f) == replaced.end()) return;
+    const bool still_valid = face_alive_[f.idx] && from_vertex(cur) == v;
     if (still_valid && (!vertex_boundary_[v.idx] || is_boundary(cur))) return;
-    if (vertex_boundary_[v.idx]) update_vertex_halfedge(v, outgoing);
-    else vertex_halfedge_[v.idx] = outgoing;
+    vertex_halfedge_[v.idx] = vertex_boundary_[v.idx] ? boundary_outgoing(outgoing) : outgoing;
 }
 
 FaceList Mesh::replace_faces(std::span<const FaceId> old_faces, std::span<const NewFace> new_faces,
@@ -305,7 +314,7 @@ FaceList Mesh::replace_faces(std::span<const FaceId> old_faces, std::span<const 
         if (match.valid()) opposite_[match.idx] = h;
     }
     for (FaceId f : created)
-        for (int i = 0; i < 3; ++i) refresh_vertex_halfedge(face_vertices_[f.idx][i], halfedge(f, i));
+        for (int i = 0; i < 3; ++i) refresh_vertex_halfedge(face_vertices_[f.idx][i], halfedge(f, i), old_faces);
     for (FaceId f : created)
         for (MeshObserver* o : observers_) o->face_added(*this, f);
     return created;

@@ -155,9 +155,11 @@ private:
     void release_face(FaceId f);
     void release_vertex(VertexId v);
     void update_vertex_halfedge(VertexId v, HalfedgeId any_outgoing);
+    // The outgoing halfedge on the boundary reached by turning clockwise from h (h itself if none).
+    HalfedgeId boundary_outgoing(HalfedgeId h) const;
     // After a replace: keep v's outgoing halfedge if it is still one (and still on the boundary for a
     // boundary vertex), otherwise derive it from `outgoing`, a halfedge of v in a new face.
-    void refresh_vertex_halfedge(VertexId v, HalfedgeId outgoing);
+    void refresh_vertex_halfedge(VertexId v, HalfedgeId outgoing, std::span<const FaceId> replaced);
 
     // faces
     std::vector<std::array<VertexId, 3>> face_vertices_;
