@@ -1,6 +1,7 @@
 #include "rgb/mesh.h"
 
 #include <algorithm>
+#include <bit>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -241,36 +242,35 @@ HalfedgeId Mesh::boundary_outgoing(HalfedgeId h) const {
     return h;
 }
 
-void Mesh::refresh_vertex_halfedge(VertexId v, HalfedgeId outgoing, std::span<const FaceId> replaced) {
+void Mesh::refresh_vertex_halfedge(VertexId v, HalfedgeId outgoing) {
     const HalfedgeId cur = vertex_halfedge_[v.idx];
-    if (!cur.valid()) {
-        vertex_halfedge_[v.idx] = vertex_boundary_[v.idx] ? boundary_outgoing(outgoing) : outgoing;
-        return;
-    }
-    // A halfedge outside the replaced faces kept its face, its vertices and its boundary status, so
-    // only one inside needs a look (and that face is in cache, unlike an arbitrary one outside).
-    const FaceId f = face(cur);
-    if (std::find(replaced.begin(), replaced.end(), f) == replaced.end()) return;
-    const bool still_valid = face_alive_[f.idx] && from_vertex(cur) == v;
+    const bool still_valid = cur.valid() && face_alive_[cur.idx / 3] && from_vertex(cur) == v;
     if (still_valid && (!vertex_boundary_[v.idx] || is_boundary(cur))) return;
     vertex_halfedge_[v.idx] = vertex_boundary_[v.idx] ? boundary_outgoing(outgoing) : outgoing;
 }
 
 FaceList Mesh::replace_faces(std::span<const FaceId> old_faces, std::span<const NewFace> new_faces,
                              std::span<const VertexId> removed_vertices) {
+    // Halfedges are matched by their directed vertex pair packed into one integer.
+    auto key = [](VertexId a, VertexId b) { return (std::uint64_t(a.idx) << 32) | b.idx; };
     // Outside halfedges that face the region, keyed by the directed edge as seen from inside.
     struct Border {
-        VertexId from, to;
+        std::uint64_t key;
         HalfedgeId outside;
     };
     InlineVector<Border, 18> border;
+    // Vertices whose outgoing halfedge is in a replaced face. Any other vertex keeps its halfedge: that
+    // halfedge's face, vertices and boundary status are untouched.
+    std::array<VertexId, 18> stale;
+    std::size_t num_stale = 0;
     auto in_old = [&](FaceId f) { return std::find(old_faces.begin(), old_faces.end(), f) != old_faces.end(); };
     for (FaceId f : old_faces) {
+        const auto& fv = face_vertices_[f.idx];
         for (int i = 0; i < 3; ++i) {
-            const HalfedgeId h = halfedge(f, i);
-            const HalfedgeId o = opposite(h);
+            if (vertex_halfedge_[fv[i].idx] == halfedge(f, i)) stale[num_stale++] = fv[i];
+            const HalfedgeId o = opposite_[3 * f.idx + i];
             if (o.valid() && in_old(face(o))) continue;
-            border.push_back({from_vertex(h), to_vertex(h), o});
+            border.push_back({key(fv[i], fv[(i + 1) % 3]), o});
         }
     }
     for (FaceId f : old_faces)
@@ -282,39 +282,57 @@ FaceList Mesh::replace_faces(std::span<const FaceId> old_faces, std::span<const 
     }
 
     FaceList created;
-    for (const NewFace& nf : new_faces) {
+    std::array<std::uint64_t, 18> new_keys;
+    std::array<HalfedgeId, 18> new_halfedges;
+    for (std::size_t k = 0; k < new_faces.size(); ++k) {
+        const NewFace& nf = new_faces[k];
         const FaceId f = allocate_face();
         face_vertices_[f.idx] = nf.v;
         face_type_[f.idx] = nf.type;
         created.push_back(f);
+        for (int i = 0; i < 3; ++i) {
+            new_keys[3 * k + i] = key(nf.v[i], nf.v[(i + 1) % 3]);
+            new_halfedges[3 * k + i] = halfedge(f, i);
+        }
     }
-    // Pair the new halfedges with each other, then with the border, by their directed vertex pairs.
-    auto key = [](VertexId a, VertexId b) { return (std::uint64_t(a.idx) << 32) | b.idx; };
-    InlineVector<std::uint64_t, 18> new_keys;
-    for (FaceId f : created)
-        for (int i = 0; i < 3; ++i) new_keys.push_back(key(face_vertices_[f.idx][i], face_vertices_[f.idx][(i + 1) % 3]));
-    for (std::size_t k = 0; k < new_keys.size(); ++k) {
-        const HalfedgeId h = halfedge(created[k / 3], static_cast<int>(k % 3));
-        if (opposite_[h.idx].valid()) continue;
-        const std::uint64_t reverse = (new_keys[k] << 32) | (new_keys[k] >> 32);
+    // Pair the new halfedges with each other, then with the border. A bit per new halfedge still
+    // unpaired; pairs are linked from their first member, so the partner can only come later.
+    std::uint32_t unpaired = (std::uint32_t(1) << (3 * new_faces.size())) - 1;
+    while (unpaired != 0) {
+        const int k = std::countr_zero(unpaired);
+        unpaired &= unpaired - 1;
+        const std::uint64_t reverse = std::rotl(new_keys[k], 32);
         HalfedgeId match;
-        // Pairs are linked from their first member, so the partner can only come later.
-        for (std::size_t j = k + 1; j < new_keys.size(); ++j)
+        for (std::uint32_t later = unpaired; later != 0; later &= later - 1) {
+            const int j = std::countr_zero(later);
             if (new_keys[j] == reverse) {
-                match = halfedge(created[j / 3], static_cast<int>(j % 3));
+                match = new_halfedges[j];
+                unpaired &= ~(std::uint32_t(1) << j);
                 break;
             }
+        }
         if (!match.valid())
             for (const Border& e : border)
-                if (key(e.from, e.to) == new_keys[k]) {
+                if (e.key == new_keys[k]) {
                     match = e.outside;
                     break;
                 }
+        const HalfedgeId h = new_halfedges[k];
         opposite_[h.idx] = match;
         if (match.valid()) opposite_[match.idx] = h;
     }
-    for (FaceId f : created)
-        for (int i = 0; i < 3; ++i) refresh_vertex_halfedge(face_vertices_[f.idx][i], halfedge(f, i), old_faces);
+    // New vertices have no halfedge yet; a stale one is looked at once, at its first new corner.
+    const auto stale_end = stale.begin() + static_cast<std::ptrdiff_t>(num_stale);
+    for (std::size_t k = 0; k < new_faces.size(); ++k)
+        for (int i = 0; i < 3; ++i) {
+            const VertexId v = new_faces[k].v[i];
+            if (vertex_halfedge_[v.idx].valid()) {
+                const auto it = std::find(stale.begin(), stale_end, v);
+                if (it == stale_end) continue;
+                *it = VertexId();
+            }
+            refresh_vertex_halfedge(v, new_halfedges[3 * k + i]);
+        }
     for (FaceId f : created)
         for (MeshObserver* o : observers_) o->face_added(*this, f);
     return created;

@@ -159,7 +159,7 @@ private:
     HalfedgeId boundary_outgoing(HalfedgeId h) const;
     // After a replace: keep v's outgoing halfedge if it is still one (and still on the boundary for a
     // boundary vertex), otherwise derive it from `outgoing`, a halfedge of v in a new face.
-    void refresh_vertex_halfedge(VertexId v, HalfedgeId outgoing, std::span<const FaceId> replaced);
+    void refresh_vertex_halfedge(VertexId v, HalfedgeId outgoing);
 
     // faces
     std::vector<std::array<VertexId, 3>> face_vertices_;
