@@ -242,10 +242,11 @@ HalfedgeId Mesh::boundary_outgoing(HalfedgeId h) const {
     return h;
 }
 
-void Mesh::refresh_vertex_halfedge(VertexId v, HalfedgeId outgoing) {
-    const HalfedgeId cur = vertex_halfedge_[v.idx];
-    const bool still_valid = cur.valid() && face_alive_[cur.idx / 3] && from_vertex(cur) == v;
-    if (still_valid && (!vertex_boundary_[v.idx] || is_boundary(cur))) return;
+bool Mesh::reusable_vertex_halfedge(VertexId v, HalfedgeId h) const {
+    return face_alive_[h.idx / 3] && from_vertex(h) == v && (!vertex_boundary_[v.idx] || is_boundary(h));
+}
+
+void Mesh::set_vertex_halfedge(VertexId v, HalfedgeId outgoing) {
     vertex_halfedge_[v.idx] = vertex_boundary_[v.idx] ? boundary_outgoing(outgoing) : outgoing;
 }
 
@@ -261,13 +262,24 @@ FaceList Mesh::replace_faces(std::span<const FaceId> old_faces, std::span<const 
     InlineVector<Border, 18> border;
     // Vertices whose outgoing halfedge is in a replaced face. Any other vertex keeps its halfedge: that
     // halfedge's face, vertices and boundary status are untouched.
-    std::array<VertexId, 18> stale;
-    std::size_t num_stale = 0;
-    auto in_old = [&](FaceId f) { return std::find(old_faces.begin(), old_faces.end(), f) != old_faces.end(); };
+    struct Stale {
+        VertexId v;
+        HalfedgeId was;
+    };
+    InlineVector<Stale, 18> stale;
+    // A plain loop: there are at most six faces, too few for std::find's unrolling to pay.
+    auto in_old = [&](FaceId f) {
+        for (FaceId g : old_faces)
+            if (g == f) return true;
+        return false;
+    };
     for (FaceId f : old_faces) {
         const auto& fv = face_vertices_[f.idx];
         for (int i = 0; i < 3; ++i) {
-            if (vertex_halfedge_[fv[i].idx] == halfedge(f, i)) stale[num_stale++] = fv[i];
+            if (vertex_halfedge_[fv[i].idx] == halfedge(f, i)) {
+                stale.push_back({fv[i], halfedge(f, i)});
+                vertex_halfedge_[fv[i].idx] = HalfedgeId();
+            }
             const HalfedgeId o = opposite_[3 * f.idx + i];
             if (o.valid() && in_old(face(o))) continue;
             border.push_back({key(fv[i], fv[(i + 1) % 3]), o});
@@ -321,18 +333,15 @@ FaceList Mesh::replace_faces(std::span<const FaceId> old_faces, std::span<const 
         opposite_[h.idx] = match;
         if (match.valid()) opposite_[match.idx] = h;
     }
-    // New vertices have no halfedge yet; a stale one is looked at once, at its first new corner.
-    const auto stale_end = stale.begin() + static_cast<std::ptrdiff_t>(num_stale);
+    // New and stale vertices take their first new corner, unless a stale halfedge is valid again (its
+    // slot reused with the vertex at the same corner).
     for (std::size_t k = 0; k < new_faces.size(); ++k)
         for (int i = 0; i < 3; ++i) {
             const VertexId v = new_faces[k].v[i];
-            if (vertex_halfedge_[v.idx].valid()) {
-                const auto it = std::find(stale.begin(), stale_end, v);
-                if (it == stale_end) continue;
-                *it = VertexId();
-            }
-            refresh_vertex_halfedge(v, new_halfedges[3 * k + i]);
+            if (!vertex_halfedge_[v.idx].valid()) set_vertex_halfedge(v, new_halfedges[3 * k + i]);
         }
+    for (const Stale& s : stale)
+        if (reusable_vertex_halfedge(s.v, s.was)) vertex_halfedge_[s.v.idx] = s.was;
     for (FaceId f : created)
         for (MeshObserver* o : observers_) o->face_added(*this, f);
     return created;

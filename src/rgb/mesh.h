@@ -157,9 +157,11 @@ private:
     void update_vertex_halfedge(VertexId v, HalfedgeId any_outgoing);
     // The outgoing halfedge on the boundary reached by turning clockwise from h (h itself if none).
     HalfedgeId boundary_outgoing(HalfedgeId h) const;
-    // After a replace: keep v's outgoing halfedge if it is still one (and still on the boundary for a
-    // boundary vertex), otherwise derive it from `outgoing`, a halfedge of v in a new face.
-    void refresh_vertex_halfedge(VertexId v, HalfedgeId outgoing);
+    // Whether h, v's outgoing halfedge before a replace, still is one after it (and still on the
+    // boundary for a boundary vertex).
+    bool reusable_vertex_halfedge(VertexId v, HalfedgeId h) const;
+    // v's outgoing halfedge derived from `outgoing`, one of its halfedges in a new face.
+    void set_vertex_halfedge(VertexId v, HalfedgeId outgoing);
 
     // faces
     std::vector<std::array<VertexId, 3>> face_vertices_;
