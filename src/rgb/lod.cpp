@@ -126,10 +126,14 @@ void refine_uniform(Mesh& mesh, int level) {
     // One level at a time: while going from level l to l+1 no triangle is coarser than l, so every
     // green edge of level l can be split at once, with no recursion and no extra refinement (the
     // rings of all coarser vertices exist).
+    // Room for the final mesh at once, so that no level copies the arrays: a face of level k becomes
+    // 4^(level - k) faces, and every new vertex brings at least one new face.
+    std::size_t final_faces = 0;
+    for (FaceId f : mesh.faces()) final_faces += std::size_t(1) << (2 * std::max(0, level - mesh.level(f)));
+    const std::size_t new_faces = final_faces - mesh.num_faces();
+    mesh.reserve(mesh.face_capacity() + new_faces, mesh.vertex_capacity() + new_faces);
     std::vector<FaceId> revisit;
     for (int l = 0; l < level; ++l) {
-        // Each pass quadruples the faces and adds one vertex per edge (about 1.5 per face).
-        mesh.reserve(4 * mesh.face_capacity(), mesh.vertex_capacity() + 2 * mesh.face_capacity());
         // Only a G_l or R_l triangle can have a green edge of level l.
         auto splittable_edge = [&](FaceId f) {
             const FaceType& t = mesh.type(f);
