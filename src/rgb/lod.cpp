@@ -132,7 +132,7 @@ void refine_uniform(Mesh& mesh, int level) {
     for (FaceId f : mesh.faces()) final_faces += std::size_t(1) << (2 * std::max(0, level - mesh.level(f)));
     const std::size_t new_faces = final_faces - mesh.num_faces();
     mesh.reserve(mesh.face_capacity() + new_faces, mesh.vertex_capacity() + new_faces);
-    std::vector<FaceId> revisit;
+    std::vector<FaceId> front;
     for (int l = 0; l < level; ++l) {
         // Only a G_l or R_l triangle can have a green edge of level l.
         auto splittable_edge = [&](FaceId f) {
@@ -145,27 +145,24 @@ void refine_uniform(Mesh& mesh, int level) {
             }
             return HalfedgeId();
         };
-        // Every face a split creates contains the new vertex. Those that land in slots the sweep has
-        // passed (reused ones) are looked at right away, so one sweep finishes the level.
-        auto split_and_revisit = [&](HalfedgeId h, std::uint32_t swept) {
-            const VertexId v = split_edge(mesh, h);
-            const HalfedgeId start = mesh.vertex_halfedge(v);
-            HalfedgeId o = start;
-            do {
-                if (Mesh::face(o).idx < swept) revisit.push_back(Mesh::face(o));
-                o = mesh.ccw_rotated(o);
-            } while (o.valid() && o != start);
-        };
+        // Every face a split creates contains the new vertex. They go on a stack that is worked off
+        // before the sweep moves on: the refinement spreads from face to neighbour while their data
+        // is still in cache, and slots the sweep has passed (reused ones) are not missed.
         for (std::uint32_t i = 0; i < mesh.face_capacity(); ++i) {
-            for (HalfedgeId h = splittable_edge(FaceId(i)); h.valid(); h = splittable_edge(FaceId(i)))
-                split_and_revisit(h, i + 1);
-            while (!revisit.empty()) {
-                const FaceId f = revisit.back();
-                revisit.pop_back();
-                if (const HalfedgeId h = splittable_edge(f); h.valid()) {
-                    revisit.push_back(f);
-                    split_and_revisit(h, i + 1);
-                }
+            front.push_back(FaceId(i));
+            while (!front.empty()) {
+                const FaceId f = front.back();
+                front.pop_back();
+                const HalfedgeId h = splittable_edge(f);
+                if (!h.valid()) continue;
+                front.push_back(f);
+                const VertexId v = split_edge(mesh, h);
+                const HalfedgeId start = mesh.vertex_halfedge(v);
+                HalfedgeId o = start;
+                do {
+                    front.push_back(Mesh::face(o));
+                    o = mesh.ccw_rotated(o);
+                } while (o.valid() && o != start);
             }
         }
     }
