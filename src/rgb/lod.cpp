@@ -145,9 +145,10 @@ void refine_uniform(Mesh& mesh, int level) {
             }
             return HalfedgeId();
         };
-        // Every face a split creates contains the new vertex. They go on a stack that is worked off
-        // before the sweep moves on: the refinement spreads from face to neighbour while their data
-        // is still in cache, and slots the sweep has passed (reused ones) are not missed.
+        // Every face a split creates contains the new vertex; the new R_l ones (the only ones with an
+        // edge left to split) go on a stack that is worked off before the sweep moves on. So the
+        // refinement spreads from face to neighbour while their data is still in cache, and slots the
+        // sweep has passed (reused ones) are not missed.
         for (std::uint32_t i = 0; i < mesh.face_capacity(); ++i) {
             front.push_back(FaceId(i));
             while (!front.empty()) {
@@ -160,7 +161,8 @@ void refine_uniform(Mesh& mesh, int level) {
                 const HalfedgeId start = mesh.vertex_halfedge(v);
                 HalfedgeId o = start;
                 do {
-                    front.push_back(Mesh::face(o));
+                    const FaceId g = Mesh::face(o);
+                    if (mesh.colour(g) == Colour::Red && mesh.level(g) == l) front.push_back(g);
                     o = mesh.ccw_rotated(o);
                 } while (o.valid() && o != start);
             }
