@@ -127,11 +127,17 @@ void refine_uniform(Mesh& mesh, int level) {
     // green edge of level l can be split at once, with no recursion and no extra refinement (the
     // rings of all coarser vertices exist).
     // Room for the final mesh at once, so that no level copies the arrays: a face of level k becomes
-    // 4^(level - k) faces, and every new vertex brings at least one new face.
-    std::size_t final_faces = 0;
-    for (FaceId f : mesh.faces()) final_faces += std::size_t(1) << (2 * std::max(0, level - mesh.level(f)));
-    const std::size_t new_faces = final_faces - mesh.num_faces();
-    mesh.reserve(mesh.face_capacity() + new_faces, mesh.vertex_capacity() + new_faces);
+    // 4^(level - k) faces; an interior split adds one vertex per two faces, a boundary one (at most
+    // 2^steps per boundary edge) one per face. Steps are capped so the shifts stay defined; a level
+    // that high cannot be reached anyway.
+    std::size_t new_faces = 0, new_boundary_vertices = 0;
+    for (FaceId f : mesh.faces()) {
+        const int steps = std::clamp(level - mesh.level(f), 0, 24);
+        new_faces += (std::size_t(1) << (2 * steps)) - 1;
+        for (int c = 0; c < 3; ++c)
+            if (mesh.is_boundary(Mesh::halfedge(f, c))) new_boundary_vertices += (std::size_t(1) << steps) - 1;
+    }
+    mesh.reserve(mesh.face_capacity() + new_faces, mesh.vertex_capacity() + new_faces / 2 + new_boundary_vertices);
     std::vector<FaceId> front;
     for (int l = 0; l < level; ++l) {
         // Only a G_l or R_l triangle can have a green edge of level l.
