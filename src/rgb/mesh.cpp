@@ -287,8 +287,8 @@ FaceList Mesh::replace_faces(std::span<const FaceId> old_faces, std::span<const 
     }
     for (FaceId f : old_faces)
         for (MeshObserver* o : observers_) o->face_removed(*this, f);
-    // Released last to first, so that the free list hands the slots back first to first: a new face
-    // lands where the old face it overlaps was, which keeps neighbours close in memory.
+    // Released last to first, so that the free list hands the slots back first to first: the first
+    // new faces take the old faces' slots in order, keeping the region together in memory.
     for (auto it = old_faces.rbegin(); it != old_faces.rend(); ++it) release_face(*it);
     for (VertexId v : removed_vertices) {
         for (MeshObserver* o : observers_) o->vertex_removed(*this, v);
