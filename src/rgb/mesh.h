@@ -143,7 +143,7 @@ public:
     FaceList replace_faces(std::span<const FaceId> old_faces, std::span<const NewFace> new_faces,
                                       std::span<const VertexId> removed_vertices = {});
 
-    // Bytes held by the core arrays (capacity, not just size), for the memory benchmark.
+    // Bytes of the core arrays in use (sizes, not reserved capacity), for the memory benchmark.
     std::size_t memory_bytes() const;
 
 private:
