@@ -161,13 +161,19 @@ void Mesh::add_observer(MeshObserver* o) { observers_.push_back(o); }
 
 void Mesh::remove_observer(MeshObserver* o) { std::erase(observers_, o); }
 
+namespace {
+// The most recently freed slot, or `size` (the next slot at the end, which the caller then appends).
+std::uint32_t take_slot(std::vector<std::uint32_t>& free_slots, std::size_t size) {
+    if (free_slots.empty()) return static_cast<std::uint32_t>(size);
+    const std::uint32_t slot = free_slots.back();
+    free_slots.pop_back();
+    return slot;
+}
+}  // namespace
+
 VertexId Mesh::add_vertex(int lvl, const glm::dvec3& p, bool boundary, VertexId a, VertexId b) {
-    VertexId v;
-    if (!free_vertices_.empty()) {
-        v = VertexId(free_vertices_.back());
-        free_vertices_.pop_back();
-    } else {
-        v = VertexId(static_cast<std::uint32_t>(vertex_alive_.size()));
+    const VertexId v(take_slot(free_vertices_, vertex_alive_.size()));
+    if (v.idx == vertex_alive_.size()) {
         insertion_position_.emplace_back();
         vertex_halfedge_.emplace_back();
         vertex_level_.push_back(0);
@@ -188,25 +194,15 @@ VertexId Mesh::add_vertex(int lvl, const glm::dvec3& p, bool boundary, VertexId 
 
 void Mesh::set_limit_position(VertexId v, const glm::dvec3& p) const {
     if (limit_slot_[v.idx] != kNoLimit) return;
-    std::uint32_t s;
-    if (!free_limit_slots_.empty()) {
-        s = free_limit_slots_.back();
-        free_limit_slots_.pop_back();
-        limit_pool_[s] = p;
-    } else {
-        s = static_cast<std::uint32_t>(limit_pool_.size());
-        limit_pool_.push_back(p);
-    }
+    const std::uint32_t s = take_slot(free_limit_slots_, limit_pool_.size());
+    if (s == limit_pool_.size()) limit_pool_.push_back(p);
+    else limit_pool_[s] = p;
     limit_slot_[v.idx] = s;
 }
 
 FaceId Mesh::allocate_face() {
-    FaceId f;
-    if (!free_faces_.empty()) {
-        f = FaceId(free_faces_.back());
-        free_faces_.pop_back();
-    } else {
-        f = FaceId(static_cast<std::uint32_t>(face_alive_.size()));
+    const FaceId f(take_slot(free_faces_, face_alive_.size()));
+    if (f.idx == face_alive_.size()) {
         face_vertices_.emplace_back();
         face_type_.emplace_back();
         face_alive_.push_back(0);
