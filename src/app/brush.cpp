@@ -12,40 +12,45 @@ BrushMode effective_mode(BrushMode mode, bool inverted) {
     switch (mode) {
         case BrushMode::Refine: return BrushMode::Coarsen;
         case BrushMode::Coarsen: return BrushMode::Refine;
-        case BrushMode::SetLevel: return BrushMode::SetLevel;
+        case BrushMode::Set: return BrushMode::Set;
     }
     return mode;
 }
 
-rgb::LodDirection direction_of(BrushMode mode) {
-    switch (mode) {
-        case BrushMode::Refine: return rgb::LodDirection::Refine;
-        case BrushMode::Coarsen: return rgb::LodDirection::Coarsen;
-        case BrushMode::SetLevel: return rgb::LodDirection::Both;
-    }
-    return rgb::LodDirection::Both;
+int effective_level(const BrushSettings& settings, bool inverted) {
+    return inverted && settings.mode == BrushMode::Refine ? 0 : settings.target_level;
 }
 
-int target_at_distance(BrushMode mode, int target_level, float falloff, double d, double radius) {
-    if (radius <= 0.0 || d > radius) return -1;
-    const double band = std::clamp(static_cast<double>(falloff), 0.0, 1.0) * radius;
-    // strength: 1 over the core, falling linearly to 0 at the rim.
-    const double strength = band <= 0.0 ? 1.0 : std::clamp((radius - d) / band, 0.0, 1.0);
-    switch (mode) {
-        case BrushMode::Refine: return static_cast<int>(std::lround(strength * target_level));
-        case BrushMode::Coarsen:
-            return static_cast<int>(std::lround(target_level + (1.0 - strength) * (kMaxBrushLevel - target_level)));
-        case BrushMode::SetLevel: return strength >= 1.0 ? target_level : -1;
+BaseSpaceHit to_base_space(const rgb::Mesh& mesh, rgb::FaceId face, const std::array<glm::dvec3, 3>& displayed,
+                           const glm::dvec3& point, double world_radius) {
+    std::array<glm::dvec3, 3> base;
+    for (int i = 0; i < 3; ++i) base[i] = mesh.base_space_position(mesh.face_vertices(face)[i]);
+    // Barycentric coordinates of the point in the displayed triangle (by sub-triangle areas).
+    const glm::dvec3 n = glm::cross(displayed[1] - displayed[0], displayed[2] - displayed[0]);
+    const double nn = glm::dot(n, n);
+    BaseSpaceHit hit;
+    if (nn <= 0.0) {
+        hit.centre = (base[0] + base[1] + base[2]) / 3.0;
+    } else {
+        const double w1 = glm::dot(glm::cross(displayed[2] - displayed[0], point - displayed[0]), n) / nn;
+        const double w2 = glm::dot(glm::cross(point - displayed[0], displayed[1] - displayed[0]), n) / nn;
+        hit.centre = (1.0 - w1 - w2) * base[0] + w1 * base[1] + w2 * base[2];
     }
-    return -1;
+    const double displayed_area = std::sqrt(nn);
+    const double base_area = glm::length(glm::cross(base[1] - base[0], base[2] - base[0]));
+    hit.radius = displayed_area > 0.0 ? world_radius * std::sqrt(base_area / displayed_area) : world_radius;
+    return hit;
 }
 
-rgb::SetLevelStats apply_dab(rgb::Mesh& mesh, std::span<const rgb::FaceId> footprint, BrushMode mode,
-                             const BrushSettings& settings, const glm::dvec3& centre, double radius) {
-    const auto target_at = [&](const glm::dvec3& p) {
-        return target_at_distance(mode, settings.target_level, settings.falloff, glm::distance(p, centre), radius);
-    };
-    return rgb::set_level_faces(mesh, footprint, target_at, direction_of(mode));
+rgb::Dab make_dab(const BrushSettings& settings, bool inverted, const BaseSpaceHit& at, const glm::dvec3& view) {
+    rgb::Dab dab;
+    dab.mode = effective_mode(settings.mode, inverted);
+    dab.level = effective_level(settings, inverted);
+    dab.radius = at.radius;
+    dab.falloff = settings.falloff;
+    dab.centre = at.centre;
+    if (!settings.paint_through) dab.view = view;
+    return dab;
 }
 
 void grow_radius(BrushSettings& settings, int steps) {

@@ -1,18 +1,19 @@
 #pragma once
-// The level-of-detail brush (spec §3.4): what a dab asks of the engine, as a target level at each
-// displayed position. GL-free.
-#include <functional>
-
+// The level-of-detail brush as the editor holds it: a mode, a target level, a radius in screen pixels
+// or world units, a falloff. A dab becomes an rgb::Dab in base space (rgb/dab.h), the same request a
+// recorded stroke replays. GL-free.
 #include <glm/vec3.hpp>
 
-#include "rgb/refine.h"
+#include "rgb/dab.h"
+#include "rgb/mesh.h"
 
 namespace app {
 
-enum class BrushMode { Refine, Coarsen, SetLevel };
+using BrushMode = rgb::BrushMode;
 enum class RadiusUnit { ScreenPixels, World };
 
-inline constexpr int kMaxBrushLevel = 8;
+// The finest level the brush and "Set all" offer (the core accepts up to rgb::kMaxLevel).
+inline constexpr int kMaxBrushLevel = 12;
 
 struct BrushSettings {
     BrushMode mode = BrushMode::Refine;
@@ -22,21 +23,26 @@ struct BrushSettings {
     float radius_world = 0.1f;
     // Fraction of the radius, from the rim inwards, over which the target tapers towards "no change".
     float falloff = 0.5f;
+    // Paint only faces facing the camera and connected to the hit through the surface.
+    bool paint_through = false;
 };
 
-// Refine and coarsen swap while Shift is held; set-level is its own inverse.
+// Shift inverts: refine becomes coarsen down to the base level (so it always removes what refining
+// added), coarsen becomes refine to the target; set-level is its own inverse.
 BrushMode effective_mode(BrushMode mode, bool inverted);
-rgb::LodDirection direction_of(BrushMode mode);
+int effective_level(const BrushSettings& settings, bool inverted);
 
-// The target level at distance `d` from the dab centre for a brush of world radius `radius`
-// (negative: leave alone). Refine tapers from the target level at the core to 0 at the rim,
-// coarsen from the target level up to kMaxBrushLevel, and set-level holds the target over the core
-// and leaves the falloff band alone.
-int target_at_distance(BrushMode mode, int target_level, float falloff, double d, double radius);
+// Where the brush touched the displayed surface, mapped to base space: the hit face's corners in
+// base space weighted like the hit point in the displayed triangle, and the world radius scaled by
+// that face's size in base space over its displayed size.
+struct BaseSpaceHit {
+    glm::dvec3 centre{0.0};
+    double radius = 0.0;
+};
+BaseSpaceHit to_base_space(const rgb::Mesh& mesh, rgb::FaceId face, const std::array<glm::dvec3, 3>& displayed,
+                           const glm::dvec3& point, double world_radius);
 
-// One dab: the faces under the brush go to the engine. Returns what the engine did.
-rgb::SetLevelStats apply_dab(rgb::Mesh& mesh, std::span<const rgb::FaceId> footprint, BrushMode mode,
-                             const BrushSettings& settings, const glm::dvec3& centre, double radius);
+rgb::Dab make_dab(const BrushSettings& settings, bool inverted, const BaseSpaceHit& at, const glm::dvec3& view);
 
 // [ and ]: a tenth larger or smaller per press, within sensible limits, in the current unit.
 void grow_radius(BrushSettings& settings, int steps);

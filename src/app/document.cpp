@@ -24,11 +24,10 @@ void Document::adopt(rgb::Mesh mesh, std::string path) {
     dirty_ = false;
 }
 
-rgbio::SaveReport Document::save(const std::string& path, const rgbio::SaveOptions& options) {
-    const rgbio::SaveReport report = rgbio::save_mesh(mesh_, path, options);
+void Document::save(const std::string& path, const rgbio::SaveOptions& options) {
+    rgbio::save_mesh(mesh_, path, options);
     path_ = path;
     dirty_ = false;
-    return report;
 }
 
 void Document::begin_edit(std::string label) { history_.begin_edit(mesh_, std::move(label)); }

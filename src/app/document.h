@@ -28,7 +28,7 @@ public:
     // Adopts `mesh` as an unsaved document named `path` (may be empty).
     void adopt(rgb::Mesh mesh, std::string path);
     // Throws rgbio::SaveError. Clears the unsaved mark and makes `path` the document's file.
-    rgbio::SaveReport save(const std::string& path, const rgbio::SaveOptions& options);
+    void save(const std::string& path, const rgbio::SaveOptions& options);
 
     rgb::Mesh& mesh() { return mesh_; }
     const rgb::Mesh& mesh() const { return mesh_; }

@@ -76,7 +76,7 @@ void Editor::key_pressed(Key key, Modifiers mods) {
         case Key::RightBracket: grow_radius(brush_, 1); break;
         case Key::Digit1: brush_.mode = BrushMode::Refine; break;
         case Key::Digit2: brush_.mode = BrushMode::Coarsen; break;
-        case Key::Digit3: brush_.mode = BrushMode::SetLevel; break;
+        case Key::Digit3: brush_.mode = BrushMode::Set; break;
         case Key::Escape:
             if (pending_ != Pending::None) answer_pending(false);
             else cancel_job();
@@ -147,15 +147,16 @@ void Editor::dab(glm::vec2 px) {
     }
     rgb::Mesh& mesh = document_.mesh();
     const double radius = brush_world_radius(hit->point);
-    const std::vector<rgb::FaceId> footprint =
-        faces_in_sphere(mesh, document_.geometry(), hit->face, hit->point, radius);
+    const auto displayed = document_.geometry().corners(hit->face);
+    const BaseSpaceHit at = to_base_space(mesh, hit->face, displayed, hit->point, radius);
+    const rgb::Dab request = make_dab(brush_, mods_.shift, at, camera_.ray_through(px, viewport_).direction);
     timing_.last_pick_ms = milliseconds_since(pick_start);
 
     const std::array<rgb::VertexId, 3> corners = mesh.face_vertices(hit->face);
     const auto engine_start = std::chrono::steady_clock::now();
-    const rgb::SetLevelStats stats = apply_dab(mesh, footprint, active_mode(), brush_, hit->point, radius);
+    const rgb::RequestStats stats = rgb::apply_dab(mesh, request);
     timing_.last_ms = milliseconds_since(engine_start);
-    timing_.last_footprint = footprint.size();
+    timing_.last_operations = stats.splits + stats.removals;
     ++timing_.dabs;
     stroke_changed_ |= stats.splits + stats.removals > 0;
 
@@ -263,11 +264,8 @@ bool Editor::save() {
 bool Editor::save_as(const std::string& path) {
     if (busy()) return false;
     try {
-        const rgbio::SaveReport saved = document_.save(path, save_options_);
-        std::string note = "saved " + path;
-        if (saved.limit_fallbacks > 0)
-            note += " (" + std::to_string(saved.limit_fallbacks) + " vertices at displayed positions: no limit yet)";
-        report(note, false);
+        document_.save(path, save_options_);
+        report("saved " + path, false);
     } catch (const rgbio::SaveError& error) {
         report(error.what(), true);
         return false;

@@ -31,9 +31,9 @@ namespace app {
 enum class Pending { None, DiscardForQuit, DiscardForOpen, Overwrite };
 
 struct DabTiming {
-    double last_ms = 0.0;       // engine time (set_level_faces) of the most recent dab
-    double last_pick_ms = 0.0;  // picking and footprint of that dab
-    std::size_t last_footprint = 0;
+    double last_ms = 0.0;       // engine time (rgb::apply_dab) of the most recent dab
+    double last_pick_ms = 0.0;  // picking and mapping that dab to base space
+    std::size_t last_operations = 0;  // splits and removals it made
     std::size_t dabs = 0;
 };
 
@@ -68,6 +68,7 @@ public:
     std::optional<SurfaceHit> cursor_hit();
     double brush_world_radius(const glm::dvec3& at) const;
     BrushMode active_mode() const { return effective_mode(brush_.mode, mods_.shift); }
+    int active_level() const { return effective_level(brush_, mods_.shift); }
 
     // ---- whole-mesh actions ----
     void frame_mesh();

@@ -164,7 +164,7 @@ void statistics_panel(Editor& editor, PanelState& state, double dt_s) {
     ImGui::PopTextWrapPos();
     const DabTiming& dab = editor.dab_timing();
     ImGui::Text("last dab: engine %.2f ms, pick %.2f ms", dab.last_ms, dab.last_pick_ms);
-    ImGui::Text("          %zu faces under the brush", dab.last_footprint);
+    ImGui::Text("          %zu splits and removals", dab.last_operations);
     ImGui::Text("frame %.1f ms", state.frame_ms);
 }
 

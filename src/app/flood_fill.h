@@ -1,6 +1,6 @@
 #pragma once
 // "Set all to level N": every face refined or coarsened to level N, as a MeshJob that feeds the
-// engine a batch of face slots per step (set_level_faces spreads to the faces its edits create).
+// engine a batch of base faces per step.
 #include <cstdint>
 
 #include "app/mesh_job.h"
@@ -22,7 +22,7 @@ public:
 private:
     rgb::Mesh& mesh_;
     int level_;
-    std::uint32_t next_slot_ = 0;
+    std::uint32_t next_base_face_ = 0;
     bool changed_ = false;
 };
 

@@ -8,15 +8,10 @@
 
 #include "render/surface_geometry.h"
 #include "rgb/mesh.h"
+#include "rgb/triangle_geometry.h"
 
 namespace app {
 namespace {
-
-std::array<glm::dvec3, 3> corners(const render::SurfaceGeometry& geometry, rgb::FaceId f) {
-    const std::span<const render::SurfaceVertex> v = geometry.vertices();
-    return {glm::dvec3(v[3 * f.idx].position), glm::dvec3(v[3 * f.idx + 1].position),
-            glm::dvec3(v[3 * f.idx + 2].position)};
-}
 
 bool slot_is_live(const render::SurfaceGeometry& geometry, std::uint32_t slot) {
     return (geometry.vertices()[3 * slot].code & render::kCodeLiveBit) != 0;
@@ -41,34 +36,12 @@ std::optional<double> front_hit(const Ray& ray, const std::array<glm::dvec3, 3>&
 }
 
 void consider(const render::SurfaceGeometry& geometry, const Ray& ray, rgb::FaceId f, std::optional<SurfaceHit>& best) {
-    const std::optional<double> distance = front_hit(ray, corners(geometry, f));
+    const std::optional<double> distance = front_hit(ray, geometry.corners(f));
     if (distance && (!best || *distance < best->distance))
         best = SurfaceHit{f, ray.origin + *distance * ray.direction, *distance};
 }
 
 }  // namespace
-
-double distance_to_triangle(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
-    // Closest point by Voronoi regions (Ericson, Real-Time Collision Detection §5.1.5).
-    const glm::dvec3 ab = b - a, ac = c - a, ap = p - a;
-    const double d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
-    if (d1 <= 0.0 && d2 <= 0.0) return glm::distance(p, a);
-    const glm::dvec3 bp = p - b;
-    const double d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
-    if (d3 >= 0.0 && d4 <= d3) return glm::distance(p, b);
-    const double vc = d1 * d4 - d3 * d2;
-    if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return glm::distance(p, a + ab * (d1 / (d1 - d3)));
-    const glm::dvec3 cp = p - c;
-    const double d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
-    if (d6 >= 0.0 && d5 <= d6) return glm::distance(p, c);
-    const double vb = d5 * d2 - d1 * d6;
-    if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return glm::distance(p, a + ac * (d2 / (d2 - d6)));
-    const double va = d3 * d6 - d5 * d4;
-    if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0)
-        return glm::distance(p, b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6))));
-    const double denom = 1.0 / (va + vb + vc);
-    return glm::distance(p, a + ab * (vb * denom) + ac * (vc * denom));
-}
 
 std::optional<SurfaceHit> pick_surface(const render::SurfaceGeometry& geometry, const Ray& ray) {
     std::optional<SurfaceHit> best;
@@ -100,8 +73,8 @@ std::vector<rgb::FaceId> faces_in_sphere(const rgb::Mesh& mesh, const render::Su
             const rgb::FaceId g = rgb::Mesh::face(opposite);
             if (visited_stamp[g.idx] == stamp) continue;
             visited_stamp[g.idx] = stamp;
-            const auto t = corners(geometry, g);
-            if (distance_to_triangle(centre, t[0], t[1], t[2]) <= radius) found.push_back(g);
+            const auto t = geometry.corners(g);
+            if (rgb::distance_to_triangle(centre, t[0], t[1], t[2]) <= radius) found.push_back(g);
         }
     }
     return found;

@@ -40,7 +40,4 @@ std::optional<SurfaceHit> pick_surface_near(const rgb::Mesh& mesh, const render:
 std::vector<rgb::FaceId> faces_in_sphere(const rgb::Mesh& mesh, const render::SurfaceGeometry& geometry,
                                          rgb::FaceId seed, const glm::dvec3& centre, double radius);
 
-// Distance from p to the triangle (a, b, c).
-double distance_to_triangle(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c);
-
 }  // namespace app

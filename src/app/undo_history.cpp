@@ -7,9 +7,8 @@
 namespace app {
 
 std::size_t state_bytes(const rgb::MeshState& state) {
-    return state.vertices.capacity() * sizeof(rgb::VertexState) + state.faces.capacity() * sizeof(rgb::FaceState) +
-           state.base_valence.capacity() * sizeof(std::uint16_t) +
-           (state.free_vertices.capacity() + state.free_faces.capacity()) * sizeof(std::uint32_t);
+    return state.base_positions.capacity() * sizeof(glm::dvec3) + state.base_triangles.capacity() * sizeof(rgb::Triangle) +
+           state.vertices.capacity() * sizeof(rgb::SurfacePoint) + state.faces.capacity() * sizeof(rgb::Triangle);
 }
 
 UndoHistory::Step UndoHistory::make_step(std::string label, rgb::MeshState state) {

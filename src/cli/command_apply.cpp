@@ -1,26 +1,45 @@
 // rgbsub apply IN.obj SCRIPT -o OUT.obj [--timings]: a script of level-of-detail edits, the
 // headless twin of brush strokes.
+#include <algorithm>
 #include <chrono>
 #include <iostream>
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
-#include "cli/lod_script.h"
 #include "cli/mesh_io_support.h"
 #include "cli/progress.h"
+#include "io/lod_script.h"
+#include "io/triangle_limit.h"
+#include "rgb/mesh.h"
 
 namespace cli {
 
+namespace {
+
+double percentile(std::vector<double> values, double p) {
+    if (values.empty()) return 0.0;
+    std::sort(values.begin(), values.end());
+    return values[static_cast<std::size_t>(p * static_cast<double>(values.size() - 1) + 0.5)];
+}
+
+}  // namespace
+
 int run_apply(std::span<const std::string> args) {
     const std::vector<std::string> words = with_long_output_option(args);
-    const Arguments arguments(words, {"--timings", "--normals"}, {"--output", "--positions"});
+    const Arguments arguments(words, {"--timings", "--normals"}, {"--output", "--positions", "--max-triangles"});
     if (arguments.has("--help")) {
         std::cout << "usage: rgbsub apply IN.obj SCRIPT -o OUT.obj [--timings] [--positions display|limit] [--normals]\n"
-                     "Runs SCRIPT, one edit per line, then saves the adaptive mesh:\n"
-                     "  level N sphere X Y Z R   set the level of detail to N inside the sphere\n"
-                     "  level N                  set it everywhere\n"
-                     "  budget TRIANGLES         refine/coarsen towards a triangle count\n"
-                     "Blank lines and lines starting with # are skipped. --timings prints the engine time per line.\n";
+                     "                    [--max-triangles N]\n"
+                     "Runs SCRIPT, one edit per line, then saves the adaptive mesh. Coordinates are those of IN.obj's\n"
+                     "base mesh.\n"
+                     "  level N [sphere X Y Z R]     set the level of detail to N in the sphere (everywhere without one)\n"
+                     "  refine N [sphere X Y Z R]    at least level N there\n"
+                     "  coarsen N [sphere X Y Z R]   at most level N there\n"
+                     "  budget TRIANGLES             refine the longest edges up to a triangle count, or trim to it\n"
+                     "  brush refine|coarsen|set LEVEL RADIUS [FALLOFF]   the brush for the dab lines that follow\n"
+                     "  dab X Y Z [VX VY VZ]         one dab (with a view direction: facing, connected faces only)\n"
+                     "Blank lines and lines starting with # are skipped. --timings prints the engine time per line,\n"
+                     "and for the dabs their count and the engine time per dab (p50, p95).\n";
         return exit_ok;
     }
     if (arguments.positional().size() != 2) throw UsageError("expects IN.obj and SCRIPT");
@@ -29,25 +48,42 @@ int run_apply(std::span<const std::string> args) {
     rgbio::SaveOptions save;
     save.positions = parse_positions(arguments.value("--positions").value_or("display"));
     save.normals = arguments.has("--normals");
+    const auto limit = static_cast<std::size_t>(
+        arguments.integer("--max-triangles", static_cast<long>(rgbio::default_triangle_limit()), 1, 4'000'000'000l));
     const std::string& input = arguments.positional()[0];
     const std::string& script_file = arguments.positional()[1];
 
     return report_io_errors("apply", [&] {
         // The whole script is checked before the (possibly long) load and edits.
-        const std::vector<LodEdit> script = read_lod_script(script_file);
+        const std::vector<rgbio::ScriptLine> script = rgbio::read_lod_script(script_file);
         std::vector<std::string> warnings;
         rgb::Mesh mesh = rgbio::load_mesh(input, &warnings);
         print_warnings("apply", input, warnings);
         Progress progress("applying " + script_file);
+        rgbio::ScriptRunner runner;
+        std::vector<double> dab_ms;
+        rgb::RequestStats dab_stats;
         for (std::size_t i = 0; i < script.size(); ++i) {
-            progress.update(i, script.size(), "(line " + std::to_string(script[i].line) + ")");
+            const rgbio::ScriptLine& line = script[i];
+            progress.update(i, script.size(), "(line " + std::to_string(line.line) + ")");
+            if (const auto* request = std::get_if<rgb::LevelRequest>(&line.edit)) rgbio::check_request_size(mesh, *request, limit);
+            const auto* dab = std::get_if<rgbio::DabEdit>(&line.edit);
+            if (dab) rgbio::check_request_size(mesh, rgb::dab_request(mesh, runner.dab(*dab)), limit);
             const auto start = std::chrono::steady_clock::now();
-            const rgb::SetLevelStats stats = apply_lod_edit(mesh, script[i]);
+            const rgb::RequestStats stats = runner.run(mesh, line);
             const std::chrono::duration<double, std::milli> elapsed = std::chrono::steady_clock::now() - start;
-            if (arguments.has("--timings"))
-                std::cout << script_file << ':' << script[i].line << ": " << script[i].text << ": " << elapsed.count() << " ms, "
+            if (dab) {
+                dab_ms.push_back(elapsed.count());
+                dab_stats += stats;
+            } else if (arguments.has("--timings") && !std::holds_alternative<rgbio::BrushEdit>(line.edit)) {
+                std::cout << script_file << ':' << line.line << ": " << line.text << ": " << elapsed.count() << " ms, "
                           << stats.splits << " splits, " << stats.removals << " removals, " << mesh.num_faces() << " triangles\n";
+            }
         }
+        if (arguments.has("--timings") && !dab_ms.empty())
+            std::cout << script_file << ": " << dab_ms.size() << " dabs: engine per dab p50 " << percentile(dab_ms, 0.5)
+                      << " ms p95 " << percentile(dab_ms, 0.95) << " ms, " << dab_stats.splits << " splits, " << dab_stats.removals
+                      << " removals, " << mesh.num_faces() << " triangles\n";
         rgbio::save_mesh(mesh, *output, save);
         return exit_ok;
     });

@@ -22,10 +22,10 @@ int run_info(std::span<const std::string> args) {
     const std::string& file = arguments.positional()[0];
     return report_io_errors("info", [&] {
         const rgbio::LoadedMesh loaded = rgbio::read_obj_file(file);
-        const rgb::Mesh mesh = rgbio::build_mesh(loaded, file);
+        const rgb::Mesh mesh = rgbio::build_mesh(loaded);
         std::cout << file << ": valid" << (loaded.warnings.empty() ? "" : " after fixes") << '\n';
         for (const std::string& warning : loaded.warnings) std::cout << "warning: " << warning << '\n';
-        std::cout << "adaptive state: " << (loaded.state ? "restored from the file's #rgb lines" : "none (base mesh)") << '\n';
+        std::cout << "adaptive state: " << (loaded.adaptive ? "restored from the file's #rgb lines" : "none (base mesh)") << '\n';
         print_summary(std::cout, summarize(mesh));
         return exit_ok;
     });

@@ -7,15 +7,15 @@
 #include "cli/commands.h"
 #include "cli/mesh_io_support.h"
 #include "cli/progress.h"
-#include "rgb/refine.h"
+#include "io/triangle_limit.h"
+#include "rgb/mesh.h"
+#include "rgb/requests.h"
 
 namespace cli {
 
 namespace {
 
-constexpr long kMaxLevel = 20;
-
-rgb::Region parse_sphere(const std::string& text) {
+rgb::Sphere parse_sphere(const std::string& text) {
     double values[4];
     const char* p = text.data();
     const char* end = text.data() + text.size();
@@ -27,29 +27,33 @@ rgb::Region parse_sphere(const std::string& text) {
         p = next + 1;
     }
     if (values[3] <= 0) throw UsageError("--sphere radius must be positive");
-    return rgb::Region::sphere({values[0], values[1], values[2]}, values[3]);
+    return rgb::Sphere{{values[0], values[1], values[2]}, values[3]};
 }
 
 }  // namespace
 
 int run_refine(std::span<const std::string> args) {
     const std::vector<std::string> words = with_long_output_option(args);
-    const Arguments arguments(words, {"--normals"}, {"--output", "--level", "--sphere", "--positions"});
+    const Arguments arguments(words, {"--normals"}, {"--output", "--level", "--sphere", "--positions", "--max-triangles"});
     if (arguments.has("--help")) {
         std::cout << "usage: rgbsub refine IN.obj -o OUT.obj --level N [--sphere X,Y,Z,R] [--positions display|limit]\n"
-                     "                     [--normals]\n"
-                     "Sets the level of detail to N inside the sphere (everywhere without --sphere): faces below N\n"
-                     "are refined, vertices above N removed where removable. OUT.obj keeps the adaptive state, so\n"
-                     "it can be refined further; '--level 0' on it returns the base mesh. --positions limit writes\n"
-                     "Loop limit positions where the mesh holds a vertex's ring (displayed ones elsewhere).\n";
+                     "                     [--normals] [--max-triangles N]\n"
+                     "Sets the level of detail to N (0.." << rgb::kMaxLevel << ") inside the sphere (everywhere without\n"
+                     "--sphere; its coordinates are those of IN.obj's base mesh): every face meeting it gets level N.\n"
+                     "OUT.obj keeps the adaptive state, so it can be refined further; '--level 0' on it returns the\n"
+                     "base mesh. --positions limit writes Loop limit positions. A request estimated to exceed\n"
+                     "--max-triangles (default: from this machine's memory) is refused before it runs.\n";
         return exit_ok;
     }
     if (arguments.positional().size() != 1) throw UsageError("expects exactly one IN.obj");
     const std::optional<std::string> output = arguments.value("--output");
     if (!output) throw UsageError("needs -o OUT.obj");
     if (!arguments.has("--level")) throw UsageError("needs --level N");
-    const int level = static_cast<int>(arguments.integer("--level", 0, 0, kMaxLevel));
-    const rgb::Region region = arguments.has("--sphere") ? parse_sphere(*arguments.value("--sphere")) : rgb::Region::everywhere();
+    rgb::LevelRequest request;
+    request.level = static_cast<int>(arguments.integer("--level", 0, 0, rgb::kMaxLevel));
+    if (arguments.has("--sphere")) request.sphere = parse_sphere(*arguments.value("--sphere"));
+    const auto limit = static_cast<std::size_t>(
+        arguments.integer("--max-triangles", static_cast<long>(rgbio::default_triangle_limit()), 1, 4'000'000'000l));
     rgbio::SaveOptions save;
     save.positions = parse_positions(arguments.value("--positions").value_or("display"));
     save.normals = arguments.has("--normals");
@@ -59,15 +63,13 @@ int run_refine(std::span<const std::string> args) {
         std::vector<std::string> warnings;
         rgb::Mesh mesh = rgbio::load_mesh(input, &warnings);
         print_warnings("refine", input, warnings);
+        rgbio::check_request_size(mesh, request, limit);
         {
             Progress progress("refining");
-            progress.update(0, 1, "to level " + std::to_string(level));
-            rgb::set_level(mesh, region, level);
+            progress.update(0, 1, "to level " + std::to_string(request.level));
+            rgb::apply_request(mesh, request);
         }
-        const rgbio::SaveReport report = rgbio::save_mesh(mesh, *output, save);
-        if (report.limit_fallbacks > 0)
-            std::cerr << "rgbsub refine: " << report.limit_fallbacks
-                      << " vertices written at their displayed position: their limit needs a ring the mesh does not hold\n";
+        rgbio::save_mesh(mesh, *output, save);
         return exit_ok;
     });
 }

@@ -86,12 +86,6 @@ void apply_mode(const std::string& mode, render::RenderOptions& options) {
     }
 }
 
-std::size_t count_limit_fallbacks(const rgb::Mesh& mesh) {
-    std::size_t fallbacks = 0;
-    for (rgb::VertexId v : mesh.vertices()) fallbacks += !rgb::try_limit_position(mesh, v).has_value();
-    return fallbacks;
-}
-
 }  // namespace
 
 int run_render(std::span<const std::string> args) {
@@ -125,12 +119,6 @@ int run_render(std::span<const std::string> args) {
         return error.problem() == rgbio::ObjProblem::Unreadable ? exit_io_failure : exit_bad_input;
     }
     for (const std::string& warning : warnings) std::cerr << "rgbsub render: " << input << ": " << warning << '\n';
-    if (options.positions == render::PositionSource::Limit) {
-        if (const std::size_t fallbacks = count_limit_fallbacks(mesh); fallbacks > 0)
-            std::cerr << "rgbsub render: --limit: " << fallbacks << " of " << mesh.num_vertices()
-                      << " vertices lack their limit position in this mesh and are drawn where displayed\n";
-    }
-
     render::Image image;
     try {
         image = render::render_headless(mesh, options, view);

@@ -4,6 +4,7 @@
 
 #include "cli/commands.h"
 #include "io/obj_error.h"
+#include "io/triangle_limit.h"
 
 namespace cli {
 
@@ -22,6 +23,9 @@ int report_io_errors(const char* command, const std::function<int()>& body) {
         return error.problem() == rgbio::ObjProblem::Unreadable ? exit_io_failure : exit_bad_input;
     } catch (const rgbio::SaveError& error) {
         std::cerr << "rgbsub " << command << ": " << error.what() << '\n';
+        return exit_io_failure;
+    } catch (const rgbio::TooLarge& error) {
+        std::cerr << "rgbsub " << command << ": refused: " << error.what() << '\n';
         return exit_io_failure;
     }
 }

@@ -13,8 +13,9 @@ namespace cli {
 // args with every "-o" replaced by "--output" (Arguments only knows long options).
 std::vector<std::string> with_long_output_option(std::span<const std::string> args);
 
-// Runs body; an ObjError or SaveError is printed as "rgbsub COMMAND: message" and becomes
-// exit_io_failure (unreadable input, failed save) or exit_bad_input (anything wrong in a file).
+// Runs body; an ObjError, SaveError or TooLarge is printed as "rgbsub COMMAND: message" and becomes
+// exit_io_failure (unreadable input, failed save, a request too large for the machine) or
+// exit_bad_input (anything wrong in a file).
 int report_io_errors(const char* command, const std::function<int()>& body);
 
 void print_warnings(const char* command, const std::string& file, const std::vector<std::string>& warnings);

@@ -1,6 +1,8 @@
 #pragma once
-// The result of reading an OBJ file, before any rgb::Mesh exists: a clean, consistently oriented
-// manifold triangle mesh without unreferenced vertices, plus what was fixed along the way.
+// The result of reading an OBJ file: a clean, consistently oriented manifold triangle mesh without
+// unreferenced vertices, plus what was fixed along the way, and the adaptive mesh when the file holds
+// an rgbsub state that reproduces it exactly.
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -8,7 +10,6 @@
 #include <glm/vec3.hpp>
 
 #include "rgb/mesh.h"
-#include "rgb/state.h"
 
 namespace rgbio {
 
@@ -16,9 +17,10 @@ struct LoadedMesh {
     std::vector<glm::dvec3> positions;
     std::vector<rgb::Triangle> triangles;
     std::vector<std::string> warnings;  // fixes and ignored content, one readable sentence each
-    // Present when the file was saved by rgbsub with its adaptive state: the mesh to restore.
-    // positions/triangles then are the file's plain OBJ content (what other programs see).
-    std::optional<rgb::MeshState> state;
+    // Present when the file was saved by rgbsub with its adaptive state and the state gives back the
+    // file's v and f lines exactly: the adaptive mesh. positions/triangles then are the file's plain
+    // OBJ content (what other programs see).
+    std::shared_ptr<rgb::Mesh> adaptive;
 };
 
 }  // namespace rgbio

@@ -15,19 +15,17 @@ namespace rgbio {
 
 namespace {
 
-std::vector<glm::dvec3> written_positions(const rgb::Mesh& mesh, SavedPositions which, std::vector<std::uint32_t>& obj_index,
-                                          SaveReport& report) {
+glm::dvec3 written_position(const rgb::Mesh& mesh, rgb::VertexId v, SavedPositions which) {
+    return which == SavedPositions::Limit ? rgb::limit_position(mesh, v) : rgb::displayed_position(mesh, v);
+}
+
+std::vector<glm::dvec3> written_positions(const rgb::Mesh& mesh, SavedPositions which, std::vector<std::uint32_t>& obj_index) {
     std::vector<glm::dvec3> positions;
     positions.reserve(mesh.num_vertices());
     obj_index.assign(mesh.vertex_capacity(), UINT32_MAX);
     for (rgb::VertexId v : mesh.vertices()) {
         obj_index[v.idx] = static_cast<std::uint32_t>(positions.size());
-        std::optional<glm::dvec3> limit;
-        if (which == SavedPositions::Limit) {
-            limit = rgb::try_limit_position(mesh, v);
-            if (!limit) ++report.limit_fallbacks;
-        }
-        positions.push_back(limit ? *limit : rgb::displayed_position(mesh, v));
+        positions.push_back(written_position(mesh, v, which));
     }
     return positions;
 }
@@ -46,26 +44,21 @@ std::vector<glm::dvec3> vertex_normals(const std::vector<glm::dvec3>& positions,
 
 }  // namespace
 
-rgb::Mesh build_mesh(const LoadedMesh& loaded, const std::string& file) {
-    try {
-        if (loaded.state) return rgb::restore_state(*loaded.state);
-        return rgb::Mesh(loaded.positions, loaded.triangles);
-    } catch (const std::invalid_argument& e) {
-        // The loader hands only validated meshes to the core, so this is a corrupt saved state.
-        throw ObjError(ObjProblem::BadState, file, 0, std::string("the saved rgbsub state is not a valid RGB mesh: ") + e.what());
-    }
+rgb::Mesh build_mesh(const LoadedMesh& loaded) {
+    if (loaded.adaptive) return *loaded.adaptive;
+    return rgb::Mesh(loaded.positions, loaded.triangles);
 }
 
 rgb::Mesh load_mesh(const std::string& path, std::vector<std::string>* warnings) {
-    const LoadedMesh loaded = read_obj_file(path);
+    LoadedMesh loaded = read_obj_file(path);
     if (warnings) warnings->insert(warnings->end(), loaded.warnings.begin(), loaded.warnings.end());
-    return build_mesh(loaded, path);
+    if (loaded.adaptive) return std::move(*loaded.adaptive);
+    return build_mesh(loaded);
 }
 
-std::string format_obj(const rgb::Mesh& mesh, const SaveOptions& options, SaveReport* report) {
-    SaveReport local;
+std::string format_obj(const rgb::Mesh& mesh, const SaveOptions& options) {
     std::vector<std::uint32_t> obj_index;
-    const std::vector<glm::dvec3> positions = written_positions(mesh, options.positions, obj_index, local);
+    const std::vector<glm::dvec3> positions = written_positions(mesh, options.positions, obj_index);
     std::vector<rgb::Triangle> triangles;
     triangles.reserve(mesh.num_faces());
     for (rgb::FaceId f : mesh.faces()) {
@@ -96,15 +89,12 @@ std::string format_obj(const rgb::Mesh& mesh, const SaveOptions& options, SaveRe
         }
         out += '\n';
     }
-    if (options.state) out += format_state(rgb::capture_state(mesh));
-    if (report) *report = local;
+    if (options.state) out += format_state(rgb::capture_state(mesh), options.positions == SavedPositions::Limit);
     return out;
 }
 
-SaveReport save_mesh(const rgb::Mesh& mesh, const std::string& path, const SaveOptions& options) {
-    SaveReport report;
-    write_file_atomically(path, format_obj(mesh, options, &report));
-    return report;
+void save_mesh(const rgb::Mesh& mesh, const std::string& path, const SaveOptions& options) {
+    write_file_atomically(path, format_obj(mesh, options));
 }
 
 }  // namespace rgbio

@@ -13,16 +13,15 @@
 
 namespace rgbio {
 
-// Builds the mesh a LoadedMesh describes. Throws ObjError(BadState) if a saved state is not a valid
-// RGB mesh; `file` is used in that message.
-rgb::Mesh build_mesh(const LoadedMesh& loaded, const std::string& file);
+// The mesh a LoadedMesh describes: its adaptive mesh if it has one, else the base mesh of its faces.
+rgb::Mesh build_mesh(const LoadedMesh& loaded);
 
 // read_obj_file + build_mesh. Warnings (fixes, ignored content) are appended to *warnings if given.
 rgb::Mesh load_mesh(const std::string& path, std::vector<std::string>* warnings = nullptr);
 
 enum class SavedPositions {
     Displayed,  // what the viewer shows: p^k at each vertex's display level
-    Limit,      // p^inf where the current mesh holds the vertex's ring; otherwise displayed (counted)
+    Limit,      // p^inf, the vertex's point of the Loop limit surface
 };
 
 struct SaveOptions {
@@ -31,16 +30,10 @@ struct SaveOptions {
     bool state = true;         // the #rgb lines that make the file resumable
 };
 
-struct SaveReport {
-    // Vertices written at their displayed position because their limit position is not available
-    // in the current mesh (only with SavedPositions::Limit; computing it would change the topology).
-    std::size_t limit_fallbacks = 0;
-};
-
-// The file content. The mesh is not modified (limit positions may be cached, see try_limit_position).
-std::string format_obj(const rgb::Mesh& mesh, const SaveOptions& options, SaveReport* report = nullptr);
+// The file content. The mesh is not modified (limit positions may be cached, see loop_geometry.h).
+std::string format_obj(const rgb::Mesh& mesh, const SaveOptions& options);
 
 // format_obj written atomically (atomic_file.h). Throws SaveError.
-SaveReport save_mesh(const rgb::Mesh& mesh, const std::string& path, const SaveOptions& options = {});
+void save_mesh(const rgb::Mesh& mesh, const std::string& path, const SaveOptions& options = {});
 
 }  // namespace rgbio

@@ -1,5 +1,6 @@
 #include "io/obj_reader.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 
@@ -11,6 +12,9 @@
 #include "io/obj_error.h"
 #include "io/obj_parser.h"
 #include "io/state_format.h"
+#include "rgb/loop_geometry.h"
+#include "rgb/mesh.h"
+#include "rgb/state.h"
 
 namespace rgbio {
 
@@ -42,22 +46,42 @@ std::string read_text_file(const std::string& path) {
 
 namespace {
 
-// The state's live vertices, in slot order, must be the v lines and its live faces the f lines.
-bool state_matches_body(const rgb::MeshState& state, const ObjRecords& records) {
-    std::vector<std::uint32_t> obj_index(state.vertices.size(), UINT32_MAX);
-    std::uint32_t next = 0;
-    for (std::size_t v = 0; v < state.vertices.size(); ++v)
-        if (state.vertices[v].alive) obj_index[v] = next++;
-    if (next != records.positions.size()) return false;
-    std::size_t polygon = 0;
-    for (const rgb::FaceState& f : state.faces) {
-        if (!f.alive) continue;
-        if (polygon == records.polygons.size() || records.polygons[polygon].vertices.size() != 3) return false;
-        for (int i = 0; i < 3; ++i)
-            if (f.v[i] >= obj_index.size() || obj_index[f.v[i]] != records.polygons[polygon].vertices[i]) return false;
-        ++polygon;
+// The mesh the state describes, if it is the body's own: one address per v line, only triangles, a
+// valid RGB mesh with these faces, and exactly these positions. Otherwise the reason it is not.
+std::shared_ptr<rgb::Mesh> adaptive_mesh(SavedState saved, const ObjRecords& records, std::string& reason) {
+    if (saved.mesh.vertices.size() != records.positions.size()) {
+        reason = "it describes " + std::to_string(saved.mesh.vertices.size()) + " vertices, the file has " +
+                 std::to_string(records.positions.size());
+        return nullptr;
     }
-    return polygon == records.polygons.size();
+    saved.mesh.faces.reserve(records.polygons.size());
+    for (const ObjPolygon& p : records.polygons) {
+        if (p.vertices.size() != 3) {
+            reason = "the file has a face with " + std::to_string(p.vertices.size()) + " vertices (line " + std::to_string(p.line) + ")";
+            return nullptr;
+        }
+        saved.mesh.faces.push_back({p.vertices[0], p.vertices[1], p.vertices[2]});
+    }
+    std::shared_ptr<rgb::Mesh> mesh;
+    try {
+        mesh = std::make_shared<rgb::Mesh>(rgb::restore_state(saved.mesh));
+    } catch (const std::invalid_argument& e) {
+        reason = std::string("it does not fit the file's faces (") + e.what() + ")";
+        return nullptr;
+    }
+    // An edit elsewhere (moved or scaled vertices) must win over the state, not be silently undone.
+    std::size_t differing = 0;
+    std::uint32_t i = 0;
+    for (rgb::VertexId v : mesh->vertices()) {
+        const glm::dvec3 p = saved.limit_positions ? rgb::limit_position(*mesh, v) : rgb::displayed_position(*mesh, v);
+        differing += p != records.positions[i++];
+    }
+    if (differing > 0) {
+        reason = std::to_string(differing) + " of " + std::to_string(records.positions.size()) +
+                 " vertex positions differ from the ones it gives";
+        return nullptr;
+    }
+    return mesh;
 }
 
 }  // namespace
@@ -66,16 +90,22 @@ LoadedMesh read_obj_text(std::string_view text, const std::string& name) {
     const ObjRecords records = parse_obj(text, name);
     std::vector<std::string> warnings;
     if (!records.state.empty()) {
-        rgb::MeshState state = parse_state(records.state, name);
-        if (state_matches_body(state, records)) {
+        std::optional<SavedState> saved = parse_state(records.state, name);
+        std::string reason;
+        if (!saved) {
+            warnings.push_back("ignored " + std::to_string(records.state.size()) +
+                               " comment lines starting with #rgb (the first on line " + std::to_string(records.state.front().line) +
+                               "): they are not an rgbsub state, which starts with '#rgb state'");
+        } else if (std::shared_ptr<rgb::Mesh> mesh = adaptive_mesh(std::move(*saved), records, reason)) {
             LoadedMesh loaded;
             loaded.positions = records.positions;
             for (const ObjPolygon& p : records.polygons) loaded.triangles.push_back({p.vertices[0], p.vertices[1], p.vertices[2]});
-            loaded.state = std::move(state);
+            loaded.adaptive = std::move(mesh);
             return loaded;
+        } else {
+            warnings.push_back("the rgbsub state (#rgb lines) does not match the file, which was probably edited by another "
+                               "program: " + reason + "; it is loaded as a plain mesh");
         }
-        warnings.push_back("the rgbsub state (#rgb lines) does not match the faces, so the file was probably edited by "
-                           "another program; it is loaded as a plain mesh");
     }
     LoadedMesh loaded = validate_mesh(records, name);
     loaded.warnings.insert(loaded.warnings.begin(), warnings.begin(), warnings.end());

@@ -11,26 +11,13 @@ namespace rgbio {
 
 namespace {
 
-constexpr unsigned kFormatVersion = 1;
-constexpr std::size_t kIndicesPerLine = 32;
+constexpr std::size_t kPerLine = 8;
 
 void append_number(std::string& out, std::uint64_t x) {
+    char buffer[24];
+    const auto end = std::to_chars(buffer, buffer + sizeof buffer, x).ptr;
     out += ' ';
-    out += std::to_string(x);
-}
-
-void append_vec(std::string& out, const glm::dvec3& p) {
-    for (int i = 0; i < 3; ++i) append_double(out, p[i]);
-}
-
-template <class T>
-void append_list(std::string& out, const char* name, const std::vector<T>& values) {
-    for (std::size_t i = 0; i < values.size(); i += kIndicesPerLine) {
-        out += "#rgb ";
-        out += name;
-        for (std::size_t k = i; k < std::min(values.size(), i + kIndicesPerLine); ++k) append_number(out, std::uint64_t(values[k]));
-        out += '\n';
-    }
+    out.append(buffer, end);
 }
 
 // Reads the tokens of one "#rgb" line, reporting problems with its line number.
@@ -53,20 +40,20 @@ public:
     template <class T>
     T number(T max = std::numeric_limits<T>::max()) {
         const std::string_view w = word();
+        if (w.empty()) fail("the line ends too early (is the file truncated?)");
         T value{};
         const auto [end, ec] = std::from_chars(w.data(), w.data() + w.size(), value);
-        if (w.empty() || ec != std::errc() || end != w.data() + w.size()) fail("expected a number, found '" + std::string(w.substr(0, 40)) + "'");
+        if constexpr (std::is_floating_point_v<T>) {
+            if (ec == std::errc::result_out_of_range || (ec == std::errc() && std::abs(value) > kMaxCoordinate))
+                fail("coordinate '" + std::string(w.substr(0, 40)) + "' exceeds the supported magnitude 1e12");
+        }
+        if (ec != std::errc() || end != w.data() + w.size()) fail("expected a number, found '" + std::string(w.substr(0, 40)) + "'");
         if constexpr (std::is_floating_point_v<T>) {
             if (!std::isfinite(value)) fail("non-finite value");
         } else if (value > max) {
-            fail("value " + std::string(w) + " is out of range");
+            fail("value " + std::string(w) + " is out of range (at most " + std::to_string(max) + ")");
         }
         return value;
-    }
-    glm::dvec3 vec() {
-        glm::dvec3 p;
-        for (int i = 0; i < 3; ++i) p[i] = number<double>();
-        return p;
     }
     void expect_end() {
         if (!at_end()) fail("unexpected trailing values");
@@ -83,75 +70,103 @@ private:
 
 }  // namespace
 
-std::string format_state(const rgb::MeshState& state) {
+std::string format_state(const rgb::MeshState& state, bool limit_positions) {
+    const std::size_t n0 = state.base_positions.size();
     std::string out = "# rgbsub adaptive state: the #rgb lines restore the exact RGB mesh; other readers ignore them\n";
-    out += "#rgb state";
-    for (std::uint64_t x : {std::uint64_t(kFormatVersion), std::uint64_t(state.vertices.size()), std::uint64_t(state.faces.size()),
-                            std::uint64_t(state.base_valence.size())})
-        append_number(out, x);
-    out += '\n';
-    for (const rgb::VertexState& v : state.vertices) {
-        out += "#rgb v";
-        for (std::uint64_t x : {std::uint64_t(v.alive), std::uint64_t(v.level), std::uint64_t(v.boundary)}) append_number(out, x);
-        append_vec(out, v.insertion_position);
-        if (v.limit) append_vec(out, *v.limit);
+    out += "#rgb state " + std::to_string(kStateFormatVersion) + "\n";
+    out += limit_positions ? "#rgb positions limit\n" : "#rgb positions displayed\n";
+    out += "#rgb section base-vertices " + std::to_string(n0) + "\n";
+    for (const glm::dvec3& p : state.base_positions) {
+        out += "#rgb p";
+        for (int i = 0; i < 3; ++i) append_double(out, p[i]);
         out += '\n';
     }
-    for (const rgb::FaceState& f : state.faces) {
-        out += "#rgb f";
-        for (std::uint64_t x : {std::uint64_t(f.alive), std::uint64_t(f.v[0]), std::uint64_t(f.v[1]), std::uint64_t(f.v[2]),
-                                std::uint64_t(f.type.colour), std::uint64_t(f.type.level), std::uint64_t(f.type.red_edge)})
-            append_number(out, x);
+    out += "#rgb section base-faces " + std::to_string(state.base_triangles.size()) + "\n";
+    for (std::size_t i = 0; i < state.base_triangles.size(); i += kPerLine) {
+        out += "#rgb t";
+        for (std::size_t k = i; k < std::min(state.base_triangles.size(), i + kPerLine); ++k)
+            for (std::uint32_t v : state.base_triangles[k]) append_number(out, v);
         out += '\n';
     }
-    append_list(out, "valence", state.base_valence);
-    append_list(out, "free_vertices", state.free_vertices);
-    append_list(out, "free_faces", state.free_faces);
+    const std::size_t addresses = state.vertices.size() - std::min(n0, state.vertices.size());
+    out += "#rgb section addresses " + std::to_string(addresses) + "\n";
+    for (std::size_t i = n0; i < state.vertices.size(); i += kPerLine) {
+        out += "#rgb a";
+        for (std::size_t k = i; k < std::min(state.vertices.size(), i + kPerLine); ++k) {
+            const rgb::SurfacePoint& p = state.vertices[k];
+            for (std::uint64_t x : {std::uint64_t(p.face), std::uint64_t(p.a[1]), std::uint64_t(p.a[2]), std::uint64_t(p.level)})
+                append_number(out, x);
+        }
+        out += '\n';
+    }
     out += "#rgb end\n";
     return out;
 }
 
-rgb::MeshState parse_state(std::span<const ObjStateLine> lines, const std::string& file) {
-    if (lines.empty()) throw ObjError(ObjProblem::BadState, file, 0, "rgbsub state: no #rgb lines");
+std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const std::string& file) {
+    if (lines.empty()) return std::nullopt;
     StateLineReader header(lines.front(), file);
-    if (header.word() != "state") header.fail("the first #rgb line must be '#rgb state'");
-    if (header.number<unsigned>() != kFormatVersion) header.fail("unsupported state format version (expected 1)");
-    // Slot counts are bounded by the number of lines that describe them, checked below.
-    const std::size_t vertex_slots = header.number<std::size_t>(lines.size());
-    const std::size_t face_slots = header.number<std::size_t>(lines.size());
-    const std::size_t base_vertices = header.number<std::size_t>(vertex_slots);
+    // Another program's comments that happen to start with "#rgb": not a state at all.
+    if (header.word() != "state") return std::nullopt;
+    const unsigned version = header.number<unsigned>();
+    if (version != kStateFormatVersion)
+        header.fail("state format version " + std::to_string(version) + " (this rgbsub reads version " +
+                    std::to_string(kStateFormatVersion) + ")");
     header.expect_end();
 
-    rgb::MeshState state;
-    state.vertices.reserve(vertex_slots);
-    state.faces.reserve(face_slots);
+    SavedState saved;
+    rgb::MeshState& state = saved.mesh;
+    enum class Section { None, BaseVertices, BaseFaces, Addresses } section = Section::None;
+    std::size_t expected[4] = {0, 0, 0, 0};
+    bool seen[4] = {false, false, false, false};
+    std::vector<rgb::SurfacePoint> addresses;
     bool ended = false;
     for (const ObjStateLine& line : lines.subspan(1)) {
         StateLineReader r(line, file);
         if (ended) r.fail("#rgb line after '#rgb end'");
         const std::string_view kind = r.word();
-        if (kind == "v") {
-            if (state.vertices.size() == vertex_slots) r.fail("more vertex slots than the header's " + std::to_string(vertex_slots));
-            rgb::VertexState& v = state.vertices.emplace_back();
-            v.alive = r.number<unsigned>(1) != 0;
-            v.level = static_cast<int>(r.number<unsigned>(std::numeric_limits<std::uint8_t>::max()));
-            v.boundary = r.number<unsigned>(1) != 0;
-            v.insertion_position = r.vec();
-            if (!r.at_end()) v.limit = r.vec();
+        if (kind == "positions") {
+            const std::string_view which = r.word();
+            if (which != "displayed" && which != "limit") r.fail("positions must be 'displayed' or 'limit'");
+            saved.limit_positions = which == "limit";
             r.expect_end();
-        } else if (kind == "f") {
-            if (state.faces.size() == face_slots) r.fail("more face slots than the header's " + std::to_string(face_slots));
-            rgb::FaceState& f = state.faces.emplace_back();
-            f.alive = r.number<unsigned>(1) != 0;
-            for (std::uint32_t& v : f.v) v = r.number<std::uint32_t>();
-            f.type.colour = static_cast<rgb::Colour>(r.number<std::uint8_t>(2));
-            f.type.level = r.number<std::uint8_t>();
-            f.type.red_edge = r.number<std::uint8_t>(2);
+        } else if (kind == "section") {
+            const std::string_view name = r.word();
+            if (name == "base-vertices") section = Section::BaseVertices;
+            else if (name == "base-faces") section = Section::BaseFaces;
+            else if (name == "addresses") section = Section::Addresses;
+            else r.fail("unknown section '" + std::string(name.substr(0, 40)) + "' (written by a newer rgbsub?)");
+            const auto s = static_cast<int>(section);
+            if (seen[s]) r.fail("section '" + std::string(name) + "' appears twice");
+            seen[s] = true;
+            // Counts are bounded by what the lines can hold, so a forged count cannot exhaust memory.
+            expected[s] = r.number<std::size_t>(kPerLine * lines.size());
             r.expect_end();
-        } else if (kind == "valence" || kind == "free_vertices" || kind == "free_faces") {
+        } else if (kind == "p") {
+            if (section != Section::BaseVertices) r.fail("a base vertex outside its section");
+            glm::dvec3 p;
+            for (int i = 0; i < 3; ++i) p[i] = r.number<double>();
+            r.expect_end();
+            state.base_positions.push_back(p);
+        } else if (kind == "t") {
+            if (section != Section::BaseFaces) r.fail("base faces outside their section");
             while (!r.at_end()) {
-                if (kind == "valence") state.base_valence.push_back(r.number<std::uint16_t>());
-                else (kind == "free_vertices" ? state.free_vertices : state.free_faces).push_back(r.number<std::uint32_t>());
+                rgb::Triangle t;
+                for (std::uint32_t& v : t) v = r.number<std::uint32_t>();
+                state.base_triangles.push_back(t);
+            }
+        } else if (kind == "a") {
+            if (section != Section::Addresses) r.fail("addresses outside their section");
+            while (!r.at_end()) {
+                rgb::SurfacePoint p;
+                p.face = r.number<std::uint32_t>();
+                p.a[1] = r.number<std::uint32_t>();
+                p.a[2] = r.number<std::uint32_t>();
+                p.level = static_cast<int>(r.number<unsigned>(30));
+                const std::uint64_t total = std::uint64_t(1) << p.level;
+                if (std::uint64_t(p.a[1]) + p.a[2] > total) r.fail("an address lies outside its base face");
+                p.a[0] = static_cast<std::uint32_t>(total - p.a[1] - p.a[2]);
+                addresses.push_back(p);
             }
         } else if (kind == "end") {
             r.expect_end();
@@ -162,12 +177,24 @@ rgb::MeshState parse_state(std::span<const ObjStateLine> lines, const std::strin
     }
     StateLineReader last(lines.back(), file);
     if (!ended) last.fail("the state is truncated (no '#rgb end')");
-    if (state.vertices.size() != vertex_slots || state.faces.size() != face_slots || state.base_valence.size() != base_vertices)
-        last.fail("the header announces " + std::to_string(vertex_slots) + " vertex slots, " + std::to_string(face_slots) +
-                  " face slots and " + std::to_string(base_vertices) + " base vertices, but the lines hold " +
-                  std::to_string(state.vertices.size()) + ", " + std::to_string(state.faces.size()) + " and " +
-                  std::to_string(state.base_valence.size()));
-    return state;
+    const std::size_t got[4] = {0, state.base_positions.size(), state.base_triangles.size(), addresses.size()};
+    const char* names[4] = {"", "base-vertices", "base-faces", "addresses"};
+    for (int s = 1; s < 4; ++s)
+        if (!seen[s] || got[s] != expected[s])
+            last.fail(std::string("section '") + names[s] + "' " + (seen[s] ? "announces " + std::to_string(expected[s]) +
+                      " entries but holds " + std::to_string(got[s]) : std::string("is missing")));
+    // A base vertex's address is its corner of a base face that uses it.
+    state.vertices.assign(state.base_positions.size(), rgb::SurfacePoint{});
+    std::vector<bool> placed(state.base_positions.size(), false);
+    for (std::uint32_t f = 0; f < state.base_triangles.size(); ++f)
+        for (int c = 0; c < 3; ++c) {
+            const std::uint32_t v = state.base_triangles[f][c];
+            if (v >= placed.size()) last.fail("a base face uses a missing base vertex");
+            if (!placed[v]) state.vertices[v] = rgb::corner_point(f, c);
+            placed[v] = true;
+        }
+    state.vertices.insert(state.vertices.end(), addresses.begin(), addresses.end());
+    return saved;
 }
 
 }  // namespace rgbio

@@ -1,26 +1,41 @@
 #pragma once
-// The adaptive RGB state (rgb::MeshState, slot for slot) as OBJ comment lines starting with "#rgb",
-// which other OBJ readers skip as comments. Doubles are written in shortest round-trip form
-// (std::to_chars) and read with std::from_chars, so every value comes back bit for bit.
+// The adaptive state of a saved mesh as OBJ comment lines starting with "#rgb", which other OBJ
+// readers skip. The OBJ body (v and f lines) is the adaptive mesh itself; the state adds only what
+// the body cannot say: the base mesh it refines and each vertex's address in the hierarchy
+// (rgb::MeshState). Everything else (face colours, Loop positions) follows from those exactly.
+// Doubles are written in shortest round-trip form and read with std::from_chars: bit for bit.
 //
-//   #rgb state 1 VERTEX_SLOTS FACE_SLOTS BASE_VERTICES
-//   #rgb v ALIVE LEVEL BOUNDARY X Y Z [LX LY LZ]        one per vertex slot (insertion position p^l,
-//                                                       then the limit p^inf when known)
-//   #rgb f ALIVE A B C COLOUR LEVEL RED_EDGE            one per face slot (COLOUR 0 green, 1 red, 2 blue)
-//   #rgb valence N...                                   base valences, in order, several per line
-//   #rgb free_vertices N... / #rgb free_faces N...      free lists, in order (may be absent)
+//   #rgb state 2                       format version
+//   #rgb positions displayed|limit     which positions the v lines hold (checked on loading)
+//   #rgb section base-vertices N       then N lines   #rgb p X Y Z
+//   #rgb section base-faces N          then lines     #rgb t A B C [A B C ...]   (0-based)
+//   #rgb section addresses N           then lines     #rgb a FACE A1 A2 LEVEL [...]
+//                                      one address per non-base vertex, in v-line order after the
+//                                      base vertices (which come first, in base order)
 //   #rgb end
+// A later version adds sections; a reader refuses a section it does not know, naming it.
+#include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "io/obj_parser.h"
 #include "rgb/state.h"
 
 namespace rgbio {
 
-std::string format_state(const rgb::MeshState& state);
+inline constexpr unsigned kStateFormatVersion = 2;
 
-// Throws ObjError(BadState) naming the offending line.
-rgb::MeshState parse_state(std::span<const ObjStateLine> lines, const std::string& file);
+struct SavedState {
+    rgb::MeshState mesh;           // faces are not part of the state: the reader takes the f lines
+    bool limit_positions = false;  // the v lines hold limit positions, not displayed ones
+};
+
+std::string format_state(const rgb::MeshState& state, bool limit_positions);
+
+// The #rgb lines of a file, or nothing when they are not an rgbsub state at all (no `#rgb state`
+// header first: some other program's comments). Throws ObjError(BadState) naming the offending line,
+// and for another format version, naming it.
+std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const std::string& file);
 
 }  // namespace rgbio

@@ -73,7 +73,7 @@ void SurfaceGeometry::resize(const rgb::Mesh& mesh) {
 
 void SurfaceGeometry::update_position(const rgb::Mesh& mesh, rgb::VertexId v) {
     const glm::dvec3 p = source_ == PositionSource::Limit
-                             ? rgb::try_limit_position(mesh, v).value_or(rgb::displayed_position(mesh, v))
+                             ? rgb::limit_position(mesh, v)
                              : rgb::displayed_position(mesh, v);
     positions_[v.idx] = glm::vec3(p);
 }

@@ -63,6 +63,11 @@ public:
     std::vector<SlotRange> update(const rgb::Mesh& mesh, const MeshChanges& changes);
 
     std::span<const SurfaceVertex> vertices() const { return vertices_; }
+    // The three positions of face slot f.
+    std::array<glm::dvec3, 3> corners(rgb::FaceId f) const {
+        return {glm::dvec3(vertices_[3 * f.idx].position), glm::dvec3(vertices_[3 * f.idx + 1].position),
+                glm::dvec3(vertices_[3 * f.idx + 2].position)};
+    }
     std::size_t face_slots() const { return vertices_.size() / 3; }
     // Live triangles of each colour and the highest face level present.
     std::size_t triangles_of(rgb::Colour colour) const { return colour_counts_[static_cast<int>(colour)]; }

@@ -1,8 +1,12 @@
 #include "rgb/invariants.h"
 
+#include <algorithm>
+#include <stdexcept>
 #include <string>
 
+#include "rgb/face_location.h"
 #include "rgb/mesh.h"
+#include "rgb/operators.h"
 
 namespace rgb {
 
@@ -26,18 +30,52 @@ std::string face_name(const Mesh& mesh, FaceId f) {
            ", vertices " + std::to_string(v[0].idx) + " " + std::to_string(v[1].idx) + " " + std::to_string(v[2].idx) + ")";
 }
 
+// Every face is a piece of a triangle T of Σl (l its level), and its corners are where its colour says
+// (spec §1.3): a green face is T; a red one has two corners of T and a midpoint of T's edge between
+// them; a blue one has one corner of T and two midpoints. This ties the levels to the geometry.
+void check_hierarchy_place(const Mesh& mesh, FaceId f, Reporter& report) {
+    const std::uint32_t b = base_face_of(mesh, f);
+    const auto parent = parent_triangle(mesh, f, b);
+    const int l = mesh.level(f);
+    int corners_of_parent = 0;
+    for (VertexId v : mesh.face_vertices(f)) {
+        const auto p = in_face(mesh.base(), mesh.address(v), b);
+        if (!p) continue;
+        for (const SurfacePoint& c : parent)
+            if (*p == c) ++corners_of_parent;
+    }
+    const int want = mesh.colour(f) == Colour::Green ? 3 : (mesh.colour(f) == Colour::Red ? 2 : 1);
+    if (corners_of_parent != want)
+        report(face_name(mesh, f) + " does not fit its triangle of level " + std::to_string(l) + ": " +
+               std::to_string(corners_of_parent) + " of its corners are the triangle's, expected " + std::to_string(want));
+}
+
 void check_face(const Mesh& mesh, FaceId f, Reporter& report) {
     const int l = mesh.level(f);
     const FaceType& t = mesh.type(f);
     int high = 0;
+    bool levels_fit = true;
     for (VertexId v : mesh.face_vertices(f)) {
-        if (!mesh.is_live(v)) report(face_name(mesh, f) + " uses dead vertex " + std::to_string(v.idx));
-        if (mesh.level(v) > l + 1) report(face_name(mesh, f) + " has vertex " + std::to_string(v.idx) + " two levels finer");
+        if (!mesh.is_live(v)) {
+            report(face_name(mesh, f) + " uses dead vertex " + std::to_string(v.idx));
+            return;
+        }
+        if (mesh.level(v) > l + 1) {
+            report(face_name(mesh, f) + " has vertex " + std::to_string(v.idx) + " two levels finer");
+            levels_fit = false;
+        }
         high += mesh.level(v) == l + 1;
     }
     const int want_high = t.colour == Colour::Green ? 0 : (t.colour == Colour::Red ? 1 : 2);
     if (high != want_high)
         report(face_name(mesh, f) + " has " + std::to_string(high) + " vertices of level l+1, expected " + std::to_string(want_high));
+    if (levels_fit) {
+        try {
+            check_hierarchy_place(mesh, f, report);
+        } catch (const std::logic_error&) {
+            report(face_name(mesh, f) + " lies in no single base face");
+        }
+    }
     if (t.colour != Colour::Green) {
         if (t.red_edge > 2) report(face_name(mesh, f) + " has red edge index " + std::to_string(t.red_edge));
         const HalfedgeId red = Mesh::halfedge(f, t.red_edge % 3);
@@ -98,6 +136,15 @@ void check_vertex(const Mesh& mesh, VertexId v, Reporter& report, std::size_t& s
 }
 
 }  // namespace
+
+InvariantReport check_normal_form(const Mesh& mesh, std::size_t max_reports) {
+    InvariantReport result;
+    Reporter report(result, max_reports);
+    for (FaceId f : mesh.faces())
+        if (!in_normal_form(mesh, f))
+            report(face_name(mesh, f) + ": in a parent with two split edges, its red edge leaves its top vertex (normal form: enters it)");
+    return result;
+}
 
 InvariantReport check_invariants(const Mesh& mesh, std::size_t max_reports) {
     InvariantReport result;

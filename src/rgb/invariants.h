@@ -12,8 +12,11 @@ struct InvariantReport {
     bool ok() const { return violations.empty(); }
 };
 
-// Edge agreement from both sides, vertex levels per face type, angle sums, manifold adjacency and
-// orientation, no two blues of one level sharing a red edge, counts of live slots.
+// Edge agreement from both sides, vertex levels per face type, each face in its place in the
+// hierarchy (its corners' addresses), angle sums, manifold adjacency and orientation, no two blues of
+// one level sharing a red edge, counts of live slots.
 InvariantReport check_invariants(const Mesh& mesh, std::size_t max_reports = 50);
+// The normal form of spec §3.5 that the requests and remove_vertex keep (single swaps may break it).
+InvariantReport check_normal_form(const Mesh& mesh, std::size_t max_reports = 50);
 
 }  // namespace rgb

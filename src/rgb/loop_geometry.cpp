@@ -2,10 +2,9 @@
 
 #include <algorithm>
 #include <array>
-#include <stdexcept>
-#include <string>
 #include <vector>
 
+#include "rgb/hierarchy_evaluator.h"
 #include "rgb/loop_rules.h"
 #include "rgb/mesh.h"
 #include "rgb/navigation.h"
@@ -14,29 +13,34 @@ namespace rgb {
 
 namespace {
 
-double vertex_gamma(const Mesh& mesh, VertexId v) {
-    return loop_gamma(mesh.uniform_valence(v), mesh.is_boundary(v));
-}
-
-bool lexicographic_less(const glm::dvec3& a, const glm::dvec3& b) {
-    if (a.x != b.x) return a.x < b.x;
-    if (a.y != b.y) return a.y < b.y;
-    return a.z < b.z;
+// The limit from v's ring in the current mesh, if the mesh holds that ring.
+std::optional<glm::dvec3> limit_from_ring(const Mesh& mesh, VertexId v) {
+    const std::vector<VertexId> ring = uniform_ring(mesh, v);
+    if (ring.empty()) return std::nullopt;
+    const int l = mesh.level(v);
+    const glm::dvec3& centre = mesh.insertion_position(v);
+    if (mesh.is_boundary(v)) return boundary_limit(centre, control_point(mesh, ring[0], l), control_point(mesh, ring[1], l));
+    std::vector<glm::dvec3> points;
+    points.reserve(ring.size());
+    for (VertexId w : ring) points.push_back(control_point(mesh, w, l));
+    return interior_limit(centre, points);
 }
 
 }  // namespace
 
+glm::dvec3 limit_position(const Mesh& mesh, VertexId v) {
+    if (auto known = mesh.cached_limit(v)) return *known;
+    std::optional<glm::dvec3> limit = limit_from_ring(mesh, v);
+    if (!limit) limit = HierarchyEvaluator(mesh.base()).limit_position(mesh.address(v));
+    mesh.cache_limit(v, *limit);
+    return *limit;
+}
+
 glm::dvec3 control_point(const Mesh& mesh, VertexId v, int k) {
     const int l = mesh.level(v);
     if (k <= l) return mesh.insertion_position(v);
-    const auto limit = mesh.limit_position(v);
-    if (!limit)
-        throw std::logic_error("control point of vertex " + std::to_string(v.idx) + " at level " + std::to_string(k) +
-                               " needs its limit position, which is not known");
-    const double gamma = vertex_gamma(mesh, v);
-    double g = 1.0;
-    for (int j = l; j < k; ++j) g *= gamma;
-    return g * mesh.insertion_position(v) + (1.0 - g) * *limit;
+    return closed_form(mesh.insertion_position(v), limit_position(mesh, v),
+                       loop_gamma(mesh.uniform_valence(v), mesh.is_boundary(v)), k - l);
 }
 
 int display_level(const Mesh& mesh, VertexId v) {
@@ -50,39 +54,6 @@ int display_level(const Mesh& mesh, VertexId v) {
     return std::max(mesh.level(v), lowest);
 }
 
-glm::dvec3 displayed_position(const Mesh& mesh, VertexId v) {
-    const int k = display_level(mesh, v);
-    if (k > mesh.level(v)) try_limit_position(mesh, v);
-    return control_point(mesh, v, k);
-}
-
-std::optional<glm::dvec3> try_limit_position(const Mesh& mesh, VertexId v) {
-    if (auto known = mesh.limit_position(v)) return known;
-    const std::vector<VertexId> ring = uniform_ring(mesh, v);
-    if (ring.empty()) return std::nullopt;
-    const int l = mesh.level(v);
-    for (VertexId w : ring)
-        if (mesh.level(w) < l && !try_limit_position(mesh, w)) return std::nullopt;
-
-    const glm::dvec3 centre = mesh.insertion_position(v);
-    glm::dvec3 limit;
-    if (mesh.is_boundary(v)) {
-        limit = (2.0 / 3.0) * centre + (1.0 / 6.0) * (control_point(mesh, ring[0], l) + control_point(mesh, ring[1], l));
-    } else {
-        // Summed in a canonical order so the result is bit-identical whatever order the mesh was
-        // built in (the ring is found starting from an arbitrary edge).
-        std::vector<glm::dvec3> points;
-        points.reserve(ring.size());
-        for (VertexId w : ring) points.push_back(control_point(mesh, w, l));
-        std::sort(points.begin(), points.end(), lexicographic_less);
-        glm::dvec3 sum(0.0);
-        for (const glm::dvec3& p : points) sum += p;
-        const int n = static_cast<int>(ring.size());
-        const double c = loop_limit_ring_weight(n);
-        limit = (1.0 - c) * centre + (c / n) * sum;
-    }
-    mesh.set_limit_position(v, limit);
-    return limit;
-}
+glm::dvec3 displayed_position(const Mesh& mesh, VertexId v) { return control_point(mesh, v, display_level(mesh, v)); }
 
 }  // namespace rgb

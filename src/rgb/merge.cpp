@@ -150,7 +150,9 @@ std::optional<MergeKind> merge_kind(const Mesh& mesh, VertexId v) {
 
 bool can_merge_vertex(const Mesh& mesh, VertexId v) { return merge_kind(mesh, v).has_value(); }
 
-void merge_vertex(Mesh& mesh, VertexId v) {
+namespace {
+
+FaceList merge_star(Mesh& mesh, VertexId v) {
     const auto star = analyse(mesh, v);
     if (!star || !mergeable(*star)) throw std::logic_error("merge_vertex: the star of the vertex is not mergeable");
     const int L = mesh.level(v);
@@ -177,8 +179,25 @@ void merge_vertex(Mesh& mesh, VertexId v) {
         new_faces.push_back({{p, x, other}, type});
     }
     const std::array<VertexId, 1> removed{v};
-    mesh.replace_faces(old_faces, new_faces, removed);
+    return mesh.replace_faces(old_faces, new_faces, removed);
 }
+
+// The red triangle across f's red edge from a blue, and whether f's red edge leaves its top vertex
+// (the diagonal the normal form does not use).
+bool breaks_normal_form(const Mesh& mesh, FaceId f) {
+    if (mesh.colour(f) != Colour::Red) return false;
+    const FaceType t = mesh.type(f);
+    const HalfedgeId red = Mesh::halfedge(f, t.red_edge);
+    const HalfedgeId across = mesh.opposite(red);
+    if (!across.valid() || mesh.colour(Mesh::face(across)) != Colour::Blue) return false;
+    return mesh.level(mesh.from_vertex(red)) > t.level;
+}
+
+}  // namespace
+
+void merge_vertex(Mesh& mesh, VertexId v) { merge_star(mesh, v); }
+
+bool in_normal_form(const Mesh& mesh, FaceId f) { return !breaks_normal_form(mesh, f); }
 
 bool can_remove_vertex(const Mesh& mesh, VertexId v) { return mesh.is_live(v) && analyse(mesh, v).has_value(); }
 
@@ -194,7 +213,10 @@ void remove_vertex(Mesh& mesh, VertexId v) {
         star = analyse(mesh, v);
         if (!star) throw std::logic_error("remove_vertex: a normalising swap broke the star");
     }
-    merge_vertex(mesh, v);
+    // A parent that had all three edges split keeps two: the GG-swap's choice of diagonal may not be
+    // the normal form's (spec §3.5), in which case one RB-swap corrects it.
+    for (FaceId f : merge_star(mesh, v))
+        if (mesh.is_live(f) && breaks_normal_form(mesh, f)) rb_swap(mesh, Mesh::halfedge(f, mesh.type(f).red_edge));
 }
 
 }  // namespace rgb

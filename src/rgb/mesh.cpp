@@ -2,75 +2,102 @@
 
 #include <algorithm>
 #include <bit>
-#include <map>
 #include <stdexcept>
 #include <string>
 
-#include "rgb/loop_geometry.h"
-
 namespace rgb {
 
-Mesh::Mesh(std::span<const glm::dvec3> positions, std::span<const Triangle> triangles) {
-    const auto nv = static_cast<std::uint32_t>(positions.size());
-    if (nv > 0xffffu * 0x10000u) throw std::invalid_argument("too many vertices");
-    insertion_position_.assign(positions.begin(), positions.end());
-    vertex_halfedge_.assign(nv, HalfedgeId());
-    vertex_level_.assign(nv, 0);
-    vertex_boundary_.assign(nv, 0);
-    vertex_alive_.assign(nv, 1);
-    limit_slot_.assign(nv, kNoLimit);
-    vertex_count_ = nv;
+Mesh::Mesh() : Mesh(std::make_shared<const BaseMesh>(std::span<const glm::dvec3>(), std::span<const Triangle>())) {}
 
-    const auto nf = triangles.size();
-    face_vertices_.resize(nf);
-    face_type_.assign(nf, FaceType{});
-    opposite_.assign(3 * nf, HalfedgeId());
-    face_alive_.assign(nf, 1);
-    face_count_ = nf;
+Mesh::Mesh(std::span<const glm::dvec3> positions, std::span<const Triangle> triangles)
+    : Mesh(std::make_shared<const BaseMesh>(positions, triangles)) {}
 
-    // Directed edge -> halfedge, to pair opposites and reject non-manifold or inconsistent input.
-    std::map<std::pair<std::uint32_t, std::uint32_t>, HalfedgeId> directed;
-    std::vector<int> incident(nv, 0);
-    for (std::size_t f = 0; f < nf; ++f) {
-        const Triangle& t = triangles[f];
-        for (int i = 0; i < 3; ++i) {
-            if (t[i] >= nv) throw std::invalid_argument("triangle " + std::to_string(f) + " uses missing vertex " + std::to_string(t[i]));
-            face_vertices_[f][i] = VertexId(t[i]);
-            ++incident[t[i]];
-        }
-        if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0])
-            throw std::invalid_argument("triangle " + std::to_string(f) + " repeats a vertex");
-        for (int i = 0; i < 3; ++i) {
-            const HalfedgeId h = halfedge(FaceId(static_cast<std::uint32_t>(f)), i);
-            auto [it, inserted] = directed.emplace(std::make_pair(t[i], t[(i + 1) % 3]), h);
-            if (!inserted)
-                throw std::invalid_argument("edge " + std::to_string(t[i]) + "-" + std::to_string(t[(i + 1) % 3]) +
-                                            " is used twice in the same direction (non-manifold or inconsistent orientation)");
-        }
-    }
-    for (const auto& [key, h] : directed) {
-        auto it = directed.find({key.second, key.first});
-        if (it != directed.end()) opposite_[h.idx] = it->second;
-    }
-    for (const auto& [key, h] : directed) {
-        const VertexId v(key.first);
-        if (!vertex_halfedge_[v.idx].valid()) update_vertex_halfedge(v, h);
-    }
-    base_valence_.assign(nv, 0);
+Mesh::Mesh(std::shared_ptr<const BaseMesh> base) : base_(std::move(base)) { init_base_state(); }
+
+Mesh::Mesh(const Mesh& other) { *this = other; }
+
+Mesh::Mesh(Mesh&& other) noexcept { *this = std::move(other); }
+
+Mesh& Mesh::operator=(const Mesh& other) {
+    if (this == &other) return *this;
+    auto observers = std::move(observers_);
+    base_ = other.base_;
+    face_vertices_ = other.face_vertices_;
+    opposite_ = other.opposite_;
+    face_code_ = other.face_code_;
+    free_faces_ = other.free_faces_;
+    face_count_ = other.face_count_;
+    insertion_position_ = other.insertion_position_;
+    vertex_halfedge_ = other.vertex_halfedge_;
+    vertex_info_ = other.vertex_info_;
+    address_ = other.address_;
+    free_vertices_ = other.free_vertices_;
+    vertex_count_ = other.vertex_count_;
+    limits_ = other.limits_;
+    observers_ = std::move(observers);
+    return *this;
+}
+
+Mesh& Mesh::operator=(Mesh&& other) noexcept {
+    if (this == &other) return *this;
+    auto observers = std::move(observers_);
+    base_ = std::move(other.base_);
+    face_vertices_ = std::move(other.face_vertices_);
+    opposite_ = std::move(other.opposite_);
+    face_code_ = std::move(other.face_code_);
+    free_faces_ = std::move(other.free_faces_);
+    face_count_ = other.face_count_;
+    insertion_position_ = std::move(other.insertion_position_);
+    vertex_halfedge_ = std::move(other.vertex_halfedge_);
+    vertex_info_ = std::move(other.vertex_info_);
+    address_ = std::move(other.address_);
+    free_vertices_ = std::move(other.free_vertices_);
+    vertex_count_ = other.vertex_count_;
+    limits_ = std::move(other.limits_);
+    observers_ = std::move(observers);
+    return *this;
+}
+
+void Mesh::init_base_state() {
+    const BaseMesh& b = *base_;
+    const auto nv = static_cast<std::uint32_t>(b.num_vertices());
+    insertion_position_.assign(b.positions().begin(), b.positions().end());
+    vertex_info_.resize(nv);
+    address_.resize(nv);
+    vertex_halfedge_.resize(nv);
     for (std::uint32_t v = 0; v < nv; ++v) {
-        if (!vertex_halfedge_[v].valid()) throw std::invalid_argument("vertex " + std::to_string(v) + " is used by no triangle");
-        // A vertex whose star does not close up or reach every incident face is non-manifold.
-        int fan = 0;
-        HalfedgeId h = vertex_halfedge_[v];
-        do {
-            ++fan;
-            h = ccw_rotated(h);
-        } while (h.valid() && h != vertex_halfedge_[v]);
-        if (fan != incident[v]) throw std::invalid_argument("vertex " + std::to_string(v) + " is non-manifold (bow-tie)");
-        vertex_boundary_[v] = is_boundary(vertex_halfedge_[v]) ? 1 : 0;
-        base_valence_[v] = static_cast<std::uint16_t>(valence(VertexId(v)));
+        vertex_info_[v] = b.is_boundary_vertex(v) ? kBoundaryBit : 0;
+        const std::uint32_t h = b.vertex_halfedge(v);
+        vertex_halfedge_[v] = HalfedgeId(h);
+        const SurfacePoint p = corner_point(h / 3, static_cast<int>(h % 3));
+        address_[v] = {p.face, p.a[1], p.a[2]};
     }
-    for (std::uint32_t v = 0; v < nv; ++v) try_limit_position(*this, VertexId(v));
+    vertex_count_ = nv;
+    const std::size_t nf = b.num_faces();
+    face_vertices_.resize(nf);
+    opposite_.resize(3 * nf);
+    face_code_.assign(nf, pack(FaceType{}));
+    for (std::uint32_t f = 0; f < nf; ++f) {
+        for (int i = 0; i < 3; ++i) face_vertices_[f][i] = VertexId(b.face(f)[i]);
+        for (std::uint32_t i = 0; i < 3; ++i) {
+            const std::uint32_t o = b.opposite(3 * f + i);
+            opposite_[3 * f + i] = o == BaseMesh::kNone ? HalfedgeId() : HalfedgeId(o);
+        }
+    }
+    face_count_ = nf;
+}
+
+std::uint8_t Mesh::pack(const FaceType& t) {
+    const int kind = t.colour == Colour::Green ? 0 : (t.colour == Colour::Red ? 1 : 4) + t.red_edge;
+    return static_cast<std::uint8_t>(kind | (t.level << 3));
+}
+
+FaceType Mesh::unpack(std::uint8_t code) {
+    const int kind = code & 7;
+    const auto level = static_cast<std::uint8_t>(code >> 3);
+    if (kind == 0) return {Colour::Green, level, 0};
+    if (kind <= 3) return {Colour::Red, level, static_cast<std::uint8_t>(kind - 1)};
+    return {Colour::Blue, level, static_cast<std::uint8_t>(kind - 4)};
 }
 
 int Mesh::max_vertex_level() const {
@@ -80,6 +107,7 @@ int Mesh::max_vertex_level() const {
 }
 
 HalfedgeId Mesh::find_halfedge(VertexId a, VertexId b) const {
+    if (!is_live(a) || !is_live(b)) return HalfedgeId();
     const HalfedgeId start = vertex_halfedge_[a.idx];
     HalfedgeId h = start;
     do {
@@ -102,8 +130,7 @@ int Mesh::corner_of(FaceId f, VertexId v) const {
 }
 
 EdgeType Mesh::edge_type(HalfedgeId h) const {
-    const FaceId f = face(h);
-    const FaceType& t = face_type_[f.idx];
+    const FaceType t = type(face(h));
     const int i = corner(h);
     if (t.colour == Colour::Green) return {Colour::Green, t.level};
     if (i == t.red_edge) return {Colour::Red, t.level};
@@ -114,7 +141,7 @@ EdgeType Mesh::edge_type(HalfedgeId h) const {
 }
 
 int Mesh::angle(FaceId f, int c) const {
-    const FaceType& t = face_type_[f.idx];
+    const FaceType t = type(f);
     if (t.colour == Colour::Green) return 2;
     const bool on_red = c == t.red_edge || c == (t.red_edge + 1) % 3;
     const bool high = level(face_vertices_[f.idx][c]) > t.level;
@@ -122,14 +149,17 @@ int Mesh::angle(FaceId f, int c) const {
     return (!on_red && high) ? 4 : 1;
 }
 
-std::optional<glm::dvec3> Mesh::limit_position(VertexId v) const {
-    const std::uint32_t s = limit_slot_[v.idx];
-    if (s == kNoLimit) return std::nullopt;
-    return limit_pool_[s];
+SurfacePoint Mesh::address(VertexId v) const {
+    const PackedAddress& p = address_[v.idx];
+    SurfacePoint s;
+    s.face = p.face;
+    s.level = level(v);
+    s.a = {(std::uint32_t(1) << s.level) - p.a1 - p.a2, p.a1, p.a2};
+    return s;
 }
 
 int Mesh::uniform_valence(VertexId v) const {
-    if (v.idx < base_valence_.size()) return base_valence_[v.idx];
+    if (is_base_vertex(v)) return base_->valence(v.idx);
     return is_boundary(v) ? 4 : 6;
 }
 
@@ -146,15 +176,12 @@ int Mesh::valence(VertexId v) const {
 
 void Mesh::reserve(std::size_t faces, std::size_t vertices) {
     face_vertices_.reserve(faces);
-    face_type_.reserve(faces);
+    face_code_.reserve(faces);
     opposite_.reserve(3 * faces);
-    face_alive_.reserve(faces);
     insertion_position_.reserve(vertices);
     vertex_halfedge_.reserve(vertices);
-    vertex_level_.reserve(vertices);
-    vertex_boundary_.reserve(vertices);
-    vertex_alive_.reserve(vertices);
-    limit_slot_.reserve(vertices);
+    vertex_info_.reserve(vertices);
+    address_.reserve(vertices);
 }
 
 void Mesh::add_observer(MeshObserver* o) { observers_.push_back(o); }
@@ -171,65 +198,56 @@ std::uint32_t take_slot(std::vector<std::uint32_t>& free_slots, std::size_t size
 }
 }  // namespace
 
-VertexId Mesh::add_vertex(int lvl, const glm::dvec3& p, bool boundary, VertexId a, VertexId b) {
-    const VertexId v(take_slot(free_vertices_, vertex_alive_.size()));
-    if (v.idx == vertex_alive_.size()) {
+VertexId Mesh::next_vertex_slot() const {
+    return VertexId(free_vertices_.empty() ? static_cast<std::uint32_t>(vertex_info_.size()) : free_vertices_.back());
+}
+
+VertexId Mesh::allocate_vertex(const NewVertex& added) {
+    if (added.level > kMaxLevel)
+        throw std::length_error("vertex level " + std::to_string(added.level) + " is beyond the supported maximum " +
+                                std::to_string(kMaxLevel));
+    // Stored in the canonical of its addresses, so equal points have equal records whatever history made them.
+    const SurfacePoint m = canonical(*base_, midpoint(*base_, address(added.a), address(added.b)));
+    const VertexId v(take_slot(free_vertices_, vertex_info_.size()));
+    if (v.idx == vertex_info_.size()) {
         insertion_position_.emplace_back();
         vertex_halfedge_.emplace_back();
-        vertex_level_.push_back(0);
-        vertex_boundary_.push_back(0);
-        vertex_alive_.push_back(0);
-        limit_slot_.push_back(kNoLimit);
+        vertex_info_.push_back(kDead);
+        address_.emplace_back();
     }
-    insertion_position_[v.idx] = p;
+    insertion_position_[v.idx] = added.insertion_position;
     vertex_halfedge_[v.idx] = HalfedgeId();
-    vertex_level_[v.idx] = static_cast<std::uint8_t>(lvl);
-    vertex_boundary_[v.idx] = boundary ? 1 : 0;
-    vertex_alive_[v.idx] = 1;
-    limit_slot_[v.idx] = kNoLimit;
+    vertex_info_[v.idx] = static_cast<std::uint8_t>(added.level | (added.boundary ? kBoundaryBit : 0));
+    address_[v.idx] = {m.face, m.a[1], m.a[2]};
     ++vertex_count_;
-    for (MeshObserver* o : observers_) o->vertex_added(*this, v, a, b);
     return v;
 }
 
-void Mesh::set_limit_position(VertexId v, const glm::dvec3& p) const {
-    if (limit_slot_[v.idx] != kNoLimit) return;
-    const std::uint32_t s = take_slot(free_limit_slots_, limit_pool_.size());
-    if (s == limit_pool_.size()) limit_pool_.push_back(p);
-    else limit_pool_[s] = p;
-    limit_slot_[v.idx] = s;
-}
-
 FaceId Mesh::allocate_face() {
-    const FaceId f(take_slot(free_faces_, face_alive_.size()));
-    if (f.idx == face_alive_.size()) {
+    const FaceId f(take_slot(free_faces_, face_code_.size()));
+    if (f.idx == face_code_.size()) {
         face_vertices_.emplace_back();
-        face_type_.emplace_back();
-        face_alive_.push_back(0);
+        face_code_.push_back(kDead);
         for (int i = 0; i < 3; ++i) opposite_.emplace_back();
     }
-    face_alive_[f.idx] = 1;
     ++face_count_;
     return f;
 }
 
 void Mesh::release_face(FaceId f) {
-    face_alive_[f.idx] = 0;
+    face_code_[f.idx] = kDead;
     for (int i = 0; i < 3; ++i) opposite_[3 * f.idx + i] = HalfedgeId();
     free_faces_.push_back(f.idx);
     --face_count_;
 }
 
 void Mesh::release_vertex(VertexId v) {
-    vertex_alive_[v.idx] = 0;
-    if (limit_slot_[v.idx] != kNoLimit) free_limit_slots_.push_back(limit_slot_[v.idx]);
-    limit_slot_[v.idx] = kNoLimit;
+    vertex_info_[v.idx] = kDead;
+    limits_.erase(v.idx);
     vertex_halfedge_[v.idx] = HalfedgeId();
     free_vertices_.push_back(v.idx);
     --vertex_count_;
 }
-
-void Mesh::update_vertex_halfedge(VertexId v, HalfedgeId h) { vertex_halfedge_[v.idx] = boundary_outgoing(h); }
 
 HalfedgeId Mesh::boundary_outgoing(HalfedgeId h) const {
     // Turn clockwise to the boundary, if there is one, so that ccw turns from it see the whole star.
@@ -239,15 +257,15 @@ HalfedgeId Mesh::boundary_outgoing(HalfedgeId h) const {
 }
 
 bool Mesh::reusable_vertex_halfedge(VertexId v, HalfedgeId h) const {
-    return face_alive_[h.idx / 3] && from_vertex(h) == v && (!vertex_boundary_[v.idx] || is_boundary(h));
+    return face_code_[h.idx / 3] != kDead && from_vertex(h) == v && (!is_boundary(v) || is_boundary(h));
 }
 
 void Mesh::set_vertex_halfedge(VertexId v, HalfedgeId outgoing) {
-    vertex_halfedge_[v.idx] = vertex_boundary_[v.idx] ? boundary_outgoing(outgoing) : outgoing;
+    vertex_halfedge_[v.idx] = is_boundary(v) ? boundary_outgoing(outgoing) : outgoing;
 }
 
 FaceList Mesh::replace_faces(std::span<const FaceId> old_faces, std::span<const NewFace> new_faces,
-                             std::span<const VertexId> removed_vertices) {
+                             std::span<const VertexId> removed_vertices, const NewVertex* added) {
     // Halfedges are matched by their directed vertex pair packed into one integer.
     auto key = [](VertexId a, VertexId b) { return (std::uint64_t(a.idx) << 32) | b.idx; };
     // Outside halfedges that face the region, keyed by the directed edge as seen from inside.
@@ -283,12 +301,15 @@ FaceList Mesh::replace_faces(std::span<const FaceId> old_faces, std::span<const 
     }
     for (FaceId f : old_faces)
         for (MeshObserver* o : observers_) o->face_removed(*this, f);
+    for (VertexId v : removed_vertices)
+        for (MeshObserver* o : observers_) o->vertex_removed(*this, v);
     // Released last to first, so that the free list hands the slots back first to first: the first
     // new faces take the old faces' slots in order, keeping the region together in memory.
     for (auto it = old_faces.rbegin(); it != old_faces.rend(); ++it) release_face(*it);
-    for (VertexId v : removed_vertices) {
-        for (MeshObserver* o : observers_) o->vertex_removed(*this, v);
-        release_vertex(v);
+    for (VertexId v : removed_vertices) release_vertex(v);
+    if (added) {
+        const VertexId v = allocate_vertex(*added);
+        for (MeshObserver* o : observers_) o->vertex_added(*this, v, added->a, added->b);
     }
 
     FaceList created;
@@ -298,7 +319,7 @@ FaceList Mesh::replace_faces(std::span<const FaceId> old_faces, std::span<const 
         const NewFace& nf = new_faces[k];
         const FaceId f = allocate_face();
         face_vertices_[f.idx] = nf.v;
-        face_type_[f.idx] = nf.type;
+        face_code_[f.idx] = pack(nf.type);
         created.push_back(f);
         for (int i = 0; i < 3; ++i) {
             new_keys[3 * k + i] = key(nf.v[i], nf.v[(i + 1) % 3]);
@@ -347,10 +368,9 @@ FaceList Mesh::replace_faces(std::span<const FaceId> old_faces, std::span<const 
 
 std::size_t Mesh::memory_bytes() const {
     auto bytes = [](const auto& vec) { return vec.size() * sizeof(vec[0]); };
-    return bytes(face_vertices_) + bytes(face_type_) + bytes(opposite_) + bytes(face_alive_) + bytes(free_faces_) +
-           bytes(insertion_position_) + bytes(vertex_halfedge_) + bytes(vertex_level_) + bytes(vertex_boundary_) +
-           bytes(vertex_alive_) + bytes(limit_slot_) + bytes(free_vertices_) + bytes(limit_pool_) +
-           bytes(free_limit_slots_) + bytes(base_valence_);
+    return bytes(face_vertices_) + bytes(face_code_) + bytes(opposite_) + bytes(free_faces_) + bytes(insertion_position_) +
+           bytes(vertex_halfedge_) + bytes(vertex_info_) + bytes(free_vertices_) + limits_.memory_bytes() +
+           base_->memory_bytes();
 }
 
 }  // namespace rgb

@@ -1,7 +1,8 @@
 #pragma once
 // The adaptive RGB mesh: a triangle mesh in flat arrays (faces, one opposite halfedge per face
 // corner, per-vertex attributes) with the colour/level codes of RGB subdivision and the per-vertex
-// Loop data of spec §4.3. There is no hierarchy: everything about coarser levels is derived.
+// Loop data of spec §4.3, over an immutable base mesh (base_mesh.h). There is no hierarchy: what the
+// coarser levels hold is derived, from the codes or from each vertex's address in the hierarchy.
 //
 // Halfedge 3f+i goes from corner i to corner i+1 of face f. Only opposites are stored. Each vertex
 // keeps one outgoing halfedge; for a boundary vertex it is the one without an opposite, so that
@@ -11,42 +12,48 @@
 // and Loop geometry (loop_geometry.h) are free functions on top of it.
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
+#include "rgb/base_mesh.h"
 #include "rgb/face_type.h"
 #include "rgb/handles.h"
 #include "rgb/inline_vector.h"
+#include "rgb/limit_cache.h"
 #include "rgb/observer.h"
+#include "rgb/surface_point.h"
 
 namespace rgb {
 
-using Triangle = std::array<std::uint32_t, 3>;
+// The finest level a request may ask for (levels are stored in five bits, addresses in 32).
+inline constexpr int kMaxLevel = 20;
 
 // Live-slot ranges: iterate with `for (FaceId f : mesh.faces())`.
 template <class Id>
 class LiveRange {
 public:
+    static constexpr std::uint8_t kDead = 0xff;
     class iterator {
     public:
-        iterator(const std::vector<std::uint8_t>* alive, std::uint32_t i) : alive_(alive), i_(i) { skip(); }
+        iterator(const std::vector<std::uint8_t>* codes, std::uint32_t i) : codes_(codes), i_(i) { skip(); }
         Id operator*() const { return Id(i_); }
         iterator& operator++() { ++i_; skip(); return *this; }
         bool operator!=(const iterator& o) const { return i_ != o.i_; }
         bool operator==(const iterator& o) const { return i_ == o.i_; }
     private:
-        void skip() { while (i_ < alive_->size() && !(*alive_)[i_]) ++i_; }
-        const std::vector<std::uint8_t>* alive_;
+        void skip() { while (i_ < codes_->size() && (*codes_)[i_] == kDead) ++i_; }
+        const std::vector<std::uint8_t>* codes_;
         std::uint32_t i_;
     };
-    explicit LiveRange(const std::vector<std::uint8_t>& alive) : alive_(&alive) {}
-    iterator begin() const { return iterator(alive_, 0); }
-    iterator end() const { return iterator(alive_, static_cast<std::uint32_t>(alive_->size())); }
+    explicit LiveRange(const std::vector<std::uint8_t>& codes) : codes_(&codes) {}
+    iterator begin() const { return iterator(codes_, 0); }
+    iterator end() const { return iterator(codes_, static_cast<std::uint32_t>(codes_->size())); }
 private:
-    const std::vector<std::uint8_t>* alive_;
+    const std::vector<std::uint8_t>* codes_;
 };
 
 // The faces one operator deletes or creates: at most six (a split that completes two parents).
@@ -60,22 +67,30 @@ struct NewFace {
 
 class Mesh {
 public:
-    Mesh() = default;
-    // The base mesh Σ0: every triangle green, every vertex level 0, limit points computed.
-    // Requires an oriented 2-manifold (io validates user input); throws std::invalid_argument
-    // naming the first problem otherwise.
+    Mesh();
+    // The base mesh Σ0: every triangle green, every vertex level 0. See BaseMesh for what it requires.
     Mesh(std::span<const glm::dvec3> positions, std::span<const Triangle> triangles);
+    explicit Mesh(std::shared_ptr<const BaseMesh> base);
+    // Copies and moves carry the mesh, not its observers: an observer follows one object.
+    Mesh(const Mesh& other);
+    Mesh(Mesh&& other) noexcept;
+    Mesh& operator=(const Mesh& other);
+    Mesh& operator=(Mesh&& other) noexcept;
+    ~Mesh() = default;
+
+    const BaseMesh& base() const { return *base_; }
+    const std::shared_ptr<const BaseMesh>& shared_base() const { return base_; }
 
     // ---- sizes and liveness ----
     std::size_t num_vertices() const { return vertex_count_; }
     std::size_t num_faces() const { return face_count_; }
-    std::size_t vertex_capacity() const { return vertex_alive_.size(); }
-    std::size_t face_capacity() const { return face_alive_.size(); }
-    std::size_t num_base_vertices() const { return base_valence_.size(); }
-    bool is_live(VertexId v) const { return v.idx < vertex_alive_.size() && vertex_alive_[v.idx]; }
-    bool is_live(FaceId f) const { return f.idx < face_alive_.size() && face_alive_[f.idx]; }
-    LiveRange<VertexId> vertices() const { return LiveRange<VertexId>(vertex_alive_); }
-    LiveRange<FaceId> faces() const { return LiveRange<FaceId>(face_alive_); }
+    std::size_t vertex_capacity() const { return vertex_info_.size(); }
+    std::size_t face_capacity() const { return face_code_.size(); }
+    std::size_t num_base_vertices() const { return base_->num_vertices(); }
+    bool is_live(VertexId v) const { return v.idx < vertex_info_.size() && vertex_info_[v.idx] != kDead; }
+    bool is_live(FaceId f) const { return f.idx < face_code_.size() && face_code_[f.idx] != kDead; }
+    LiveRange<VertexId> vertices() const { return LiveRange<VertexId>(vertex_info_); }
+    LiveRange<FaceId> faces() const { return LiveRange<FaceId>(face_code_); }
     int max_vertex_level() const;
 
     // ---- halfedge arithmetic ----
@@ -96,16 +111,16 @@ public:
         HalfedgeId o = opposite(h);
         return o.valid() ? next(o) : HalfedgeId();
     }
-    // Outgoing halfedge a->b, or invalid if a and b are not adjacent.
+    // Outgoing halfedge a->b, or invalid if a and b are not adjacent (or either is not live).
     HalfedgeId find_halfedge(VertexId a, VertexId b) const;
     // Either halfedge of the edge {a, b}: a->b if it exists, otherwise b->a; invalid if none.
     HalfedgeId find_edge(VertexId a, VertexId b) const;
 
     // ---- faces ----
     const std::array<VertexId, 3>& face_vertices(FaceId f) const { return face_vertices_[f.idx]; }
-    const FaceType& type(FaceId f) const { return face_type_[f.idx]; }
-    int level(FaceId f) const { return face_type_[f.idx].level; }
-    Colour colour(FaceId f) const { return face_type_[f.idx].colour; }
+    FaceType type(FaceId f) const { return unpack(face_code_[f.idx]); }
+    int level(FaceId f) const { return face_code_[f.idx] >> 3; }
+    Colour colour(FaceId f) const { return unpack(face_code_[f.idx]).colour; }
     int corner_of(FaceId f, VertexId v) const;  // -1 if v is not a corner of f
     // Colour and level of the edge of h (spec §1.4), derived from its face.
     EdgeType edge_type(HalfedgeId h) const;
@@ -114,13 +129,18 @@ public:
 
     // ---- vertices ----
     HalfedgeId vertex_halfedge(VertexId v) const { return vertex_halfedge_[v.idx]; }
-    int level(VertexId v) const { return vertex_level_[v.idx]; }
-    bool is_boundary(VertexId v) const { return vertex_boundary_[v.idx] != 0; }
+    int level(VertexId v) const { return vertex_info_[v.idx] & kLevelMask; }
+    bool is_boundary(VertexId v) const { return (vertex_info_[v.idx] & kBoundaryBit) != 0; }
+    bool is_base_vertex(VertexId v) const { return v.idx < base_->num_vertices(); }
     // p^l(v) at the vertex's own level l (fixed at insertion).
     const glm::dvec3& insertion_position(VertexId v) const { return insertion_position_[v.idx]; }
-    // p^inf(v), once known. It depends only on the base mesh, so once set it is final.
-    std::optional<glm::dvec3> limit_position(VertexId v) const;
-    bool has_limit(VertexId v) const { return limit_slot_[v.idx] != kNoLimit; }
+    // The vertex's address in the uniform hierarchy (surface_point.h): its identity, from which its
+    // base-space position, parent edge and stencil follow.
+    SurfacePoint address(VertexId v) const;
+    // Spec §3.5: the vertex under midpoint subdivision of the base mesh; it never moves.
+    glm::dvec3 base_space_position(VertexId v) const { return rgb::base_space_position(*base_, address(v)); }
+    // p^inf(v) if it has been computed (see loop_geometry.h, which computes it on demand).
+    std::optional<glm::dvec3> cached_limit(VertexId v) const { return limits_.find(v.idx); }
     // Number of neighbours in the uniform mesh of the vertex's own level (base valence or 6).
     int uniform_valence(VertexId v) const;
     int valence(VertexId v) const;  // in the current mesh
@@ -133,28 +153,50 @@ public:
     void remove_observer(MeshObserver* o);
 
     // ---- low-level editing, used by the operators; these keep adjacency but not RGB invariants ----
-    VertexId add_vertex(int level, const glm::dvec3& insertion_position, bool boundary, VertexId a, VertexId b);
-    // Caches p^inf(v). Logically const: the limit is a function of the base mesh alone, computed on
-    // first need (loop_geometry.h), so caching it never changes what the mesh means.
-    void set_limit_position(VertexId v, const glm::dvec3& p) const;
-    // Delete `old_faces` (and the listed vertices, which must be used by no new face) and create
-    // `new_faces` over the same region. Adjacency with the outside is rebuilt by matching edges.
-    // Returns the new face ids in the order given. At most six faces each way.
+    // A vertex to be inserted on the edge (a, b) of the next coarser uniform level.
+    struct NewVertex {
+        int level;
+        glm::dvec3 insertion_position;
+        bool boundary;
+        VertexId a, b;
+    };
+    // The slot the next added vertex will take, so that new faces can name it before it exists.
+    VertexId next_vertex_slot() const;
+    // Caches p^inf(v). Logically const: the limit is a function of the base mesh alone, so caching it
+    // never changes what the mesh means.
+    void cache_limit(VertexId v, const glm::dvec3& p) const { limits_.insert(v.idx, p); }
+    // Delete `old_faces` (and the listed vertices, which must be used by no new face), add `added` (in
+    // slot next_vertex_slot()) and create `new_faces` over the same region. Adjacency with the outside
+    // is rebuilt by matching edges. Observers hear of it in the order observer.h states. Returns the
+    // new face ids in the order given. At most six faces each way.
     FaceList replace_faces(std::span<const FaceId> old_faces, std::span<const NewFace> new_faces,
-                                      std::span<const VertexId> removed_vertices = {});
+                           std::span<const VertexId> removed_vertices = {}, const NewVertex* added = nullptr);
 
-    // Bytes of the core arrays in use (sizes, not reserved capacity), for the memory benchmark.
+    // Bytes of the core arrays in use (sizes, not reserved capacity): connectivity, positions, RGB
+    // codes and limit points, for the memory benchmark. The vertex addresses are counted apart.
     std::size_t memory_bytes() const;
+    std::size_t address_bytes() const { return address_.size() * sizeof(PackedAddress); }
 
 private:
     friend struct MeshState capture_state(const Mesh& mesh);
     friend Mesh restore_state(const struct MeshState& state);
 
-    static constexpr std::uint32_t kNoLimit = 0xffffffffu;
+    static constexpr std::uint8_t kDead = 0xff;
+    static constexpr std::uint8_t kLevelMask = 0x3f;
+    static constexpr std::uint8_t kBoundaryBit = 0x40;
+    // A face's type in one byte: bits 0-2 are 0 for green, 1 + red edge for red, 4 + red edge for blue;
+    // bits 3-7 the level. 0xff marks a dead slot.
+    static std::uint8_t pack(const FaceType& t);
+    static FaceType unpack(std::uint8_t code);
+    struct PackedAddress {
+        std::uint32_t face, a1, a2;  // a0 = 2^level - a1 - a2
+    };
+
+    void init_base_state();
+    VertexId allocate_vertex(const NewVertex& added);
     FaceId allocate_face();
     void release_face(FaceId f);
     void release_vertex(VertexId v);
-    void update_vertex_halfedge(VertexId v, HalfedgeId any_outgoing);
     // The outgoing halfedge on the boundary reached by turning clockwise from h (h itself if none).
     HalfedgeId boundary_outgoing(HalfedgeId h) const;
     // Whether h, v's outgoing halfedge before a replace, still is one after it (and still on the
@@ -163,28 +205,21 @@ private:
     // v's outgoing halfedge derived from `outgoing`, one of its halfedges in a new face.
     void set_vertex_halfedge(VertexId v, HalfedgeId outgoing);
 
+    std::shared_ptr<const BaseMesh> base_;
     // faces
     std::vector<std::array<VertexId, 3>> face_vertices_;
-    std::vector<FaceType> face_type_;
     std::vector<HalfedgeId> opposite_;
-    std::vector<std::uint8_t> face_alive_;
+    std::vector<std::uint8_t> face_code_;
     std::vector<std::uint32_t> free_faces_;
     std::size_t face_count_ = 0;
     // vertices
     std::vector<glm::dvec3> insertion_position_;
     std::vector<HalfedgeId> vertex_halfedge_;
-    std::vector<std::uint8_t> vertex_level_;
-    std::vector<std::uint8_t> vertex_boundary_;
-    std::vector<std::uint8_t> vertex_alive_;
-    mutable std::vector<std::uint32_t> limit_slot_;
+    std::vector<std::uint8_t> vertex_info_;  // level (bits 0-5), boundary (bit 6); 0xff: dead slot
+    std::vector<PackedAddress> address_;
     std::vector<std::uint32_t> free_vertices_;
     std::size_t vertex_count_ = 0;
-    // Limit points are needed for a minority of vertices (those whose display level exceeds their
-    // own), so they live in a pool instead of a dense array: this keeps the mesh under 2x a plain mesh.
-    mutable std::vector<glm::dvec3> limit_pool_;
-    mutable std::vector<std::uint32_t> free_limit_slots_;
-    // Base vertices are never removed, so their ids stay below num_base_vertices().
-    std::vector<std::uint16_t> base_valence_;
+    mutable LimitCache limits_;
 
     std::vector<MeshObserver*> observers_;
 };

@@ -24,10 +24,10 @@ bool can_split_edge(const Mesh& mesh, HalfedgeId h);
 // The vertices whose control points at the edge's level give the new vertex's position: the two
 // endpoints, then (interior edges) the two opposite vertices of the uniform mesh of that level.
 InlineVector<VertexId, 4> split_stencil(const Mesh& mesh, HalfedgeId h);
-// True when the Loop stencil of the edge has every control point it needs (§4.4).
-bool has_split_stencil(const Mesh& mesh, HalfedgeId h);
-// Splits the edge of h (requires can_split_edge and has_split_stencil) and applies the automatic
-// BB-swaps. Returns the new vertex.
+// Splits the edge of h (requires can_split_edge), applies the automatic BB-swaps and keeps the
+// normal form of spec §3.5 (in a parent with two split edges, the red triangle's red edge enters
+// its top vertex). The stencil's control points are exact whatever the neighbourhood holds
+// (loop_geometry.h). Returns the new vertex.
 VertexId split_edge(Mesh& mesh, HalfedgeId h);
 
 // ---- swaps (§2.5); h is a halfedge of the edge to flip ----
@@ -45,7 +45,13 @@ bool can_merge_vertex(const Mesh& mesh, VertexId v);
 void merge_vertex(Mesh& mesh, VertexId v);
 // Removable: level >= 1 and every incident triangle is G_{l}, R_{l-1} or B_{l-1} (l = level(v)).
 bool can_remove_vertex(const Mesh& mesh, VertexId v);
-// Normalising swaps (GG-swap, RB-swap) then the merge. Requires can_remove_vertex.
+// Normalising swaps (GG-swap, RB-swap) then the merge, then the normal form of spec §3.5 restored
+// where a parent is left with two split edges. Requires can_remove_vertex.
 void remove_vertex(Mesh& mesh, VertexId v);
+
+// ---- normal form (spec §3.5) ----
+// Whether f, a red triangle sharing its red edge with a blue (a parent with two split edges), has its
+// red edge entering its top vertex; true for any other face.
+bool in_normal_form(const Mesh& mesh, FaceId f);
 
 }  // namespace rgb

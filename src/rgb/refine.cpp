@@ -2,10 +2,9 @@
 #include "rgb/refine.h"
 
 #include <array>
+#include <stdexcept>
 
-#include "rgb/loop_geometry.h"
 #include "rgb/mesh.h"
-#include "rgb/navigation.h"
 #include "rgb/operators.h"
 
 namespace rgb {
@@ -34,7 +33,8 @@ bool refine_halfedge(Mesh& mesh, HalfedgeId h) {
     const EdgeType e = mesh.edge_type(h);
     if (e.colour != Colour::Green) return false;
     // Bring every incident triangle up to the edge's level first. Each call works on a coarser level,
-    // so the recursion ends; it may split this very edge, hence the re-lookups.
+    // so the recursion ends; it may split this very edge, hence the re-lookups. This adds exactly the
+    // vertices the RGB topology needs; geometry needs none (loop_geometry.h).
     for (int side = 0; side < 2; ++side) {
         h = mesh.find_edge(a, b);
         if (!h.valid()) return false;
@@ -45,18 +45,8 @@ bool refine_halfedge(Mesh& mesh, HalfedgeId h) {
         const HalfedgeId coarse = edge_refining_face(mesh, f);
         refine_vertices(mesh, mesh.from_vertex(coarse), mesh.to_vertex(coarse));
     }
-    while (true) {
-        h = mesh.find_edge(a, b);
-        if (!h.valid() || !can_split_edge(mesh, h)) return false;
-        bool complete = true;
-        for (VertexId w : split_stencil(mesh, h)) {
-            if (mesh.level(w) >= e.level || try_limit_position(mesh, w)) continue;
-            complete = false;
-            // The stencil needs the limit of a coarser vertex: refine around it (§4.4).
-            if (!ensure_limit(mesh, w)) return false;
-        }
-        if (complete) break;
-    }
+    h = mesh.find_edge(a, b);
+    if (!h.valid() || !can_split_edge(mesh, h)) return false;
     split_edge(mesh, h);
     return true;
 }
@@ -76,30 +66,28 @@ HalfedgeId edge_refining_face(const Mesh& mesh, FaceId f) {
 
 bool refine_edge(Mesh& mesh, VertexId a, VertexId b) { return refine_vertices(mesh, a, b); }
 
-bool ensure_limit(Mesh& mesh, VertexId v) {
-    while (!try_limit_position(mesh, v)) {
-        const std::vector<VertexId> ring = uniform_ring(mesh, v);
-        bool advanced = false;
-        if (!ring.empty()) {
-            for (VertexId w : ring)
-                if (mesh.level(w) < mesh.level(v) && !try_limit_position(mesh, w)) advanced = ensure_limit(mesh, w) || advanced;
-        } else {
-            // Split the coarse green edges around v until its ring at its own level exists.
-            const HalfedgeId start = canonical_outgoing(mesh, v);
-            HalfedgeId h = start;
-            do {
-                for (HalfedgeId e : {h, Mesh::prev(h)}) {
-                    const EdgeType t = mesh.edge_type(e);
-                    if (!advanced && t.colour == Colour::Green && t.level <= mesh.level(v))
-                        advanced = refine_vertices(mesh, mesh.from_vertex(e), mesh.to_vertex(e));
-                }
-                if (advanced) break;
-                h = mesh.ccw_rotated(h);
-            } while (h.valid() && h != start);
-        }
-        if (!advanced) return false;
-    }
-    return true;
+namespace {
+// A neighbour of v finer than v, if there is one.
+VertexId finer_neighbour(const Mesh& mesh, VertexId v) {
+    const HalfedgeId start = mesh.vertex_halfedge(v);
+    HalfedgeId h = start;
+    do {
+        for (VertexId w : {mesh.to_vertex(h), mesh.opposite_vertex(h)})
+            if (mesh.level(w) > mesh.level(v)) return w;
+        h = mesh.ccw_rotated(h);
+    } while (h.valid() && h != start);
+    return VertexId();
+}
+}  // namespace
+
+std::size_t remove_with_dependents(Mesh& mesh, VertexId v) {
+    if (mesh.level(v) == 0) throw std::logic_error("remove_with_dependents: base vertices are never removed");
+    std::size_t removed = 0;
+    // A finer neighbour needs v: its parent triangles have v as a corner. Removing it first, and so
+    // on recursively, leaves v with no finer neighbour, which makes it removable (spec §2.4).
+    for (VertexId u = finer_neighbour(mesh, v); u.valid(); u = finer_neighbour(mesh, v)) removed += remove_with_dependents(mesh, u);
+    remove_vertex(mesh, v);
+    return removed + 1;
 }
 
 }  // namespace rgb

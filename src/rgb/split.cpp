@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "rgb/loop_geometry.h"
+#include "rgb/loop_rules.h"
 #include "rgb/mesh.h"
 #include "rgb/operators.h"
 
@@ -41,12 +42,6 @@ VertexId stencil_opposite(const Mesh& mesh, HalfedgeId h) {
             if (mesh.level(mesh.from_vertex(mid)) > lvl && mesh.level(mesh.to_vertex(mid)) > lvl) break;
         h = mesh.opposite(mid);
     }
-}
-
-bool stencil_ready(const Mesh& mesh, std::span<const VertexId> stencil, int level) {
-    for (VertexId w : stencil)
-        if (mesh.level(w) < level && !mesh.has_limit(w) && !try_limit_position(mesh, w)) return false;
-    return true;
 }
 
 }  // namespace
@@ -91,61 +86,63 @@ std::optional<SplitKind> split_kind(const Mesh& mesh, HalfedgeId h) {
 
 bool can_split_edge(const Mesh& mesh, HalfedgeId h) { return split_kind(mesh, h).has_value(); }
 
-bool has_split_stencil(const Mesh& mesh, HalfedgeId h) {
-    return stencil_ready(mesh, split_stencil(mesh, h), mesh.edge_type(h).level);
-}
-
 VertexId split_edge(Mesh& mesh, HalfedgeId h) {
     if (!can_split_edge(mesh, h)) throw std::logic_error("split_edge: the edge is not splittable");
     const int l = mesh.edge_type(h).level;
     const auto s = split_stencil(mesh, h);
-    if (!stencil_ready(mesh, s, l)) throw std::logic_error("split_edge: the Loop stencil is incomplete");
     const VertexId a = s[0], b = s[1];
     const bool boundary = s.size() == 2;
     const glm::dvec3 pa = control_point(mesh, a, l), pb = control_point(mesh, b, l);
-    const glm::dvec3 position = boundary ? 0.5 * (pa + pb)
-                                         : 0.375 * (pa + pb) + 0.125 * (control_point(mesh, s[2], l) +
-                                                                        control_point(mesh, s[3], l));
+    const glm::dvec3 position =
+        boundary ? boundary_edge_point(pa, pb)
+                 : interior_edge_point(pa, pb, control_point(mesh, s[2], l), control_point(mesh, s[3], l));
 
     const auto sides = edge_sides(mesh, h);
     FaceList old_faces;
     for (HalfedgeId side : sides) old_faces.push_back(Mesh::face(side));
-    const VertexId v = mesh.add_vertex(l + 1, position, boundary, a, b);
+    const VertexId v = mesh.next_vertex_slot();
     const auto lvl = static_cast<std::uint8_t>(l);
-    const FaceType red_first{Colour::Red, lvl, 1}, red_second{Colour::Red, lvl, 2};
     const FaceType green_fine{Colour::Green, static_cast<std::uint8_t>(l + 1), 0};
+    auto red = [&](int red_edge) { return FaceType{Colour::Red, lvl, static_cast<std::uint8_t>(red_edge)}; };
+    auto blue = [&](int red_edge) { return FaceType{Colour::Blue, lvl, static_cast<std::uint8_t>(red_edge)}; };
     InlineVector<NewFace, 6> new_faces;
-    // A red side becomes a corner G_{l+1} and a blue that keeps the red edge. If the triangle across
-    // that red edge is a blue of the same level, this split completes the parent and the two blues
-    // are BB-swapped into two G_{l+1} (§2.1); that swap is folded into this one replacement.
-    auto add_blue = [&](std::array<VertexId, 3> blue, int red, HalfedgeId outside) {
-        const FaceId across = Mesh::face(outside);
-        if (mesh.colour(across) == Colour::Blue && mesh.level(across) == l) {
-            const VertexId p = blue[red], q = blue[(red + 1) % 3], r = blue[(red + 2) % 3];
-            const VertexId t = mesh.opposite_vertex(outside);
-            old_faces.push_back(across);
-            new_faces.push_back({{p, t, r}, green_fine});
-            new_faces.push_back({{t, q, r}, green_fine});
-        } else {
-            new_faces.push_back({blue, FaceType{Colour::Blue, lvl, static_cast<std::uint8_t>(red)}});
-        }
-    };
     for (HalfedgeId side : sides) {
         const FaceId f = Mesh::face(side);
         const int i = Mesh::corner(side);
         const VertexId x0 = mesh.from_vertex(side), x1 = mesh.to_vertex(side), x = mesh.opposite_vertex(side);
         if (mesh.colour(f) == Colour::Green) {
-            new_faces.push_back({{x0, v, x}, red_first});
-            new_faces.push_back({{v, x1, x}, red_second});
-        } else if (mesh.type(f).red_edge == (i + 1) % 3) {  // red edge x1-x
-            new_faces.push_back({{x0, v, x}, green_fine});
-            add_blue({v, x1, x}, 1, mesh.opposite(Mesh::halfedge(f, (i + 1) % 3)));
-        } else {  // red edge x-x0
-            add_blue({x0, v, x}, 2, mesh.opposite(Mesh::halfedge(f, (i + 2) % 3)));
-            new_faces.push_back({{v, x1, x}, green_fine});
+            new_faces.push_back({{x0, v, x}, red(1)});
+            new_faces.push_back({{v, x1, x}, red(2)});
+            continue;
+        }
+        // A red side (x is its top) becomes a corner G_{l+1} at the endpoint its red edge leaves
+        // alone, and a blue beside the triangle across the red edge, which is either the sibling red
+        // of the same parent or, if that parent already had two split edges, a blue.
+        const bool red_edge_at_x1 = mesh.type(f).red_edge == (i + 1) % 3;
+        const HalfedgeId outside = mesh.opposite(Mesh::halfedge(f, red_edge_at_x1 ? (i + 1) % 3 : (i + 2) % 3));
+        const FaceId across = Mesh::face(outside);
+        const VertexId y = mesh.opposite_vertex(outside);
+        new_faces.push_back({red_edge_at_x1 ? std::array{x0, v, x} : std::array{v, x1, x}, green_fine});
+        if (mesh.colour(across) == Colour::Blue) {
+            // This split completes the parent: the two blues sharing the red edge are BB-swapped into
+            // two G_{l+1} (spec §2.1), folded into this one replacement.
+            old_faces.push_back(across);
+            const VertexId near = red_edge_at_x1 ? x1 : x0;
+            new_faces.push_back({red_edge_at_x1 ? std::array{near, y, v} : std::array{y, near, v}, green_fine});
+            new_faces.push_back({red_edge_at_x1 ? std::array{y, x, v} : std::array{x, y, v}, green_fine});
+        } else if (red_edge_at_x1) {
+            // Normal form (spec §3.5): in a parent with two split edges the red triangle's red edge
+            // enters its top vertex. Keeping the old red edge x-x1 would break that, so the diagonal
+            // of the quadrilateral (v, x1, y, x) is v-y instead (an RB-swap folded into the split).
+            old_faces.push_back(across);
+            new_faces.push_back({{v, x1, y}, red(2)});
+            new_faces.push_back({{v, y, x}, blue(0)});
+        } else {
+            new_faces.push_back({{x0, v, x}, blue(2)});
         }
     }
-    mesh.replace_faces(old_faces, new_faces);
+    const Mesh::NewVertex added{l + 1, position, boundary, a, b};
+    mesh.replace_faces(old_faces, new_faces, {}, &added);
     return v;
 }
 

@@ -12,35 +12,36 @@
 #include "render/surface_geometry.h"
 #include "rgb/mesh.h"
 #include "rgb/refine.h"
+#include "rgb/triangle_geometry.h"
 
 namespace app {
 namespace {
 
 TEST(BrushTarget, RefineTapersFromTheTargetToNothingAcrossTheFalloffBand) {
     // radius 1, falloff 0.5: full strength up to 0.5, then linear to 0 at the rim.
-    EXPECT_EQ(target_at_distance(BrushMode::Refine, 4, 0.5f, 0.0, 1.0), 4);
-    EXPECT_EQ(target_at_distance(BrushMode::Refine, 4, 0.5f, 0.5, 1.0), 4);
-    EXPECT_EQ(target_at_distance(BrushMode::Refine, 4, 0.5f, 0.75, 1.0), 2);  // strength 1/2
-    EXPECT_EQ(target_at_distance(BrushMode::Refine, 4, 0.5f, 1.0, 1.0), 0);
-    EXPECT_EQ(target_at_distance(BrushMode::Refine, 4, 0.5f, 1.01, 1.0), -1);
+    EXPECT_EQ(rgb::dab_level_at(BrushMode::Refine, 4, 0.5f, 0.0, 1.0), 4);
+    EXPECT_EQ(rgb::dab_level_at(BrushMode::Refine, 4, 0.5f, 0.5, 1.0), 4);
+    EXPECT_EQ(rgb::dab_level_at(BrushMode::Refine, 4, 0.5f, 0.75, 1.0), 2);  // strength 1/2
+    EXPECT_EQ(rgb::dab_level_at(BrushMode::Refine, 4, 0.5f, 1.0, 1.0), 0);
+    EXPECT_EQ(rgb::dab_level_at(BrushMode::Refine, 4, 0.5f, 1.01, 1.0), -1);
 }
 
 TEST(BrushTarget, CoarsenTapersUpToTheFinestLevel) {
-    EXPECT_EQ(target_at_distance(BrushMode::Coarsen, 0, 0.5f, 0.2, 1.0), 0);
-    EXPECT_EQ(target_at_distance(BrushMode::Coarsen, 0, 0.5f, 0.75, 1.0), kMaxBrushLevel / 2);
-    EXPECT_EQ(target_at_distance(BrushMode::Coarsen, 0, 0.5f, 1.0, 1.0), kMaxBrushLevel);
+    EXPECT_EQ(rgb::dab_level_at(BrushMode::Coarsen, 0, 0.5f, 0.2, 1.0), 0);
+    EXPECT_EQ(rgb::dab_level_at(BrushMode::Coarsen, 0, 0.5f, 0.75, 1.0), rgb::kMaxLevel / 2);
+    EXPECT_EQ(rgb::dab_level_at(BrushMode::Coarsen, 0, 0.5f, 1.0, 1.0), rgb::kMaxLevel);
 }
 
 TEST(BrushTarget, SetLevelHoldsTheCoreAndLeavesTheBandAlone) {
-    EXPECT_EQ(target_at_distance(BrushMode::SetLevel, 2, 0.5f, 0.4, 1.0), 2);
-    EXPECT_EQ(target_at_distance(BrushMode::SetLevel, 2, 0.5f, 0.6, 1.0), -1);
-    EXPECT_EQ(target_at_distance(BrushMode::SetLevel, 2, 0.0f, 1.0, 1.0), 2);
+    EXPECT_EQ(rgb::dab_level_at(BrushMode::Set, 2, 0.5f, 0.4, 1.0), 2);
+    EXPECT_EQ(rgb::dab_level_at(BrushMode::Set, 2, 0.5f, 0.6, 1.0), -1);
+    EXPECT_EQ(rgb::dab_level_at(BrushMode::Set, 2, 0.0f, 1.0, 1.0), 2);
 }
 
 TEST(BrushTarget, ShiftSwapsRefineAndCoarsen) {
     EXPECT_EQ(effective_mode(BrushMode::Refine, true), BrushMode::Coarsen);
     EXPECT_EQ(effective_mode(BrushMode::Coarsen, true), BrushMode::Refine);
-    EXPECT_EQ(effective_mode(BrushMode::SetLevel, true), BrushMode::SetLevel);
+    EXPECT_EQ(effective_mode(BrushMode::Set, true), BrushMode::Set);
     EXPECT_EQ(effective_mode(BrushMode::Refine, false), BrushMode::Refine);
 }
 
@@ -107,7 +108,7 @@ TEST(SurfacePicking, FootprintGrowsOnlyThroughFacesInTheSphere) {
     std::size_t expected = 0;
     for (rgb::FaceId f : mesh.faces()) {
         const auto v = geometry.vertices();
-        expected += distance_to_triangle(hit.point, glm::dvec3(v[3 * f.idx].position), glm::dvec3(v[3 * f.idx + 1].position),
+        expected += rgb::distance_to_triangle(hit.point, glm::dvec3(v[3 * f.idx].position), glm::dvec3(v[3 * f.idx + 1].position),
                                          glm::dvec3(v[3 * f.idx + 2].position)) <= radius;
     }
     // The sphere is small and within one flat face of the tetrahedron, so its faces are connected.

@@ -8,9 +8,9 @@
 
 #include "app/editor.h"
 #include "io/mesh_file.h"
-#include "io/mesh_state_compare.h"
 #include "rgb/invariants.h"
 #include "rgb/state.h"
+#include "support/same_mesh.h"
 #include "stroke_support.h"
 
 namespace app {
@@ -56,13 +56,13 @@ protected:
 TEST_F(EditorScript, StrokeUndoRedoSaveRoundTrip) {
     const std::vector<glm::dvec3> path = surface_points(from, to, 20);
     ASSERT_EQ(path.size(), 21u) << "the stroke must cross the framed bunny";
-    const rgb::MeshState original = rgb::capture_state(editor.document().mesh());
+    const rgb::Mesh original = editor.document().mesh();
     const std::size_t original_faces = editor.document().mesh().num_faces();
     const double near_radius = editor.brush_world_radius(path.front());
     const std::size_t original_near = test::faces_near(editor.document().mesh(), path, near_radius);
 
     stroke(from, to, 3);  // three samples for a long stroke: interpolation must fill the gaps
-    const rgb::MeshState painted = rgb::capture_state(editor.document().mesh());
+    const rgb::Mesh painted = editor.document().mesh();
     EXPECT_GT(editor.document().mesh().num_faces(), original_faces);
     EXPECT_TRUE(editor.document().dirty());
     EXPECT_EQ(editor.window_title(), "bunny.obj* - rgbsub");
@@ -72,14 +72,14 @@ TEST_F(EditorScript, StrokeUndoRedoSaveRoundTrip) {
     const std::size_t painted_near = test::faces_near(editor.document().mesh(), path, near_radius);
     for (const glm::dvec3& p : path)
         EXPECT_GT(test::faces_near(editor.document().mesh(), std::span(&p, 1), 0.5 * near_radius),
-                  test::faces_near(rgb::restore_state(original), std::span(&p, 1), 0.5 * near_radius));
+                  test::faces_near(original, std::span(&p, 1), 0.5 * near_radius));
 
     editor.key_pressed(Key::Z, {.ctrl = true});
     EXPECT_EQ(editor.document().mesh().num_faces(), original_faces);
-    rgbio::test::expect_identical(rgb::capture_state(editor.document().mesh()), original);
+    EXPECT_TRUE(rgbtest::same_mesh(editor.document().mesh(), original));
 
     editor.key_pressed(Key::Z, {.shift = true, .ctrl = true});
-    rgbio::test::expect_identical(rgb::capture_state(editor.document().mesh()), painted);
+    EXPECT_TRUE(rgbtest::same_mesh(editor.document().mesh(), painted));
 
     const std::filesystem::path saved = std::filesystem::path(::testing::TempDir()) / "editor_script_saved.obj";
     ASSERT_TRUE(editor.save_as(saved.string())) << editor.message();
@@ -88,7 +88,7 @@ TEST_F(EditorScript, StrokeUndoRedoSaveRoundTrip) {
     const rgb::Mesh reloaded = rgbio::load_mesh(saved.string());
     const rgb::InvariantReport report = rgb::check_invariants(reloaded);
     EXPECT_TRUE(report.ok()) << (report.ok() ? "" : report.violations.front());
-    rgbio::test::expect_identical(rgb::capture_state(reloaded), painted);
+    EXPECT_TRUE(rgbtest::same_mesh(reloaded, painted));
     EXPECT_EQ(test::faces_near(reloaded, path, near_radius), painted_near);
     EXPECT_GT(painted_near, original_near);
 }
@@ -124,7 +124,7 @@ TEST_F(EditorScript, StrokeOffTheMeshLeavesNoUndoStep) {
 }
 
 TEST_F(EditorScript, FloodFillRunsInSlicesAndUndoes) {
-    const rgb::MeshState original = rgb::capture_state(editor.document().mesh());
+    const rgb::Mesh original = editor.document().mesh();
     editor.start_flood_fill(1);
     ASSERT_NE(editor.job(), nullptr);
     int frames = 0;
@@ -133,9 +133,9 @@ TEST_F(EditorScript, FloodFillRunsInSlicesAndUndoes) {
         ++frames;
     }
     EXPECT_GT(frames, 1) << "a flood fill must give the window frames while it works";
-    EXPECT_EQ(editor.document().mesh().num_faces(), 4 * original.faces.size());
+    EXPECT_EQ(editor.document().mesh().num_faces(), 4 * original.num_faces());
     EXPECT_TRUE(editor.undo());
-    rgbio::test::expect_identical(rgb::capture_state(editor.document().mesh()), original);
+    EXPECT_TRUE(rgbtest::same_mesh(editor.document().mesh(), original));
 }
 
 TEST_F(EditorScript, SampleLevelReadsTheFaceUnderTheCursor) {

@@ -13,6 +13,7 @@
 #include "rgb/invariants.h"
 #include "rgb/state.h"
 #include "stroke_support.h"
+#include "support/same_mesh.h"
 
 namespace {
 
@@ -28,17 +29,6 @@ rgb::Mesh load_valid(const char* path) {
     const rgb::InvariantReport report = rgb::check_invariants(mesh);
     expect(report.ok(), std::string(path) + " is a valid RGB state" + (report.ok() ? "" : ": " + report.violations.front()));
     return mesh;
-}
-
-bool same_state(const rgb::MeshState& a, const rgb::MeshState& b) {
-    if (a.vertices.size() != b.vertices.size() || a.faces.size() != b.faces.size()) return false;
-    for (std::size_t i = 0; i < a.faces.size(); ++i)
-        if (a.faces[i].alive != b.faces[i].alive || a.faces[i].v != b.faces[i].v || !(a.faces[i].type == b.faces[i].type))
-            return false;
-    for (std::size_t i = 0; i < a.vertices.size(); ++i)
-        if (a.vertices[i].alive != b.vertices[i].alive || a.vertices[i].insertion_position != b.vertices[i].insertion_position)
-            return false;
-    return a.free_faces == b.free_faces && a.free_vertices == b.free_vertices;
 }
 
 }  // namespace
@@ -70,9 +60,9 @@ int main(int argc, char** argv) {
     const std::size_t before = app::test::faces_near(original, path, radius);
     const std::size_t after = app::test::faces_near(painted, path, radius);
     expect(after > before, "more triangles near the stroke (" + std::to_string(before) + " -> " + std::to_string(after) + ")");
-    expect(undone.num_faces() == original.num_faces(),
-           "undo restores the triangle count (" + std::to_string(undone.num_faces()) + " vs " +
-               std::to_string(original.num_faces()) + ")");
-    expect(same_state(rgb::capture_state(redone), rgb::capture_state(painted)), "redo restores the painted mesh");
+    const testing::AssertionResult undo_ok = rgbtest::same_mesh(undone, original);
+    expect(undo_ok, std::string("undo restores the original mesh exactly") + (undo_ok ? "" : ": " + std::string(undo_ok.message())));
+    const testing::AssertionResult redo_ok = rgbtest::same_mesh(redone, painted);
+    expect(redo_ok, std::string("redo restores the painted mesh exactly") + (redo_ok ? "" : ": " + std::string(redo_ok.message())));
     return failures == 0 ? 0 : 1;
 }

@@ -21,7 +21,7 @@ namespace {
 constexpr glm::ivec2 kViewport{1280, 800};
 
 struct Samples {
-    std::vector<double> engine_ms, pick_ms, footprint;
+    std::vector<double> engine_ms, pick_ms, operations;
 };
 
 double percentile(std::vector<double> v, double p) {
@@ -52,7 +52,7 @@ Samples replay(app::Editor& editor, app::Modifiers mods) {
         dabs = editor.dab_timing().dabs;
         samples.engine_ms.push_back(editor.dab_timing().last_ms);
         samples.pick_ms.push_back(editor.dab_timing().last_pick_ms);
-        samples.footprint.push_back(static_cast<double>(editor.dab_timing().last_footprint));
+        samples.operations.push_back(static_cast<double>(editor.dab_timing().last_operations));
     };
     record();
     for (const glm::vec2& p : path) {
@@ -65,10 +65,10 @@ Samples replay(app::Editor& editor, app::Modifiers mods) {
 
 void report(const char* what, const Samples& s) {
     std::printf("  %-28s %4zu dabs  engine p50 %6.3f ms  p95 %6.3f ms  max %6.3f ms | pick p50 %6.3f ms  p95 %6.3f ms"
-                " | footprint p50 %5.0f faces\n",
+                " | operations p50 %5.0f\n",
                 what, s.engine_ms.size(), percentile(s.engine_ms, 0.5), percentile(s.engine_ms, 0.95),
                 percentile(s.engine_ms, 1.0), percentile(s.pick_ms, 0.5), percentile(s.pick_ms, 0.95),
-                percentile(s.footprint, 0.5));
+                percentile(s.operations, 0.5));
 }
 
 }  // namespace

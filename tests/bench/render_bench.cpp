@@ -17,6 +17,7 @@
 #include "rgb/loop_geometry.h"
 #include "rgb/mesh.h"
 #include "rgb/refine.h"
+#include "rgb/requests.h"
 
 namespace {
 
@@ -93,9 +94,12 @@ public:
             rgb::FaceId seed;
             do seed = rgb::FaceId(static_cast<std::uint32_t>(random_() % mesh.face_capacity()));
             while (!mesh.is_live(seed));
-            centre_ = rgb::displayed_position(mesh, mesh.face_vertices(seed)[0]);
+            centre_ = mesh.base_space_position(mesh.face_vertices(seed)[0]);
         }
-        rgb::set_level(mesh, rgb::Region::sphere(centre_, 0.05), refine_ ? 2 : 0);
+        rgb::LevelRequest request;
+        request.level = refine_ ? 2 : 0;
+        request.sphere = rgb::Sphere{centre_, 0.05};
+        rgb::apply_request(mesh, request);
         refine_ = !refine_;
     }
 

@@ -3,23 +3,29 @@
 #include <algorithm>
 #include <filesystem>
 #include <set>
+#include <sstream>
 
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 #include <tiny_obj_loader.h>
 
 #include "io/mesh_file.h"
 #include "io/obj_error.h"
+#include "io/number_format.h"
 #include "io/obj_reader.h"
-#include "mesh_state_compare.h"
 #include "obj_test_support.h"
 #include "rgb/invariants.h"
 #include "rgb/loop_geometry.h"
 #include "rgb/refine.h"
+#include "rgb/requests.h"
+#include "rgb/state.h"
+#include "support/same_mesh.h"
+#include "support/oracle_limit.h"
 
 namespace rgbio {
 namespace {
 
-rgb::Mesh octahedron() { return build_mesh(read_obj_text(test::kOctahedron, "octahedron.obj"), "octahedron.obj"); }
+rgb::Mesh octahedron() { return build_mesh(read_obj_text(test::kOctahedron, "octahedron.obj")); }
 
 // A square grid patch with a boundary (n x n quads), so boundary rules are exercised too.
 std::string grid_obj(int n) {
@@ -34,15 +40,31 @@ std::string grid_obj(int n) {
     return text;
 }
 
+void set_level(rgb::Mesh& mesh, const glm::dvec3& centre, double radius, int level) {
+    rgb::LevelRequest request;
+    request.level = level;
+    request.sphere = rgb::Sphere{centre, radius};
+    rgb::apply_request(mesh, request);
+}
+
 // A deterministic sequence of refinements and coarsenings in spheres.
 void edit(rgb::Mesh& mesh, int seed) {
-    rgb::set_level(mesh, rgb::Region::sphere({0.9 * (seed % 3), 0.3, 0.5}, 0.7), 3 + seed % 2);
-    rgb::set_level(mesh, rgb::Region::sphere({0.2, 0.8, 0.2 * seed}, 0.5), 1);
-    rgb::set_level(mesh, rgb::Region::sphere({0.5, 0.5, 0.5}, 0.4), 4);
+    set_level(mesh, {0.9 * (seed % 3), 0.3, 0.5}, 0.7, 3 + seed % 2);
+    set_level(mesh, {0.2, 0.8, 0.2 * seed}, 0.5, 1);
+    set_level(mesh, {0.5, 0.5, 0.5}, 0.4, 4);
 }
 
 rgb::Mesh round_trip(const rgb::Mesh& mesh, const SaveOptions& options = {}) {
-    return build_mesh(read_obj_text(format_obj(mesh, options), "saved.obj"), "saved.obj");
+    const LoadedMesh loaded = read_obj_text(format_obj(mesh, options), "saved.obj");
+    EXPECT_TRUE(loaded.adaptive) << "the state was dropped: " << (loaded.warnings.empty() ? "" : loaded.warnings.front());
+    return build_mesh(loaded);
+}
+
+void expect_same_state(const rgb::MeshState& a, const rgb::MeshState& b) {
+    EXPECT_EQ(a.base_positions, b.base_positions);
+    EXPECT_EQ(a.base_triangles, b.base_triangles);
+    EXPECT_EQ(a.vertices, b.vertices);
+    EXPECT_EQ(a.faces, b.faces);
 }
 
 TEST(MeshFile, PlainObjLoadsAsABaseMesh) {
@@ -60,10 +82,9 @@ TEST(MeshFile, PlainObjLoadsAsABaseMesh) {
 TEST(MeshFile, StateTextIsLossless) {
     rgb::Mesh mesh = octahedron();
     edit(mesh, 1);
-    const rgb::MeshState state = rgb::capture_state(mesh);
     const LoadedMesh loaded = read_obj_text(format_obj(mesh, {}), "saved.obj");
-    ASSERT_TRUE(loaded.state);
-    test::expect_identical(*loaded.state, state);
+    ASSERT_TRUE(loaded.adaptive);
+    expect_same_state(rgb::capture_state(*loaded.adaptive), rgb::capture_state(mesh));
 }
 
 TEST(MeshFile, SavedAdaptiveMeshRestoresBitForBit) {
@@ -72,14 +93,16 @@ TEST(MeshFile, SavedAdaptiveMeshRestoresBitForBit) {
     ASSERT_GT(mesh.max_vertex_level(), 2);
     const rgb::Mesh restored = round_trip(mesh);
     EXPECT_TRUE(rgb::check_invariants(restored).ok());
-    test::expect_identical(rgb::capture_state(restored), rgb::capture_state(mesh));
+    EXPECT_TRUE(rgbtest::same_mesh(restored, mesh));
+    expect_same_state(rgb::capture_state(restored), rgb::capture_state(mesh));
 }
 
 TEST(MeshFile, MeshWithBoundaryRestoresBitForBit) {
-    rgb::Mesh mesh = build_mesh(read_obj_text(grid_obj(4), "grid.obj"), "grid.obj");
+    rgb::Mesh mesh = build_mesh(read_obj_text(grid_obj(4), "grid.obj"));
     edit(mesh, 1);
     const rgb::Mesh restored = round_trip(mesh);
-    test::expect_identical(rgb::capture_state(restored), rgb::capture_state(mesh));
+    EXPECT_TRUE(rgbtest::same_mesh(restored, mesh));
+    expect_same_state(rgb::capture_state(restored), rgb::capture_state(mesh));
 }
 
 TEST(MeshFile, RefiningAfterLoadingMatchesRefiningWithoutSaving) {
@@ -89,7 +112,7 @@ TEST(MeshFile, RefiningAfterLoadingMatchesRefiningWithoutSaving) {
     for (int seed = 1; seed < 4; ++seed) {
         edit(original, seed);
         edit(restored, seed);
-        test::expect_identical(rgb::capture_state(restored), rgb::capture_state(original));
+        EXPECT_TRUE(rgbtest::same_mesh(restored, original));
         restored = round_trip(restored);
     }
 }
@@ -98,9 +121,10 @@ TEST(MeshFile, CoarseningAfterLoadingMatchesCoarseningWithoutSaving) {
     rgb::Mesh original = octahedron();
     for (int seed = 0; seed < 4; ++seed) edit(original, seed);
     rgb::Mesh restored = round_trip(original);
-    rgb::set_level(original, rgb::Region::everywhere(), 0);
-    rgb::set_level(restored, rgb::Region::everywhere(), 0);
-    test::expect_identical(rgb::capture_state(restored), rgb::capture_state(original));
+    rgb::apply_request(original, rgb::LevelRequest{});
+    rgb::apply_request(restored, rgb::LevelRequest{});
+    EXPECT_TRUE(rgbtest::same_mesh(restored, original));
+    EXPECT_TRUE(rgbtest::same_mesh(restored, octahedron()));
 }
 
 TEST(MeshFile, OtherReadersSeeTheDisplayedMesh) {
@@ -124,26 +148,29 @@ TEST(MeshFile, OtherReadersSeeTheDisplayedMesh) {
     for (rgb::VertexId v : mesh.vertices()) EXPECT_EQ(plain.positions[i++], rgb::displayed_position(mesh, v));
 }
 
-TEST(MeshFile, LimitPositionsWhereKnownAndTheRestCounted) {
+TEST(MeshFile, LimitPositionsAreTheLoopLimitOfEveryVertex) {
     rgb::Mesh mesh = octahedron();
-    rgb::set_level(mesh, rgb::Region::sphere({1, 0, 0}, 0.5), 2);
-    SaveReport report;
-    const LoadedMesh plain = read_obj_text(format_obj(mesh, {.positions = SavedPositions::Limit, .state = false}, &report), "limit.obj");
-    std::size_t i = 0, fallbacks = 0;
+    set_level(mesh, {1, 0, 0}, 0.5, 2);
+    const LoadedMesh plain = read_obj_text(format_obj(mesh, {.positions = SavedPositions::Limit, .state = false}), "limit.obj");
+    // Independently of the core: Loop's limit mask applied to the uniform Loop oracle's mesh of the
+    // vertex's level (test support has its own copy of the weights).
+    const LoadedMesh input = read_obj_text(test::kOctahedron, "octahedron.obj");
+    const rgbtest::UniformLoopOracle oracle(input.positions, input.triangles, 2);
+    std::size_t i = 0;
     for (rgb::VertexId v : mesh.vertices()) {
-        const std::optional<glm::dvec3> limit = rgb::try_limit_position(mesh, v);
-        if (!limit) ++fallbacks;
-        EXPECT_EQ(plain.positions[i++], limit ? *limit : rgb::displayed_position(mesh, v));
+        const glm::dvec3 want = rgbtest::oracle_limit(oracle, mesh, v);
+        EXPECT_LT(glm::distance(plain.positions[i++], want), 1e-12) << "vertex " << v.idx;
     }
-    EXPECT_EQ(report.limit_fallbacks, fallbacks);
+    // And the state keeps them, so the file restores.
+    EXPECT_TRUE(rgbtest::same_mesh(round_trip(mesh, {.positions = SavedPositions::Limit}), mesh));
 }
 
 TEST(MeshFile, CorruptStateIsAnErrorNamingItsLine) {
     rgb::Mesh mesh = octahedron();
     edit(mesh, 0);
     std::string text = format_obj(mesh, {});
-    const std::size_t at = text.find("#rgb f 1 ");
-    text.replace(at, 9, "#rgb f 1 x");
+    const std::size_t at = text.find("#rgb a ");
+    text.replace(at, 7, "#rgb a x");
     const std::size_t line = static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(at), '\n')) + 1;
     const ObjError e = test::load_error(text);
     EXPECT_EQ(e.problem(), ObjProblem::BadState);
@@ -155,21 +182,81 @@ TEST(MeshFile, CorruptStateIsAnErrorNamingItsLine) {
     EXPECT_NE(test::load_error(truncated).reason().find("truncated"), std::string::npos);
 }
 
-TEST(MeshFile, StateThatNoLongerMatchesTheFacesIsDroppedWithAWarning) {
+TEST(MeshFile, ReorderedFacesStillRestore) {
     rgb::Mesh mesh = octahedron();
     edit(mesh, 0);
     std::string text = format_obj(mesh, {});
-    // Another program re-saved the faces in a different order but kept the comments.
+    // Another program re-saved the faces in a different order but kept the comments: the same mesh.
     const std::size_t first_face = text.find("\nf ") + 1;
     const std::size_t second_face = text.find("\nf ", first_face) + 1;
     const std::size_t third_face = text.find("\nf ", second_face) + 1;
     const std::string a = text.substr(first_face, second_face - first_face), b = text.substr(second_face, third_face - second_face);
     text.replace(first_face, a.size() + b.size(), b + a);
     const LoadedMesh loaded = read_obj_text(text, "edited.obj");
-    EXPECT_FALSE(loaded.state);
+    ASSERT_TRUE(loaded.adaptive);
+    EXPECT_TRUE(rgbtest::same_mesh(*loaded.adaptive, mesh));
+}
+
+TEST(MeshFile, StateThatNoLongerFitsTheFacesIsDroppedWithAWarning) {
+    rgb::Mesh mesh = octahedron();
+    edit(mesh, 0);
+    std::string text = format_obj(mesh, {});
+    // Another program flipped one face: the state no longer describes the file.
+    const std::size_t face = text.find("\nf ") + 3;
+    const std::size_t end = text.find('\n', face);
+    std::istringstream corners(text.substr(face, end - face));
+    std::string x, y, z;
+    corners >> x >> y >> z;
+    text.replace(face, end - face, x + " " + z + " " + y);
+    const LoadedMesh loaded = read_obj_text(text, "edited.obj");
+    EXPECT_FALSE(loaded.adaptive);
     ASSERT_FALSE(loaded.warnings.empty());
-    EXPECT_NE(loaded.warnings[0].find("does not match the faces"), std::string::npos);
-    EXPECT_EQ(build_mesh(loaded, "edited.obj").num_faces(), mesh.num_faces());
+    EXPECT_NE(loaded.warnings[0].find("does not match the file"), std::string::npos) << loaded.warnings[0];
+}
+
+TEST(MeshFile, PositionsEditedElsewhereWinOverTheState) {
+    rgb::Mesh mesh = octahedron();
+    edit(mesh, 1);
+    // Another program scaled the mesh by 2 and kept the comments.
+    const LoadedMesh original = read_obj_text(format_obj(mesh, {}), "saved.obj");
+    std::string scaled;
+    for (const glm::dvec3& p : original.positions) {
+        scaled += "v";
+        for (int i = 0; i < 3; ++i) append_double(scaled, 2.0 * p[i]);
+        scaled += '\n';
+    }
+    const std::string text = format_obj(mesh, {});
+    scaled += text.substr(text.find("\nf ") + 1);
+    const LoadedMesh loaded = read_obj_text(scaled, "scaled.obj");
+    EXPECT_FALSE(loaded.adaptive);
+    ASSERT_FALSE(loaded.warnings.empty());
+    EXPECT_NE(loaded.warnings[0].find("positions differ"), std::string::npos) << loaded.warnings[0];
+    ASSERT_EQ(loaded.positions.size(), original.positions.size());
+    for (std::size_t i = 0; i < loaded.positions.size(); ++i) EXPECT_EQ(loaded.positions[i], 2.0 * original.positions[i]);
+}
+
+TEST(MeshFile, OtherProgramsHashRgbCommentsAreIgnoredWithAWarning) {
+    const LoadedMesh loaded = read_obj_text(std::string("#rgb hello\n") + test::kOctahedron, "foreign.obj");
+    EXPECT_FALSE(loaded.adaptive);
+    EXPECT_EQ(loaded.triangles.size(), 8u);
+    ASSERT_FALSE(loaded.warnings.empty());
+    EXPECT_NE(loaded.warnings[0].find("not an rgbsub state"), std::string::npos) << loaded.warnings[0];
+}
+
+TEST(MeshFile, StatesOfAnotherFormatVersionAreRefusedByName) {
+    const std::string text = std::string(test::kOctahedron) + "#rgb state 1 6 8 6\n#rgb end\n";
+    const ObjError e = test::load_error(text);
+    EXPECT_EQ(e.problem(), ObjProblem::BadState);
+    EXPECT_NE(e.reason().find("state format version 1"), std::string::npos) << e.what();
+}
+
+TEST(MeshFile, HugeValuesInTheStateAreRefusedLikeCoordinates) {
+    rgb::Mesh mesh = octahedron();
+    edit(mesh, 1);
+    std::string text = format_obj(mesh, {});
+    const std::size_t at = text.find("#rgb p ");
+    text.replace(at, 7, "#rgb p 1e300 ");
+    EXPECT_NE(test::load_error(text).reason().find("1e12"), std::string::npos);
 }
 
 }  // namespace

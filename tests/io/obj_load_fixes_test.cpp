@@ -31,7 +31,7 @@ TEST(ObjLoadFixes, CleanMeshLoadsWithoutWarnings) {
     ASSERT_EQ(mesh.triangles.size(), 8u);
     EXPECT_EQ(mesh.triangles[0], (rgb::Triangle{0, 2, 4}));
     EXPECT_TRUE(mesh.warnings.empty());
-    EXPECT_FALSE(mesh.state);
+    EXPECT_FALSE(mesh.adaptive);
 }
 
 TEST(ObjLoadFixes, CoordinatesAreExactAtSeventeenDigits) {

@@ -11,6 +11,7 @@
 #include "render/headless.h"
 #include "rgb/mesh.h"
 #include "rgb/refine.h"
+#include "rgb/requests.h"
 #include "test_meshes.h"
 
 namespace {
@@ -31,7 +32,7 @@ struct GoldenCase {
 
 rgb::Mesh locally_refined_sphere() {
     rgb::Mesh mesh = render_test::icosphere(1);
-    rgb::set_level(mesh, rgb::Region::sphere({0.3, 0.3, 0.9}, 0.6), 3);
+    rgb::set_level(mesh, 3, rgb::Sphere{{0.3, 0.3, 0.9}, 0.6});
     return mesh;
 }
 

@@ -17,6 +17,7 @@
 #include "rgb/mesh.h"
 #include "rgb/loop_geometry.h"
 #include "rgb/refine.h"
+#include "rgb/requests.h"
 #include "test_meshes.h"
 
 namespace {
@@ -49,7 +50,7 @@ std::string file_bytes(const std::filesystem::path& path) {
 
 TEST(Screenshot, SameInputGivesTheSameBytes) {
     rgb::Mesh mesh = render_test::icosphere(2);
-    rgb::set_level(mesh, rgb::Region::sphere({0.0, 0.0, 1.0}, 0.5), 2);
+    rgb::set_level(mesh, 2, rgb::Sphere{{0.0, 0.0, 1.0}, 0.5});
     const HeadlessView view{{160, 120}, 30.0f, 20.0f};
     const Image first = render::render_headless(mesh, rgb_options(true), view);
     const Image second = render::render_headless(mesh, rgb_options(true), view);
@@ -79,7 +80,7 @@ TEST(Screenshot, BaseMeshInRgbModeIsAllGreen) {
 // (sqrt(2)/2) of it, a band of area at most sqrt(2) * outline length.
 TEST(Screenshot, ColourAreasMatchTheProjectedTriangles) {
     rgb::Mesh mesh = render_test::grid(4);
-    rgb::set_level(mesh, rgb::Region::sphere({-1.0, 0.0, -1.0}, 1.0), 3);
+    rgb::set_level(mesh, 3, rgb::Sphere{{-1.0, 0.0, -1.0}, 1.0});
     const HeadlessView view{{400, 400}, 0.0f, 90.0f};
     const render_test::PixelCounts counts = count_pixels(render::render_headless(mesh, rgb_options(false), view));
 
@@ -140,7 +141,7 @@ TEST(Screenshot, SphereSilhouetteCoversItsProjectedArea) {
 
 TEST(Screenshot, LevelLegendShowsEachLevelsColour) {
     rgb::Mesh mesh = render_test::icosphere(1);
-    rgb::set_level(mesh, rgb::Region::sphere({0.0, 0.0, 1.0}, 0.7), 2);
+    rgb::set_level(mesh, 2, rgb::Sphere{{0.0, 0.0, 1.0}, 0.7});
     RenderOptions options;
     options.colouring = Colouring::Level;
     const HeadlessView view{{240, 200}, 0.0f, 0.0f};

@@ -9,6 +9,7 @@
 #include "render/surface_geometry.h"
 #include "rgb/mesh.h"
 #include "rgb/refine.h"
+#include "rgb/requests.h"
 #include "test_meshes.h"
 
 namespace {
@@ -39,9 +40,9 @@ TEST_P(SurfaceGeometryTest, IncrementalUpdatesEqualARebuildThroughRefineAndCoars
     SurfaceGeometry geometry(GetParam());
     geometry.rebuild(mesh);
 
-    const rgb::Region cap = rgb::Region::sphere({0.0, 0.0, 1.0}, 0.6);
+    const rgb::Sphere cap{{0.0, 0.0, 1.0}, 0.6};
     for (int target : {1, 3, 2, 0}) {
-        rgb::set_level(mesh, cap, target);
+        rgb::set_level(mesh, target, cap);
         geometry.update(mesh, changes);
         changes.clear();
         SCOPED_TRACE(testing::Message() << "after set_level " << target);
@@ -54,7 +55,7 @@ TEST_P(SurfaceGeometryTest, ColourCountsFollowTheMesh) {
     MeshChanges changes(mesh);
     SurfaceGeometry geometry(GetParam());
     geometry.rebuild(mesh);
-    rgb::set_level(mesh, rgb::Region::sphere({1.0, 0.0, 0.0}, 0.5), 2);
+    rgb::set_level(mesh, 2, rgb::Sphere{{1.0, 0.0, 0.0}, 0.5});
     geometry.update(mesh, changes);
 
     std::size_t counts[3] = {0, 0, 0};

@@ -46,6 +46,11 @@ TEST_F(MergeOperators, GBGBMergeUndoesTheOppositeRRSplit) {
 TEST_F(MergeOperators, G2B2MergeUndoesTheSameRRSplit) {
     const auto [m1, m2] = make_both_sides_red(true);
     const rgb::VertexId v = split_checked(mesh, a, b, rgb::SplitKind::RR_Same);
+    // The split keeps the normal form (red edge v-y on the side of y); the raw RR-split of spec
+    // §2.2.3 leaves the other diagonal m2-a, the G,B,B,G star this merge undoes. One RB-swap gets there.
+    ASSERT_EQ(rgb::merge_kind(mesh, v), std::nullopt);
+    rgb::rb_swap(mesh, mesh.find_edge(v, y));
+    ASSERT_TRUE(has_faces(mesh, {blue(0, a, v, m1, m1, a), green(1, v, b, m1), green(1, b, v, m2), blue(0, v, a, m2, a, m2)}));
     ASSERT_EQ(rgb::merge_kind(mesh, v), rgb::MergeKind::G2B2);
     rgb::merge_vertex(mesh, v);
     EXPECT_EQ(mesh.num_faces(), 12u);
@@ -59,6 +64,10 @@ TEST(BoundaryMerges, GBAndR2MergesUndoTheBoundaryBisections) {
     const rgb::VertexId A(0), B(1), C(2);
     const rgb::VertexId M = split_checked(mesh, A, B, rgb::SplitKind::BoundaryG);
     const rgb::VertexId N = split_checked(mesh, B, C, rgb::SplitKind::BoundaryR);
+    // The split leaves the normal form, red edge N-A (spec §3.5); the boundary GB-merge undoes the
+    // raw bisection's diagonal M-C, one RB-swap away.
+    ASSERT_EQ(rgb::merge_kind(mesh, N), std::nullopt);
+    rgb::rb_swap(mesh, mesh.find_edge(N, A));
     ASSERT_EQ(rgb::merge_kind(mesh, N), rgb::MergeKind::BoundaryGB);
     rgb::merge_vertex(mesh, N);
     EXPECT_TRUE(faces_are(mesh, {red(0, A, M, C, M, C), red(0, M, B, C, C, M)}));

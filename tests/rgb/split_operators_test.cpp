@@ -3,6 +3,8 @@
 // bisections are covered by worked example A (worked_examples_test.cpp).
 #include <gtest/gtest.h>
 
+#include "rgb/invariants.h"
+
 #include "support/checked_operators.h"
 #include "support/face_expectations.h"
 #include "support/octahedron_edge.h"
@@ -51,12 +53,17 @@ TEST_F(SplitOperators, RRSplitOppositeGivesGreenBlueGreenBlue) {
     EXPECT_TRUE(invariants_hold(mesh));
 }
 
-TEST_F(SplitOperators, RRSplitSameGivesTwoAdjacentBlues) {
+TEST_F(SplitOperators, RRSplitSameKeepsTheNormalForm) {
     const auto [m1, m2] = make_both_sides_red(true);
     ASSERT_TRUE(has_faces(mesh, {red(0, b, m1, a, m1, a), red(0, m2, b, a, m2, a)}));
     const rgb::VertexId v = split_checked(mesh, a, b, rgb::SplitKind::RR_Same);
-    EXPECT_TRUE(has_faces(mesh, {blue(0, a, v, m1, m1, a), green(1, v, b, m1), green(1, b, v, m2), blue(0, v, a, m2, a, m2)}));
+    // Side (a,b,x): split edges b->x and a->b meet at b, and b->x leaves b counter-clockwise, so the
+    // red edge stays m1-a (spec §3.5). Side (b,a,y): split edges b->a and y->b meet at b, b->a leaves
+    // it, so the red edge becomes v-y instead of the raw operator's m2-a (spec §2.2.3's G,B,B,G star).
+    EXPECT_TRUE(has_faces(mesh, {green(1, v, b, m1), blue(0, a, v, m1, m1, a), red(0, m1, x, a, a, m1), green(1, b, v, m2),
+                                 red(0, v, a, y, y, v), blue(0, v, y, m2, v, y)}));
     EXPECT_TRUE(invariants_hold(mesh));
+    EXPECT_TRUE(rgb::check_normal_form(mesh).ok());
 }
 
 TEST_F(SplitOperators, RedEdgesAndCoarserSidesAreNotSplittable) {

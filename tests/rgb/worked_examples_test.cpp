@@ -26,8 +26,11 @@ TEST(WorkedExampleA, OneTriangleThreeBoundarySplitsAndBack) {
     const std::vector<ExpectedFace> step1{red(0, A, M, C, M, C), red(0, M, B, C, C, M)};
     ASSERT_TRUE(faces_are(mesh, step1));
 
+    // Spec §9.2 lists the variant with red edge M-C; the normal form of spec §3.5 takes the other
+    // diagonal: the split edges AB and BC share corner B, the edge leaving B counter-clockwise is
+    // B->C, so the red edge runs from its midpoint N to the far corner A (and enters N, the red's top).
     const rgb::VertexId N = split_checked(mesh, B, C, rgb::SplitKind::BoundaryR);
-    ASSERT_TRUE(faces_are(mesh, {red(0, A, M, C, M, C), green(1, B, N, M), blue(0, N, C, M, C, M)}));
+    ASSERT_TRUE(faces_are(mesh, {green(1, B, N, M), red(0, N, C, A, A, N), blue(0, N, A, M, N, A)}));
     const rgb::VertexId P = split_checked(mesh, C, A, rgb::SplitKind::BoundaryR);
     // The blues B0(N,C,M) and B0(C,P,M) shared the red edge M-C and were BB-swapped.
     ASSERT_TRUE(faces_are(mesh, {green(1, B, N, M), green(1, P, A, M), green(1, M, N, P), green(1, N, C, P)}));
@@ -57,13 +60,18 @@ struct TetrahedronStep {
 };
 
 TEST(WorkedExampleB, TetrahedronToLevel1InLexicographicOrder) {
-    // Spec §9.3's table. Steps 4-6 are RR-splits of the "same" kind: every red edge of the
-    // still-unsplit faces 031, 023 and 132 was drawn from a midpoint to v3, the endpoint that both
-    // reds of each remaining edge share.
+    // Spec §9.3's table, in the normal form of spec §3.5. Step 4 splits 0-3 between faces 031 and 023,
+    // each bisected once with its red edge drawn to v3: both reds reach v3, the "same" case. That
+    // leaves 031 with split edges 0->3 and 1->0 at corner 0; the normal form's red edge runs from the
+    // midpoint of 0->3 (the edge leaving 0 counter-clockwise) to v1. So at step 5 (edge 1-3) the red
+    // of 031 reaches v1 while the red of 132 (bisected at 1-2, red edge to v3) reaches v3: the
+    // "opposite" case. Then 132 has split edges 1->3 and 2->1 at corner 1 (red edge from the midpoint
+    // of 1->3 to v2) and 023 has 0->2 and 3->0 at corner 0 (red edge from the midpoint of 0->2 to v3):
+    // at step 6 (edge 2-3) they reach v2 and v3, "opposite" again. Colour counts follow spec §1.3.
     const std::vector<TetrahedronStep> steps{
-        {0, 1, rgb::SplitKind::GG, 6, {2, 4, 0}},       {0, 2, rgb::SplitKind::RG, 8, {2, 5, 1}},
-        {1, 2, rgb::SplitKind::RG, 10, {4, 6, 0}},      {0, 3, rgb::SplitKind::RR_Same, 12, {6, 4, 2}},
-        {1, 3, rgb::SplitKind::RR_Same, 14, {10, 2, 2}}, {2, 3, rgb::SplitKind::RR_Same, 16, {16, 0, 0}}};
+        {0, 1, rgb::SplitKind::GG, 6, {2, 4, 0}},           {0, 2, rgb::SplitKind::RG, 8, {2, 5, 1}},
+        {1, 2, rgb::SplitKind::RG, 10, {4, 6, 0}},          {0, 3, rgb::SplitKind::RR_Same, 12, {6, 4, 2}},
+        {1, 3, rgb::SplitKind::RR_Opposite, 14, {10, 2, 2}}, {2, 3, rgb::SplitKind::RR_Opposite, 16, {16, 0, 0}}};
     rgb::Mesh mesh = make_rgb_mesh(tetrahedron());
     EXPECT_EQ(colour_counts(mesh), (ColourCounts{4, 0, 0}));
     for (const TetrahedronStep& s : steps) {

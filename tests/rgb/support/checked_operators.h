@@ -5,7 +5,7 @@
 
 namespace rgbtest {
 
-// Splits the edge {a, b} after expecting split_kind == `expected` and a complete Loop stencil;
+// Splits the edge {a, b} after expecting split_kind == `expected`;
 // returns the new vertex.
 rgb::VertexId split_checked(rgb::Mesh& mesh, rgb::VertexId a, rgb::VertexId b, rgb::SplitKind expected);
 

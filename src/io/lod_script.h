@@ -1,0 +1,72 @@
+#pragma once
+// The script language of level-of-detail edits, shared by `rgbsub apply` and the editor's stroke
+// recorder: one edit per line, every coordinate in base space (spec §3.5), so a script means the same
+// on any storage of the mesh and replays to the identical mesh.
+//
+//   level N [sphere X Y Z R]     set the level to N in the ball (everywhere without one)
+//   refine N [sphere X Y Z R]    at least level N there
+//   coarsen N [sphere X Y Z R]   at most level N there
+//   budget TRIANGLES             the LOD driver: refine the longest edges up to the budget, or trim
+//   brush refine|coarsen|set LEVEL RADIUS [FALLOFF]
+//                                the brush that the following dabs use (FALLOFF: fraction 0..1)
+//   dab X Y Z [VX VY VZ]         one dab at X Y Z; with a view direction, only faces facing it and
+//                                connected to the dab's face through the surface are painted
+// Blank lines and lines starting with # are skipped.
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "rgb/dab.h"
+#include "rgb/requests.h"
+
+namespace rgb {
+class Mesh;
+}
+
+namespace rgbio {
+
+struct BudgetEdit {
+    std::size_t triangles = 0;
+};
+struct BrushEdit {
+    rgb::BrushMode mode = rgb::BrushMode::Refine;
+    int level = 0;
+    double radius = 0.0;
+    double falloff = 0.0;
+};
+struct DabEdit {
+    glm::dvec3 centre{0.0};
+    std::optional<glm::dvec3> view;
+};
+
+struct ScriptLine {
+    std::size_t line = 0;
+    std::string text;  // as written, for --timings
+    std::variant<rgb::LevelRequest, BudgetEdit, BrushEdit, DabEdit> edit;
+};
+
+// Throws ObjError "SCRIPT:LINE: reason" (Unreadable when the file cannot be read, Syntax for a bad
+// line, including a dab before any brush line) so that the exit codes match those of mesh files.
+std::vector<ScriptLine> read_lod_script(const std::string& file);
+std::vector<ScriptLine> parse_lod_script(const std::string& text, const std::string& file);
+
+// Runs scripts line by line, remembering the brush.
+class ScriptRunner {
+public:
+    rgb::RequestStats run(rgb::Mesh& mesh, const ScriptLine& line);
+    // The dab a dab line makes with the current brush.
+    rgb::Dab dab(const DabEdit& edit) const;
+
+private:
+    BrushEdit brush_;
+};
+
+// The lines the editor's stroke recorder writes; parse_lod_script reads them back exactly.
+std::string format_brush_line(const BrushEdit& brush);
+std::string format_dab_line(const DabEdit& dab);
+
+}  // namespace rgbio

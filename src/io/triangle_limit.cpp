@@ -1,0 +1,26 @@
+#include "io/triangle_limit.h"
+
+#include <cmath>
+
+#include <unistd.h>
+
+#include "rgb/mesh.h"
+#include "rgb/requests.h"
+
+namespace rgbio {
+
+std::size_t default_triangle_limit() {
+    const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGESIZE);
+    if (pages <= 0 || page <= 0) return 100'000'000;
+    return static_cast<std::size_t>(pages) * static_cast<std::size_t>(page) / kBytesPerTriangleBudget;
+}
+
+void check_request_size(const rgb::Mesh& mesh, const rgb::LevelRequest& request, std::size_t limit) {
+    const double estimate = rgb::estimated_triangles(mesh, request);
+    if (estimate <= static_cast<double>(limit)) return;
+    throw TooLarge("the request would make about " + std::to_string(static_cast<unsigned long long>(std::ceil(estimate))) +
+                   " triangles, more than the limit of " + std::to_string(limit) +
+                   " (set by this machine's memory; --max-triangles changes it)");
+}
+
+}  // namespace rgbio

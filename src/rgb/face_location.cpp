@@ -1,0 +1,132 @@
+#include "rgb/face_location.h"
+
+#include <optional>
+#include <queue>
+#include <stdexcept>
+#include <unordered_set>
+#include <vector>
+
+#include "rgb/mesh.h"
+
+namespace rgb {
+
+namespace {
+
+// The three corners of f as numerators over 2^level in base face g, if f lies in g.
+std::optional<std::array<std::array<std::uint32_t, 3>, 3>> corners_in(const Mesh& mesh, FaceId f, std::uint32_t g, int level) {
+    std::array<std::array<std::uint32_t, 3>, 3> out;
+    const auto& fv = mesh.face_vertices(f);
+    for (int c = 0; c < 3; ++c) {
+        const auto p = in_face(mesh.base(), mesh.address(fv[c]), g);
+        if (!p) return std::nullopt;
+        out[c] = numerators_at(*p, level);
+    }
+    // All three corners on g's boundary does not put f inside g: its centroid must be interior.
+    for (int i = 0; i < 3; ++i)
+        if (out[0][i] + out[1][i] + out[2][i] == 0) return std::nullopt;
+    return out;
+}
+
+std::int64_t orientation(const std::array<std::uint32_t, 3>& p, const std::array<std::uint32_t, 3>& q,
+                         const std::array<std::uint32_t, 3>& r) {
+    // In the plane of the two free barycentric coordinates (a1, a2).
+    const std::int64_t ux = std::int64_t(q[1]) - p[1], uy = std::int64_t(q[2]) - p[2];
+    const std::int64_t vx = std::int64_t(r[1]) - p[1], vy = std::int64_t(r[2]) - p[2];
+    return ux * vy - uy * vx;
+}
+
+}  // namespace
+
+std::uint32_t base_face_of(const Mesh& mesh, FaceId f) {
+    const BaseMesh& base = mesh.base();
+    int level = 0;
+    for (VertexId v : mesh.face_vertices(f)) level = std::max(level, mesh.level(v));
+    // Candidates: each corner's own face and, for a corner on a base edge, the face across it.
+    for (VertexId v : mesh.face_vertices(f)) {
+        const SurfacePoint p = mesh.address(v);
+        if (corners_in(mesh, f, p.face, level)) return p.face;
+        for (std::uint32_t i = 0; i < 3; ++i) {
+            const std::uint32_t o = base.opposite(3 * p.face + i);
+            if (o != BaseMesh::kNone && corners_in(mesh, f, o / 3, level)) return o / 3;
+        }
+    }
+    // Three base vertices: f is a base face still.
+    const VertexId v0 = mesh.face_vertices(f)[0];
+    std::uint32_t h = base.vertex_halfedge(v0.idx);
+    do {
+        if (corners_in(mesh, f, h / 3, level)) return h / 3;
+        h = base.ccw_rotated(h);
+    } while (h != BaseMesh::kNone && h != base.vertex_halfedge(v0.idx));
+    throw std::logic_error("base_face_of: the face lies in no base face");
+}
+
+std::array<SurfacePoint, 3> parent_triangle(const Mesh& mesh, FaceId f, std::uint32_t base_face) {
+    const int l = mesh.level(f);
+    const auto c = *corners_in(mesh, f, base_face, l + 1);
+    // The centroid, in units of Σl, lies strictly inside the cell of Σl that holds f: the integer
+    // parts of its barycentric coordinates sum to 2^l - 1 in an upright cell, 2^l - 2 in an upside-down one.
+    std::array<std::uint32_t, 3> cell;
+    std::uint32_t sum = 0;
+    for (int i = 0; i < 3; ++i) {
+        cell[i] = (c[0][i] + c[1][i] + c[2][i]) / 6;
+        sum += cell[i];
+    }
+    const bool upright = sum + 1 == (std::uint32_t(1) << l);
+    std::array<SurfacePoint, 3> corners;
+    for (int k = 0; k < 3; ++k) {
+        SurfacePoint p;
+        p.face = base_face;
+        p.level = l;
+        p.a = cell;
+        if (upright) {
+            p.a[k] += 1;
+        } else {
+            p.a[(k + 1) % 3] += 1;
+            p.a[(k + 2) % 3] += 1;
+        }
+        corners[k] = reduced(p);
+    }
+    return corners;
+}
+
+FaceId face_containing(const Mesh& mesh, std::uint32_t base_face, const std::array<std::uint32_t, 3>& target, int level) {
+    // Best-first search inside the base face: always expand the face whose centroid is nearest the
+    // target. It reaches the target along about a straight line, and it cannot miss it.
+    auto distance = [&](const std::array<std::array<std::uint32_t, 3>, 3>& c) {
+        double d = 0;
+        for (int i = 0; i < 3; ++i) {
+            const double x = (double(c[0][i]) + c[1][i] + c[2][i]) / 3.0 - target[i];
+            d += x * x;
+        }
+        return d;
+    };
+    using Entry = std::pair<double, std::uint32_t>;
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
+    std::unordered_set<std::uint32_t> seen;
+    const VertexId corner(mesh.base().face(base_face)[0]);
+    HalfedgeId h = mesh.vertex_halfedge(corner);
+    do {
+        const FaceId f = Mesh::face(h);
+        if (const auto c = corners_in(mesh, f, base_face, level)) {
+            open.push({distance(*c), f.idx});
+            seen.insert(f.idx);
+        }
+        h = mesh.ccw_rotated(h);
+    } while (h.valid() && h != mesh.vertex_halfedge(corner));
+    while (!open.empty()) {
+        const FaceId f(open.top().second);
+        open.pop();
+        const auto c = *corners_in(mesh, f, base_face, level);
+        if (orientation(c[0], c[1], target) >= 0 && orientation(c[1], c[2], target) >= 0 &&
+            orientation(c[2], c[0], target) >= 0)
+            return f;
+        for (int i = 0; i < 3; ++i) {
+            const HalfedgeId o = mesh.opposite(Mesh::halfedge(f, i));
+            if (!o.valid() || !seen.insert(Mesh::face(o).idx).second) continue;
+            if (const auto n = corners_in(mesh, Mesh::face(o), base_face, level)) open.push({distance(*n), Mesh::face(o).idx});
+        }
+    }
+    throw std::logic_error("face_containing: the point is not in the base face");
+}
+
+}  // namespace rgb

@@ -1,0 +1,52 @@
+#pragma once
+// Exact Loop values of any vertex of the uniform hierarchy Σk, computed from the base mesh alone by
+// walking the hierarchy's addresses (surface_point.h), whether or not the adaptive mesh holds the
+// vertex or its neighbours. The adaptive mesh uses it where its own neighbourhood lacks what a
+// formula needs (a coarser vertex's ring at its own level, spec §4.4); so no extra refinement is
+// ever needed for geometry, and every vertex set has its Loop positions.
+//
+// Every value is computed with the formulas of loop_rules.h from values computed the same way, so it
+// equals, bit for bit, what the mesh computes from its own vertices.
+#include <cstdint>
+#include <unordered_map>
+
+#include <glm/vec3.hpp>
+
+#include "rgb/surface_point.h"
+
+namespace rgb {
+
+class BaseMesh;
+
+class HierarchyEvaluator {
+public:
+    explicit HierarchyEvaluator(const BaseMesh& base) : base_(base) {}
+
+    // p^l(p) for l = p.level: the position the vertex gets when it is inserted.
+    glm::dvec3 insertion_position(const SurfacePoint& p);
+    // p^inf(p).
+    glm::dvec3 limit_position(const SurfacePoint& p);
+    // p^k(p) for k >= p.level.
+    glm::dvec3 control_point(const SurfacePoint& p, int k);
+
+private:
+    struct Key {
+        std::uint32_t face, a0, a1;
+        int level;
+        friend bool operator==(const Key&, const Key&) = default;
+    };
+    struct KeyHash {
+        std::size_t operator()(const Key& k) const noexcept {
+            std::uint64_t h = (std::uint64_t(k.face) << 32) ^ (std::uint64_t(k.a0) * 0x9e3779b97f4a7c15ull) ^
+                              (std::uint64_t(k.a1) << 17) ^ static_cast<std::uint64_t>(k.level);
+            return static_cast<std::size_t>(h ^ (h >> 29));
+        }
+    };
+    Key key(const SurfacePoint& p) const;
+    double gamma(const SurfacePoint& p) const;
+
+    const BaseMesh& base_;
+    std::unordered_map<Key, glm::dvec3, KeyHash> insertion_, limit_;
+};
+
+}  // namespace rgb

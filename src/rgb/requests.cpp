@@ -1,0 +1,397 @@
+#include "rgb/requests.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <deque>
+#include <stdexcept>
+#include <string>
+
+#include <glm/geometric.hpp>
+
+#include "rgb/base_face_index.h"
+#include "rgb/face_location.h"
+#include "rgb/mesh.h"
+#include "rgb/operators.h"
+#include "rgb/refine.h"
+#include "rgb/triangle_geometry.h"
+
+namespace rgb {
+
+namespace {
+
+// Counts splits and removals and hands the faces each operator creates to the request's work list.
+class RequestLog : public MeshObserver {
+public:
+    explicit RequestLog(Mesh& mesh) : mesh_(mesh) { mesh_.add_observer(this); }
+    ~RequestLog() override { mesh_.remove_observer(this); }
+    RequestLog(const RequestLog&) = delete;
+    RequestLog& operator=(const RequestLog&) = delete;
+
+    void vertex_added(const Mesh&, VertexId, VertexId, VertexId) override { ++stats.splits; }
+    void vertex_removed(const Mesh&, VertexId) override { ++stats.removals; }
+    void face_added(const Mesh&, FaceId f) override { added.push_back(f); }
+
+    std::vector<FaceId> added;
+    RequestStats stats;
+
+private:
+    Mesh& mesh_;
+};
+
+// Per-call visit marks over face or vertex slots that cost O(1) to reset.
+class Marks {
+public:
+    void start(std::size_t capacity) {
+        if (stamp_.size() < capacity) stamp_.resize(capacity, 0);
+        if (++current_ == 0) {
+            std::fill(stamp_.begin(), stamp_.end(), 0);
+            current_ = 1;
+        }
+    }
+    bool marked(std::uint32_t i) const { return i < stamp_.size() && stamp_[i] == current_; }
+    // Returns false if i was marked already.
+    bool mark(std::uint32_t i) {
+        if (i >= stamp_.size()) stamp_.resize(std::max<std::size_t>(i + 1, 2 * stamp_.size()), 0);
+        if (stamp_[i] == current_) return false;
+        stamp_[i] = current_;
+        return true;
+    }
+    void unmark(std::uint32_t i) {
+        if (i < stamp_.size()) stamp_[i] = 0;
+    }
+
+private:
+    std::vector<std::uint32_t> stamp_;
+    std::uint32_t current_ = 0;
+};
+
+std::array<glm::dvec3, 3> base_space(const BaseMesh& base, const std::array<SurfacePoint, 3>& t) {
+    return {base_space_position(base, t[0]), base_space_position(base, t[1]), base_space_position(base, t[2])};
+}
+
+std::array<glm::dvec3, 3> base_triangle(const BaseMesh& base, std::uint32_t f) {
+    const Triangle& t = base.face(f);
+    return {base.position(t[0]), base.position(t[1]), base.position(t[2])};
+}
+
+// Which triangles of the hierarchy meet a region. Base faces the ball contains meet it in every
+// sub-triangle without a test; base faces it misses never do; only the others test exactly. The
+// answer for a triangle depends on nothing but the triangle and the region, whichever face or
+// vertex asks.
+class RegionTest {
+public:
+    // `allowed` (sorted base faces, empty for all) must outlive the test.
+    RegionTest(const Mesh& mesh, const std::optional<Sphere>& sphere, const std::vector<std::uint32_t>& allowed_faces, double dilation)
+        : base_(mesh.base()), allowed_(allowed_faces) {
+        if (!sphere) {
+            whole_ = true;
+            return;
+        }
+        sphere_ = *sphere;
+        sphere_.radius += dilation;
+        for (std::uint32_t f : base_.face_index().faces_meeting_sphere(sphere_.centre, sphere_.radius)) {
+            if (!allowed(f)) continue;
+            meeting_.push_back(f);
+            contained_.push_back(sphere_contains_triangle(base_triangle(base_, f), sphere_.centre, sphere_.radius));
+        }
+    }
+
+    const std::vector<std::uint32_t>& base_faces_meeting() const { return meeting_; }
+    bool whole() const { return whole_; }
+
+    bool base_face_meets(std::uint32_t f) const { return whole_ ? allowed(f) : position(f) != meeting_.size(); }
+
+    bool meets(std::uint32_t base_face, const std::array<SurfacePoint, 3>& triangle) const {
+        if (whole_) return allowed(base_face);
+        const std::size_t i = position(base_face);
+        if (i == meeting_.size()) return false;
+        return contained_[i] || triangle_meets_sphere(base_space(base_, triangle), sphere_.centre, sphere_.radius);
+    }
+
+private:
+    bool allowed(std::uint32_t f) const { return allowed_.empty() || std::binary_search(allowed_.begin(), allowed_.end(), f); }
+    std::size_t position(std::uint32_t f) const {
+        const auto it = std::lower_bound(meeting_.begin(), meeting_.end(), f);
+        return it != meeting_.end() && *it == f ? static_cast<std::size_t>(it - meeting_.begin()) : meeting_.size();
+    }
+
+    const BaseMesh& base_;
+    const std::vector<std::uint32_t>& allowed_;
+    bool whole_ = false;
+    Sphere sphere_;
+    std::vector<std::uint32_t> meeting_;  // sorted
+    std::vector<bool> contained_;
+};
+
+// Barycentric coordinates of the point of triangle (a, b, c) nearest to p (Ericson §5.1.5).
+std::array<double, 3> nearest_barycentric(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+    const glm::dvec3 ab = b - a, ac = c - a, ap = p - a;
+    const double d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
+    if (d1 <= 0.0 && d2 <= 0.0) return {1, 0, 0};
+    const glm::dvec3 bp = p - b;
+    const double d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
+    if (d3 >= 0.0 && d4 <= d3) return {0, 1, 0};
+    const double vc = d1 * d4 - d3 * d2;
+    if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) {
+        const double v = d1 / (d1 - d3);
+        return {1 - v, v, 0};
+    }
+    const glm::dvec3 cp = p - c;
+    const double d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
+    if (d6 >= 0.0 && d5 <= d6) return {0, 0, 1};
+    const double vb = d5 * d2 - d1 * d6;
+    if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) {
+        const double w = d2 / (d2 - d6);
+        return {1 - w, 0, w};
+    }
+    const double va = d3 * d6 - d5 * d4;
+    if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0) {
+        const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+        return {0, 1 - w, w};
+    }
+    const double denom = 1.0 / (va + vb + vc);
+    return {1 - (vb + vc) * denom, vb * denom, vc * denom};
+}
+
+// Finer than any vertex, so that every vertex's address is an integer point at this level.
+constexpr int kLocateLevel = 24;
+
+// For each base face, the face of the mesh holding the base face's point nearest the ball's centre (or
+// its centroid): its parent triangle meets the region, and the region's faces are connected to it.
+std::vector<FaceId> seed_faces(const Mesh& mesh, std::span<const std::uint32_t> base_faces, const std::optional<Sphere>& sphere) {
+    std::vector<FaceId> seeds;
+    for (std::uint32_t b : base_faces) {
+        const auto t = base_triangle(mesh.base(), b);
+        const auto w = sphere ? nearest_barycentric(sphere->centre, t[0], t[1], t[2]) : std::array<double, 3>{1 / 3.0, 1 / 3.0, 1 / 3.0};
+        const double scale = std::ldexp(1.0, kLocateLevel);
+        std::array<std::uint32_t, 3> target;
+        target[1] = static_cast<std::uint32_t>(std::clamp(std::lround(w[1] * scale), 0l, static_cast<long>(scale)));
+        target[2] = static_cast<std::uint32_t>(std::clamp(std::lround(w[2] * scale), 0l, static_cast<long>(scale) - target[1]));
+        target[0] = static_cast<std::uint32_t>(scale) - target[1] - target[2];
+        const FaceId f = face_containing(mesh, b, target, kLocateLevel);
+        // The located face and its neighbours around its corners cover the target's surroundings,
+        // whatever rounding did to the nearest point.
+        seeds.push_back(f);
+        for (VertexId v : mesh.face_vertices(f)) {
+            const HalfedgeId start = mesh.vertex_halfedge(v);
+            HalfedgeId h = start;
+            do {
+                seeds.push_back(Mesh::face(h));
+                h = mesh.ccw_rotated(h);
+            } while (h.valid() && h != start);
+        }
+    }
+    return seeds;
+}
+
+thread_local Marks face_marks;
+thread_local Marks vertex_marks;
+
+// Visits every live face whose parent triangle meets the region (breadth over face adjacency from the
+// seeds), calling visit(f) once per face; visit may edit the mesh, and faces the edits create are
+// visited too.
+template <class Visit>
+void for_each_region_face(Mesh& mesh, const RegionTest& test, std::vector<FaceId> stack, RequestLog& log, Visit&& visit) {
+    face_marks.start(mesh.face_capacity());
+    while (!stack.empty()) {
+        const FaceId f = stack.back();
+        stack.pop_back();
+        if (!mesh.is_live(f) || !face_marks.mark(f.idx)) continue;
+        const std::uint32_t b = base_face_of(mesh, f);
+        if (!test.base_face_meets(b) || !test.meets(b, parent_triangle(mesh, f, b))) continue;
+        for (int i = 0; i < 3; ++i) {
+            const HalfedgeId o = mesh.opposite(Mesh::halfedge(f, i));
+            if (o.valid() && !face_marks.marked(Mesh::face(o).idx)) stack.push_back(Mesh::face(o));
+        }
+        log.added.clear();
+        visit(f);
+        // New faces may reuse slots visited before: they are new faces, so they get visited.
+        for (FaceId g : log.added) {
+            face_marks.unmark(g.idx);
+            stack.push_back(g);
+        }
+    }
+}
+
+std::vector<FaceId> all_faces(const Mesh& mesh) {
+    std::vector<FaceId> faces;
+    faces.reserve(mesh.num_faces());
+    for (FaceId f : mesh.faces()) faces.push_back(f);
+    return faces;
+}
+
+std::vector<FaceId> starting_faces(const Mesh& mesh, const RegionTest& test, const LevelRequest& request) {
+    if (request.sphere) return seed_faces(mesh, test.base_faces_meeting(), request.sphere);
+    if (!request.base_faces.empty()) return seed_faces(mesh, request.base_faces, std::nullopt);
+    return all_faces(mesh);
+}
+
+// The balls of a request with their levels, each with its own test, and the ball holding them all.
+class Bands {
+public:
+    Bands(const Mesh& mesh, const LevelRequest& request, double dilation)
+        : outer_(mesh, outermost(request), request.base_faces, dilation) {
+        levels_.push_back(request.level);
+        tests_.emplace_back(mesh, request.sphere, request.base_faces, 0.0);
+        for (const LevelBand& band : request.taper) {
+            levels_.push_back(band.level);
+            tests_.emplace_back(mesh, Sphere{request.sphere->centre, band.radius}, request.base_faces, 0.0);
+        }
+    }
+    // The region all bands lie in (dilated as asked).
+    const RegionTest& outer() const { return outer_; }
+    int coarsest() const { return *std::min_element(levels_.begin(), levels_.end()); }
+    // The finest (refine) or coarsest (coarsen) level the bands that meet the triangle ask for.
+    std::optional<int> level(std::uint32_t base_face, const std::array<SurfacePoint, 3>& triangle, bool finest) const {
+        std::optional<int> best;
+        for (std::size_t i = 0; i < tests_.size(); ++i)
+            if ((!best || (finest ? levels_[i] > *best : levels_[i] < *best)) && tests_[i].base_face_meets(base_face) &&
+                tests_[i].meets(base_face, triangle))
+                best = levels_[i];
+        return best;
+    }
+
+private:
+    static std::optional<Sphere> outermost(const LevelRequest& request) {
+        std::optional<Sphere> outer = request.sphere;
+        for (const LevelBand& band : request.taper) outer->radius = std::max(outer->radius, band.radius);
+        return outer;
+    }
+    RegionTest outer_;
+    std::vector<int> levels_;
+    std::deque<RegionTest> tests_;
+};
+
+void refine_region(Mesh& mesh, const LevelRequest& request, RequestLog& log) {
+    const Bands bands(mesh, request, 0.0);
+    for_each_region_face(mesh, bands.outer(), starting_faces(mesh, bands.outer(), request), log, [&](FaceId f) {
+        const std::uint32_t b = base_face_of(mesh, f);
+        const auto target = bands.level(b, parent_triangle(mesh, f, b), true);
+        if (!target || mesh.level(f) >= *target) return;
+        const HalfedgeId h = edge_refining_face(mesh, f);
+        refine_edge(mesh, mesh.from_vertex(h), mesh.to_vertex(h));
+    });
+}
+
+// Whether v lies on an edge of a triangle of level >= the level some band meeting that triangle asks
+// for: its parent triangles are the triangles of Σ(level(v)-1) with v on an edge.
+bool above_its_level(const Mesh& mesh, const Bands& bands, VertexId v) {
+    const PointStencil s = parent_stencil(mesh.base(), mesh.address(v));
+    for (const SurfacePoint& o : s.opposite) {
+        const auto level = bands.level(o.face, {s.ends[0], s.ends[1], o}, false);
+        if (level && mesh.level(v) > *level) return true;
+    }
+    return false;
+}
+
+void coarsen_region(Mesh& mesh, const LevelRequest& request, RequestLog& log) {
+    // Every vertex to remove lies on a triangle of level >= N that meets a ball, so within one such
+    // triangle's size of it.
+    const Bands probe(mesh, request, 0.0);
+    const Bands bands(mesh, request, std::ldexp(mesh.base().longest_edge(), -probe.coarsest()));
+    std::vector<VertexId> doomed;
+    vertex_marks.start(mesh.vertex_capacity());
+    for_each_region_face(mesh, bands.outer(), starting_faces(mesh, bands.outer(), request), log, [&](FaceId f) {
+        for (VertexId v : mesh.face_vertices(f))
+            if (mesh.level(v) > bands.coarsest() && vertex_marks.mark(v.idx) && above_its_level(mesh, probe, v))
+                doomed.push_back(v);
+    });
+    // Finest first; a vertex may already be gone as the dependent of another. Removals add no
+    // vertices, so a slot that is live again is the same vertex.
+    std::stable_sort(doomed.begin(), doomed.end(), [&](VertexId a, VertexId b) { return mesh.level(a) > mesh.level(b); });
+    for (VertexId v : doomed)
+        if (mesh.is_live(v)) remove_with_dependents(mesh, v);
+}
+
+// Everything above level N goes, finest first: each is then removable.
+void coarsen_everywhere(Mesh& mesh, int level) {
+    std::vector<std::vector<VertexId>> by_level;
+    for (VertexId v : mesh.vertices())
+        if (mesh.level(v) > level) {
+            by_level.resize(std::max<std::size_t>(by_level.size(), static_cast<std::size_t>(mesh.level(v)) + 1));
+            by_level[static_cast<std::size_t>(mesh.level(v))].push_back(v);
+        }
+    for (auto it = by_level.rbegin(); it != by_level.rend(); ++it)
+        for (VertexId v : *it) remove_vertex(mesh, v);
+}
+
+void check_level(int level) {
+    if (level < 0 || level > kMaxLevel)
+        throw std::invalid_argument("level " + std::to_string(level) + " is outside 0.." + std::to_string(kMaxLevel));
+}
+
+void check(const LevelRequest& request) {
+    check_level(request.level);
+    for (const LevelBand& band : request.taper) {
+        check_level(band.level);
+        if (!request.sphere || request.kind == RequestKind::Set || !(band.radius > 0.0 && std::isfinite(band.radius)))
+            throw std::invalid_argument("a taper needs a refine or coarsen request with a sphere, and positive radii");
+    }
+    if (request.sphere && !(request.sphere->radius > 0.0 && std::isfinite(request.sphere->radius) &&
+                            std::isfinite(request.sphere->centre.x) && std::isfinite(request.sphere->centre.y) &&
+                            std::isfinite(request.sphere->centre.z)))
+        throw std::invalid_argument("a request's sphere needs a finite centre and a positive radius");
+}
+
+}  // namespace
+
+RequestStats apply_request(Mesh& mesh, const LevelRequest& request) {
+    check(request);
+    RequestLog log(mesh);
+    const bool whole = !request.sphere && request.base_faces.empty();
+    if (request.kind != RequestKind::Refine) {
+        if (whole) coarsen_everywhere(mesh, request.level);
+        else coarsen_region(mesh, request, log);
+    }
+    if (request.kind != RequestKind::Coarsen) {
+        if (whole) refine_uniform(mesh, request.level);
+        else refine_region(mesh, request, log);
+    }
+    return log.stats;
+}
+
+RequestStats set_level(Mesh& mesh, int level, std::optional<Sphere> sphere) {
+    LevelRequest request;
+    request.level = level;
+    request.sphere = sphere;
+    return apply_request(mesh, request);
+}
+
+RequestStats apply_requests(Mesh& mesh, std::span<const LevelRequest> requests) {
+    RequestStats total;
+    for (const LevelRequest& r : requests) total += apply_request(mesh, r);
+    return total;
+}
+
+double estimated_triangles(const Mesh& mesh, const LevelRequest& request) {
+    check(request);
+    if (request.kind == RequestKind::Coarsen) return static_cast<double>(mesh.num_faces());
+    const BaseMesh& base = mesh.base();
+    const double per_base_face = std::ldexp(1.0, 2 * request.level);
+    const RegionTest test(mesh, request.sphere, request.base_faces, 0.0);
+    double added = 0.0;
+    auto add = [&](std::uint32_t f) {
+        if (!request.sphere) {
+            added += per_base_face;
+            return;
+        }
+        // The ball covers at most its disc of the base face, plus the triangles its rim crosses.
+        const auto t = base_triangle(base, f);
+        const double area = 0.5 * glm::length(glm::cross(t[1] - t[0], t[2] - t[0]));
+        const double r = request.sphere->radius;
+        const double edge = std::ldexp(std::max({glm::distance(t[0], t[1]), glm::distance(t[1], t[2]), glm::distance(t[2], t[0])}),
+                                       -request.level);
+        const double covered = area > 0.0 ? (3.15 * r * r + 4.0 * 3.15 * r * edge + 2.0 * edge * edge) / area : 1.0;
+        added += per_base_face * std::min(1.0, covered);
+    };
+    if (test.whole()) {
+        for (std::uint32_t f = 0; f < base.num_faces(); ++f)
+            if (test.base_face_meets(f)) add(f);
+    } else {
+        for (std::uint32_t f : test.base_faces_meeting()) add(f);
+    }
+    return static_cast<double>(mesh.num_faces()) + added;
+}
+
+}  // namespace rgb
