@@ -156,6 +156,24 @@ TEST_P(CreaseClosedForms, DartLimitIsTheFixedPointOfItsRingWhileFarUsesTheSmooth
     }
 }
 
+// Hand-derived (exact rational arithmetic on D_n, docs/loop-creases.md §4.4): where beta_n is rational
+// the dart limit mask is too.
+TEST(DartMasks, LimitMasksOfValences3_4_6AreTheExactFixedPoints) {
+    const std::vector<std::pair<int, std::vector<double>>> expected{
+        {3, {16.0 / 37, 9.0 / 37, 6.0 / 37, 6.0 / 37}},
+        {4, {2944.0 / 6385, 217.0 / 1277, 744.0 / 6385, 868.0 / 6385, 744.0 / 6385}},
+        {6, {110.0 / 213, 7.0 / 71, 29.0 / 426, 35.0 / 426, 6.0 / 71, 35.0 / 426, 29.0 / 426}}};
+    for (const auto& [valence, mask] : expected) {
+        const std::vector<double> computed = dart_limit_mask(valence);
+        ASSERT_EQ(computed.size(), mask.size());
+        for (std::size_t i = 0; i < mask.size(); ++i) EXPECT_NEAR(computed[i], mask[i], 1e-15) << valence << " " << i;
+        // j = 0 is the centre alone; many steps converge to the limit mask.
+        EXPECT_EQ(dart_mask(valence, 0)[0], 1.0);
+        const std::vector<double> far_steps = dart_mask(valence, 80);
+        for (std::size_t i = 0; i < mask.size(); ++i) EXPECT_NEAR(far_steps[i], mask[i], 1e-14);
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(TaggedMeshes, CreaseClosedForms, testing::ValuesIn(crease_cases()),
                          [](const testing::TestParamInfo<CreaseCase>& info) { return info.param.name; });
 
@@ -179,7 +197,7 @@ TEST(CreaseCases, CoverEveryRuleTransitionAndEdgeNeighbourhood) {
     }
     for (const char* expected :
          {"smooth", "dart", "crease", "corner", "crease->dart", "crease->smooth", "dart->smooth", "corner->crease",
-          "corner->smooth", "smooth edge at smooth", "smooth edge at dart", "smooth edge at crease",
+          "corner->dart", "corner->smooth", "smooth edge at smooth", "smooth edge at dart", "smooth edge at crease",
           "smooth edge at corner", "sharp edge at dart", "sharp edge at crease", "sharp edge at corner"})
         EXPECT_TRUE(seen.contains(expected)) << expected;
 }

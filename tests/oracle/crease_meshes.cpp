@@ -117,6 +117,11 @@ std::vector<CreaseCase> crease_cases() {
     mixed.creases.push_back({6, 0, 2.0});
     cases.push_back({"semi_sharp_corner_to_crease", mixed});
 
+    // Three sharp edges at an apex, two of them of sharpness 1: a corner for one level, then a dart.
+    FarInput corner_to_dart = untagged(rgbtest::bipyramid(5));
+    corner_to_dart.creases = {{5, 0, inf}, {5, 2, 1.0}, {5, 3, 1.0}};
+    cases.push_back({"semi_sharp_corner_to_dart", corner_to_dart});
+
     // Semi-sharp chains meeting the boundary: the ends are corners for as long as the chain is sharp.
     cases.push_back({"semi_sharp_meeting_boundary", grid_with_crossing_creases({2.0}, {1.0, 3.0})});
     return cases;
