@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <utility>
 
 namespace osdoracle {
 namespace {
@@ -186,11 +187,20 @@ glm::dvec3 piecewise_closed_form(Neighbourhood n, int j) {
     }
 }
 
-glm::dvec3 piecewise_limit(Neighbourhood n) {
+namespace {
+
+// The neighbourhood at the start of its last regime.
+Neighbourhood last_regime(Neighbourhood n) {
     for (int lasts = levels_rule_lasts(n); lasts != rule_lasts_forever; lasts = levels_rule_lasts(n))
         for (int i = 0; i < lasts; ++i) n = one_level_finer(n);
-    return limit_of_rule(n);
+    return n;
 }
+
+}  // namespace
+
+glm::dvec3 piecewise_limit(Neighbourhood n) { return limit_of_rule(last_regime(std::move(n))); }
+
+VertexRule final_rule(Neighbourhood n) { return rule_of(last_regime(std::move(n))); }
 
 std::vector<double> dart_mask(int valence, int j) {
     const Matrix m = dart_matrix(valence);

@@ -40,6 +40,8 @@ glm::dvec3 limit_of_rule(const Neighbourhood& n);
 // the next regime starts from p^t given by the closed form and the ring of level t.
 glm::dvec3 piecewise_closed_form(Neighbourhood n, int j);
 glm::dvec3 piecewise_limit(Neighbourhood n);
+// The rule of the last regime, the one that decides the limit.
+VertexRule final_rule(Neighbourhood n);
 
 // §3.4, darts: p^{a+j} = mask[0] p^a + sum_i mask[1 + i] ring[(s + i) % n], where ring[s] is the end
 // of the sharp edge; the limit mask is the fixed point of the same iteration.

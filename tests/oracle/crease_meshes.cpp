@@ -4,16 +4,10 @@
 #include <set>
 
 #include "support/test_meshes.h"
+#include "test_mesh_input.h"
 
 namespace osdoracle {
 namespace {
-
-FarInput untagged(const rgbtest::TestMesh& m) {
-    FarInput in;
-    in.positions = m.positions;
-    for (const auto& t : m.triangles) in.triangles.push_back({int(t[0]), int(t[1]), int(t[2])});
-    return in;
-}
 
 // A path of `edges` edges from `start`, each step to the smallest-numbered neighbour not on the path
 // yet: deterministic, and on the meshes used here never closes early.
@@ -48,7 +42,7 @@ int grid_vertex(int nx, int x, int y) { return y * (nx + 1) + x; }
 // grid(4, 3) with the interior row y = 1 and column x = 2 sharp: both chains meet the boundary at
 // their ends (three sharp edges: corners) and cross at (2, 1) (four sharp edges: a corner).
 FarInput grid_with_crossing_creases(std::vector<double> row_sharpness, std::vector<double> column_sharpness) {
-    FarInput in = untagged(rgbtest::grid(4, 3));
+    FarInput in = far_input(rgbtest::grid(4, 3));
     std::vector<int> row, column;
     for (int x = 0; x <= 4; ++x) row.push_back(grid_vertex(4, x, 1));
     for (int y = 0; y <= 3; ++y) column.push_back(grid_vertex(4, 2, y));
@@ -63,13 +57,13 @@ std::vector<CreaseCase> crease_cases() {
     std::vector<CreaseCase> cases;
 
     // Bipyramid equator (valence-4 crease vertices), apexes of valence 7 smooth.
-    FarInput loop = untagged(rgbtest::bipyramid(7));
+    FarInput loop = far_input(rgbtest::bipyramid(7));
     for (int i = 0; i < 7; ++i) loop.creases.push_back({i, (i + 1) % 7, inf});
     cases.push_back({"crease_loop", loop});
 
     // Icosahedron chains of three edges (valence-5 crease vertices), ending in tagged corners or in
     // darts.
-    FarInput corners = untagged(rgbtest::icosahedron());
+    FarInput corners = far_input(rgbtest::icosahedron());
     const std::vector<int> chain = path_from(corners, 0, 3);
     sharpen_path(corners, chain, {inf});
     FarInput darts = corners;
@@ -79,17 +73,17 @@ std::vector<CreaseCase> crease_cases() {
 
     // One sharp edge from an apex of valence n to the equator: darts of valence n and 4.
     for (int n : {3, 4, 5, 6, 8}) {
-        FarInput dart = untagged(rgbtest::bipyramid(n));
+        FarInput dart = far_input(rgbtest::bipyramid(n));
         dart.creases = {{n, 0, inf}};
         cases.push_back({"dart_valence" + std::to_string(n), dart});
     }
 
     // Open disc: a crease through the valence-7 centre (an irregular interior crease vertex) ending on
     // the boundary in corners, and a chain from the boundary into a grid ending in a dart.
-    FarInput fan = untagged(rgbtest::fan(7));
+    FarInput fan = far_input(rgbtest::fan(7));
     fan.creases = {{0, 1, inf}, {0, 4, inf}};
     cases.push_back({"crease_through_fan_centre", fan});
-    FarInput grid_dart = untagged(rgbtest::grid(4, 3));
+    FarInput grid_dart = far_input(rgbtest::grid(4, 3));
     sharpen_path(grid_dart, {grid_vertex(4, 0, 1), grid_vertex(4, 1, 1), grid_vertex(4, 2, 1)}, {inf});
     cases.push_back({"chain_from_boundary_ending_in_dart", grid_dart});
 
@@ -100,7 +94,7 @@ std::vector<CreaseCase> crease_cases() {
 
     // Semi-sharp: a chain of sharpness 1, 3, 2 (crease ends change rule at different levels, to
     // darts and then to smooth), and a semi-sharp corner of sharpness 2 elsewhere.
-    FarInput semi = untagged(rgbtest::icosahedron());
+    FarInput semi = far_input(rgbtest::icosahedron());
     const std::vector<int> semi_chain = path_from(semi, 0, 3);
     sharpen_path(semi, semi_chain, {1.0, 3.0, 2.0});
     for (int v = 0; v < static_cast<int>(semi.positions.size()); ++v)
@@ -112,13 +106,13 @@ std::vector<CreaseCase> crease_cases() {
 
     // Equator loop with one edge of sharpness 3 and a sharpness-2 edge to the apex: the apex's
     // neighbour is a corner for two levels, then a crease; the apex a dart for two levels.
-    FarInput mixed = untagged(rgbtest::bipyramid(6));
+    FarInput mixed = far_input(rgbtest::bipyramid(6));
     for (int i = 0; i < 6; ++i) mixed.creases.push_back({i, (i + 1) % 6, i == 3 ? 3.0 : inf});
     mixed.creases.push_back({6, 0, 2.0});
     cases.push_back({"semi_sharp_corner_to_crease", mixed});
 
     // Three sharp edges at an apex, two of them of sharpness 1: a corner for one level, then a dart.
-    FarInput corner_to_dart = untagged(rgbtest::bipyramid(5));
+    FarInput corner_to_dart = far_input(rgbtest::bipyramid(5));
     corner_to_dart.creases = {{5, 0, inf}, {5, 2, 1.0}, {5, 3, 1.0}};
     cases.push_back({"semi_sharp_corner_to_dart", corner_to_dart});
 

@@ -198,13 +198,19 @@ std::vector<FarLevel> describe_levels(const Far::TopologyRefiner& refiner) {
     return levels;
 }
 
+std::vector<std::array<int, 3>> uv_value_indices(const Far::TopologyLevel& level) {
+    std::vector<std::array<int, 3>> corners;
+    for (int f = 0; f < level.GetNumFaces(); ++f) {
+        const auto fv = level.GetFaceFVarValues(f, 0);
+        corners.push_back({fv[0], fv[1], fv[2]});
+    }
+    return corners;
+}
+
 template <class Vec>
 std::vector<std::array<Vec, 3>> per_corner(const Far::TopologyLevel& level, const std::vector<Primvar<Vec>>& values) {
     std::vector<std::array<Vec, 3>> corners;
-    for (int f = 0; f < level.GetNumFaces(); ++f) {
-        const auto fv = level.GetFaceFVarValues(f, 0);
-        corners.push_back({values[fv[0]].value, values[fv[1]].value, values[fv[2]].value});
-    }
+    for (const auto& c : uv_value_indices(level)) corners.push_back({values[c[0]].value, values[c[1]].value, values[c[2]].value});
     return corners;
 }
 
@@ -247,7 +253,10 @@ FarRefinement refine_uniform(const FarInput& input, int levels) {
             }
         }
         for (const auto& p : positions) level.positions.push_back(p.value);
-        if (input.uv) level.uv = per_corner(refiner->GetLevel(k), uvs);
+        if (input.uv) {
+            level.uv = per_corner(refiner->GetLevel(k), uvs);
+            level.uv_value_index = uv_value_indices(refiner->GetLevel(k));
+        }
     }
 
     std::vector<Primvar<glm::dvec3>> limit(positions.size());

@@ -78,6 +78,9 @@ struct FarLevel {
     std::vector<int> vertex_child;                 // index in level k+1; empty on the last level
     std::vector<VertexOrigin> origins;             // empty on level 0
     std::vector<std::array<glm::dvec2, 3>> uv;     // per triangle corner; empty without a UV channel
+    // Far's UV value index of each triangle corner: corners with the same index are one value (joined
+    // in UV space), so this is the face-varying topology Far derived. Empty without a UV channel.
+    std::vector<std::array<int, 3>> uv_value_index;
 };
 
 struct FarRefinement {

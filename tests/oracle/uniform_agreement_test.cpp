@@ -9,19 +9,13 @@
 
 #include "osd_far.h"
 #include "support/test_meshes.h"
+#include "test_mesh_input.h"
 #include "support/uniform_loop_oracle.h"
 
 namespace osdoracle {
 namespace {
 
 constexpr int levels = 4;
-
-FarInput far_input(const rgbtest::TestMesh& m) {
-    FarInput in;
-    in.positions = m.positions;
-    for (const auto& t : m.triangles) in.triangles.push_back({int(t[0]), int(t[1]), int(t[2])});
-    return in;
-}
 
 class UniformAgreement : public testing::TestWithParam<rgbtest::TestMesh> {};
 
