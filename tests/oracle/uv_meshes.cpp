@@ -79,6 +79,10 @@ std::vector<UvCase> uv_cases() {
         return centroid_x3(t) == 5 && centroid_y3(t) == 4 ? 1 : 0;  // the triangle (1,1), (2,1), (2,2)
     });
     cases.push_back(island);
+    // A boundary triangle as its own island: both ends of its boundary edge lie on seams.
+    cases.push_back(grid_case("boundary_triangle_island", [](const std::array<int, 3>& t) {
+        return centroid_x3(t) == 8 && centroid_y3(t) == 1 ? 1 : 0;  // the triangle (2,0), (3,0), (3,1)
+    }));
 
     UvCase corner_boundary = grid_case("seam_across_grid_edge_and_corner", halves);
     corner_boundary.input.boundary = BoundaryInterpolation::edge_and_corner;
