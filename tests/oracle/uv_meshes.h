@@ -1,0 +1,23 @@
+#pragma once
+// Meshes with a UV channel for the face-varying tests (issue 12's list): seams across a grid and
+// ending inside it (a UV dart), three and four seams meeting, a one-triangle UV island, a closed mesh
+// cut along its equator with and without a geometric crease there, seams crossing infinitely sharp
+// and semi-sharp edges, and both boundary options. The UV interpolation option is left to the test.
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "osd_far.h"
+
+namespace osdoracle {
+
+struct UvCase {
+    std::string name;
+    FarInput input;  // input.uv is set
+};
+
+inline void PrintTo(const UvCase& c, std::ostream* os) { *os << c.name; }
+
+std::vector<UvCase> uv_cases();
+
+}  // namespace osdoracle
