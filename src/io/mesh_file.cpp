@@ -1,6 +1,7 @@
 #include "io/mesh_file.h"
 
 #include <stdexcept>
+#include <string_view>
 
 #include <glm/geometric.hpp>
 
@@ -62,10 +63,23 @@ rgb::Mesh load_mesh(const std::string& path, std::vector<std::string>* warnings)
     return build_mesh(loaded, path);
 }
 
-std::string format_obj(const rgb::Mesh& mesh, const SaveOptions& options, SaveReport* report) {
-    SaveReport local;
+namespace {
+
+// The text collected in one string (format_obj).
+struct StringOutput {
+    std::string text;
+    std::string& buffer() { return text; }
+    void flush_if_full() {}
+    void write(std::string_view chunk) { text += chunk; }
+};
+
+// Appends the OBJ text record by record; Output is StringOutput or AtomicFileWriter (save_mesh
+// streams the file instead of holding it whole).
+template <class Output>
+SaveReport write_obj(const rgb::Mesh& mesh, const SaveOptions& options, Output& output) {
+    SaveReport report;
     std::vector<std::uint32_t> obj_index;
-    const std::vector<glm::dvec3> positions = written_positions(mesh, options.positions, obj_index, local);
+    const std::vector<glm::dvec3> positions = written_positions(mesh, options.positions, obj_index, report);
     std::vector<rgb::Triangle> triangles;
     triangles.reserve(mesh.num_faces());
     for (rgb::FaceId f : mesh.faces()) {
@@ -73,19 +87,21 @@ std::string format_obj(const rgb::Mesh& mesh, const SaveOptions& options, SaveRe
         triangles.push_back({obj_index[v[0].idx], obj_index[v[1].idx], obj_index[v[2].idx]});
     }
 
-    std::string out = "# rgbsub mesh: " + std::to_string(positions.size()) + " vertices, " + std::to_string(triangles.size()) +
-                      " triangles; positions: " + (options.positions == SavedPositions::Limit ? "limit" : "displayed") + "\n";
-    out.reserve(out.size() + 40 * positions.size() + 30 * triangles.size());
+    std::string& out = output.buffer();
+    out += "# rgbsub mesh: " + std::to_string(positions.size()) + " vertices, " + std::to_string(triangles.size()) +
+           " triangles; positions: " + (options.positions == SavedPositions::Limit ? "limit" : "displayed") + "\n";
     for (const glm::dvec3& p : positions) {
         out += 'v';
         for (int i = 0; i < 3; ++i) append_double(out, p[i]);
         out += '\n';
+        output.flush_if_full();
     }
     if (options.normals)
         for (const glm::dvec3& n : vertex_normals(positions, triangles)) {
             out += "vn";
             for (int i = 0; i < 3; ++i) append_double(out, n[i]);
             out += '\n';
+            output.flush_if_full();
         }
     for (const rgb::Triangle& t : triangles) {
         out += 'f';
@@ -95,15 +111,26 @@ std::string format_obj(const rgb::Mesh& mesh, const SaveOptions& options, SaveRe
             if (options.normals) out += "//" + index;
         }
         out += '\n';
+        output.flush_if_full();
     }
-    if (options.state) out += format_state(rgb::capture_state(mesh));
-    if (report) *report = local;
-    return out;
+    if (options.state) output.write(format_state(rgb::capture_state(mesh)));
+    return report;
+}
+
+}  // namespace
+
+std::string format_obj(const rgb::Mesh& mesh, const SaveOptions& options, SaveReport* report) {
+    StringOutput output;
+    output.text.reserve(40 * mesh.num_vertices() + 30 * mesh.num_faces());
+    const SaveReport written = write_obj(mesh, options, output);
+    if (report) *report = written;
+    return std::move(output.text);
 }
 
 SaveReport save_mesh(const rgb::Mesh& mesh, const std::string& path, const SaveOptions& options) {
-    SaveReport report;
-    write_file_atomically(path, format_obj(mesh, options, &report));
+    AtomicFileWriter file(path);
+    const SaveReport report = write_obj(mesh, options, file);
+    file.commit();
     return report;
 }
 

@@ -40,7 +40,8 @@ struct SaveReport {
 // The file content. The mesh is not modified (limit positions may be cached, see try_limit_position).
 std::string format_obj(const rgb::Mesh& mesh, const SaveOptions& options, SaveReport* report = nullptr);
 
-// format_obj written atomically (atomic_file.h). Throws SaveError.
+// The same text streamed to the file through AtomicFileWriter (atomic_file.h), a few MB at a time.
+// Throws SaveError.
 SaveReport save_mesh(const rgb::Mesh& mesh, const std::string& path, const SaveOptions& options = {});
 
 }  // namespace rgbio

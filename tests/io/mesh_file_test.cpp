@@ -2,11 +2,16 @@
 // state bit for bit, and further edits then give identical results to never having saved.
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <set>
+
+#include <unistd.h>
 
 #include <gtest/gtest.h>
 #include <tiny_obj_loader.h>
 
+#include "io/atomic_file.h"
 #include "io/mesh_file.h"
 #include "io/obj_error.h"
 #include "io/obj_reader.h"
@@ -101,6 +106,24 @@ TEST(MeshFile, CoarseningAfterLoadingMatchesCoarseningWithoutSaving) {
     rgb::set_level(original, rgb::Region::everywhere(), 0);
     rgb::set_level(restored, rgb::Region::everywhere(), 0);
     test::expect_identical(rgb::capture_state(restored), rgb::capture_state(original));
+}
+
+// save_mesh streams the file a buffer at a time; it must hold exactly the text format_obj builds
+// whole. Level 7 of the octahedron (131,072 triangles) with normals is several buffers long.
+TEST(MeshFile, StreamedFileIsExactlyTheFormattedText) {
+    rgb::Mesh mesh = octahedron();
+    rgb::set_level(mesh, rgb::Region::everywhere(), 7);
+    rgb::set_level(mesh, rgb::Region::sphere({1, 0, 0}, 0.5), 3);
+    const SaveOptions options{.normals = true};
+    const std::string expected = format_obj(mesh, options);
+    ASSERT_GT(expected.size(), 3 * AtomicFileWriter::kBufferBytes);
+    const std::filesystem::path path = std::filesystem::temp_directory_path() / ("rgbsub_streamed_" + std::to_string(::getpid()) + ".obj");
+    save_mesh(mesh, path.string(), options);
+    std::ifstream in(path, std::ios::binary);
+    const std::string written((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::filesystem::remove(path);
+    EXPECT_EQ(written.size(), expected.size());
+    EXPECT_TRUE(written == expected) << "the streamed file differs from format_obj";
 }
 
 TEST(MeshFile, OtherReadersSeeTheDisplayedMesh) {
