@@ -239,17 +239,19 @@ bool Editor::sample_level_under_cursor() {
 bool Editor::open(const std::string& path) {
     if (busy()) return false;
     try {
-        const std::vector<std::string> warnings = document_.open(path);
-        report(warnings.empty() ? "opened " + path : path + ": " + warnings.front() +
-                                                         (warnings.size() > 1 ? " (and more)" : ""),
-               false);
+        load(path);
     } catch (const rgbio::ObjError& error) {
         report(error.what(), true);
         return false;
     }
+    return true;
+}
+
+void Editor::load(const std::string& path) {
+    const std::vector<std::string> warnings = document_.open(path);
+    report(warnings.empty() ? "opened " + path : path + ": " + warnings.front() + (warnings.size() > 1 ? " (and more)" : ""), false);
     remember_recent(path);
     reset_view();
-    return true;
 }
 
 bool Editor::save() {

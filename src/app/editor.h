@@ -84,6 +84,9 @@ public:
     // ---- files ----
     // Each returns false and sets an error message when it cannot proceed.
     bool open(const std::string& path);  // no questions asked
+    // open, but a file that cannot be loaded throws its rgbio::ObjError (for callers that report it
+    // themselves, like the CLI's screenshot) instead of setting the message.
+    void load(const std::string& path);
     bool save();                         // to the document's path
     bool save_as(const std::string& path);
     // Asks first when there are unsaved changes / the file exists.

@@ -12,8 +12,7 @@
 namespace cli {
 
 int run_apply(std::span<const std::string> args) {
-    const std::vector<std::string> words = with_long_output_option(args);
-    const Arguments arguments(words, {"--timings", "--normals"}, {"--output", "--positions"});
+    const Arguments arguments(args, {"--timings", "--normals"}, {"--output", "--positions"}, {{"-o", "--output"}});
     if (arguments.has("--help")) {
         std::cout << "usage: rgbsub apply IN.obj SCRIPT -o OUT.obj [--timings] [--positions display|limit] [--normals]\n"
                      "Runs SCRIPT, one edit per line, then saves the adaptive mesh:\n"
@@ -32,25 +31,23 @@ int run_apply(std::span<const std::string> args) {
     const std::string& input = arguments.positional()[0];
     const std::string& script_file = arguments.positional()[1];
 
-    return report_io_errors("apply", [&] {
-        // The whole script is checked before the (possibly long) load and edits.
-        const std::vector<LodEdit> script = read_lod_script(script_file);
-        std::vector<std::string> warnings;
-        rgb::Mesh mesh = rgbio::load_mesh(input, &warnings);
-        print_warnings("apply", input, warnings);
-        Progress progress("applying " + script_file);
-        for (std::size_t i = 0; i < script.size(); ++i) {
-            progress.update(i, script.size(), "(line " + std::to_string(script[i].line) + ")");
-            const auto start = std::chrono::steady_clock::now();
-            const rgb::SetLevelStats stats = apply_lod_edit(mesh, script[i]);
-            const std::chrono::duration<double, std::milli> elapsed = std::chrono::steady_clock::now() - start;
-            if (arguments.has("--timings"))
-                std::cout << script_file << ':' << script[i].line << ": " << script[i].text << ": " << elapsed.count() << " ms, "
-                          << stats.splits << " splits, " << stats.removals << " removals, " << mesh.num_faces() << " triangles\n";
-        }
-        rgbio::save_mesh(mesh, *output, save);
-        return exit_ok;
-    });
+    // The whole script is checked before the (possibly long) load and edits.
+    const std::vector<LodEdit> script = read_lod_script(script_file);
+    std::vector<std::string> warnings;
+    rgb::Mesh mesh = rgbio::load_mesh(input, &warnings);
+    print_warnings("apply", input, warnings);
+    Progress progress("applying " + script_file);
+    for (std::size_t i = 0; i < script.size(); ++i) {
+        progress.update(i, script.size(), "(line " + std::to_string(script[i].line) + ")");
+        const auto start = std::chrono::steady_clock::now();
+        const rgb::SetLevelStats stats = apply_lod_edit(mesh, script[i]);
+        const std::chrono::duration<double, std::milli> elapsed = std::chrono::steady_clock::now() - start;
+        if (arguments.has("--timings"))
+            std::cout << script_file << ':' << script[i].line << ": " << script[i].text << ": " << elapsed.count() << " ms, "
+                      << stats.splits << " splits, " << stats.removals << " removals, " << mesh.num_faces() << " triangles\n";
+    }
+    rgbio::save_mesh(mesh, *output, save);
+    return exit_ok;
 }
 
 }  // namespace cli

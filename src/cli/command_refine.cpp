@@ -33,8 +33,7 @@ rgb::Region parse_sphere(const std::string& text) {
 }  // namespace
 
 int run_refine(std::span<const std::string> args) {
-    const std::vector<std::string> words = with_long_output_option(args);
-    const Arguments arguments(words, {"--normals"}, {"--output", "--level", "--sphere", "--positions"});
+    const Arguments arguments(args, {"--normals"}, {"--output", "--level", "--sphere", "--positions"}, {{"-o", "--output"}});
     if (arguments.has("--help")) {
         std::cout << "usage: rgbsub refine IN.obj -o OUT.obj --level N [--sphere X,Y,Z,R] [--positions display|limit]\n"
                      "                     [--normals]\n"
@@ -55,21 +54,19 @@ int run_refine(std::span<const std::string> args) {
     save.normals = arguments.has("--normals");
     const std::string& input = arguments.positional()[0];
 
-    return report_io_errors("refine", [&] {
-        std::vector<std::string> warnings;
-        rgb::Mesh mesh = rgbio::load_mesh(input, &warnings);
-        print_warnings("refine", input, warnings);
-        {
-            Progress progress("refining");
-            progress.update(0, 1, "to level " + std::to_string(level));
-            rgb::set_level(mesh, region, level);
-        }
-        const rgbio::SaveReport report = rgbio::save_mesh(mesh, *output, save);
-        if (report.limit_fallbacks > 0)
-            std::cerr << "rgbsub refine: " << report.limit_fallbacks
-                      << " vertices written at their displayed position: their limit needs a ring the mesh does not hold\n";
-        return exit_ok;
-    });
+    std::vector<std::string> warnings;
+    rgb::Mesh mesh = rgbio::load_mesh(input, &warnings);
+    print_warnings("refine", input, warnings);
+    {
+        Progress progress("refining");
+        progress.update(0, 1, "to level " + std::to_string(level));
+        rgb::set_level(mesh, region, level);
+    }
+    const rgbio::SaveReport report = rgbio::save_mesh(mesh, *output, save);
+    if (report.limit_fallbacks > 0)
+        std::cerr << "rgbsub refine: " << report.limit_fallbacks
+                  << " vertices written at their displayed position: their limit needs a ring the mesh does not hold\n";
+    return exit_ok;
 }
 
 }  // namespace cli
