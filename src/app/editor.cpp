@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <new>
 #include <utility>
 
 #include <glm/geometric.hpp>
@@ -322,6 +323,35 @@ void Editor::remember_recent(const std::string& path) {
 void Editor::report(std::string message, bool error) {
     message_ = std::move(message);
     message_is_error_ = error;
+}
+
+// ---- failures ----------------------------------------------------------------------------------
+
+bool Editor::run_guarded(const std::function<void()>& step) {
+    try {
+        step();
+        return true;
+    } catch (const std::exception& failure) {
+        recover_from(failure);
+        return false;
+    }
+}
+
+void Editor::recover_from(const std::exception& failure) {
+    const std::string action = painting_ ? "the brush stroke" : job_ ? job_->label() : "";
+    const std::string cause = dynamic_cast<const std::bad_alloc*>(&failure) != nullptr ? std::string("out of memory")
+                                                                                      : std::string(failure.what());
+    painting_ = false;
+    last_hit_.reset();
+    drag_ = Drag::None;
+    job_.reset();
+    std::string outcome;
+    try {
+        if (document_.abandon_edit()) outcome = "; " + action + " was rolled back, the mesh is as before it";
+    } catch (const std::exception&) {
+        outcome = "; " + action + " could not be rolled back either: save under a new name and check the file";
+    }
+    report((action.empty() ? cause : cause + " during " + action) + outcome, true);
 }
 
 std::string Editor::window_title() const { return document_title(document_) + " - rgbsub"; }

@@ -8,6 +8,8 @@
 // confirmations | statistics.
 #include <chrono>
 #include <cstddef>
+#include <exception>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -105,6 +107,14 @@ public:
     // ---- statistics ----
     const DabTiming& dab_timing() const { return timing_; }
 
+    // ---- failures ----
+    // Runs one input event or frame step. A std::exception from it (out of memory in a deep
+    // request, say) is reported in the panel instead of ending the program, and the editor carries
+    // on: a stroke or job under way is rolled back to the mesh before it, since the core may have
+    // stopped half-way through an operation; earlier work and the undo history stay. Returns false
+    // after a failure.
+    bool run_guarded(const std::function<void()>& step);
+
 private:
     void begin_stroke(glm::vec2 px);
     void continue_stroke(glm::vec2 px);
@@ -116,6 +126,7 @@ private:
     void finish_job();
     void remember_recent(const std::string& path);
     void report(std::string message, bool error);
+    void recover_from(const std::exception& failure);
     bool busy() const { return job_ != nullptr || painting_; }
 
     Document document_;
