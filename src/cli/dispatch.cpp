@@ -34,7 +34,7 @@ void print_help(std::ostream& out) {
             << command.description << '\n';
     }
     out << "\n'rgbsub COMMAND --help' describes a command's arguments.\n"
-           "exit codes: 0 ok, 1 usage error, 2 bad input, 3 I/O failure\n";
+           "exit codes: 0 ok, 1 usage error, 2 bad input, 3 I/O or resource failure\n";
 }
 
 int run_command(const Command& command, std::span<const std::string> args) {
