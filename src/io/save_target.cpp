@@ -52,9 +52,16 @@ SaveTarget resolve_save_target(const std::string& named) {
     std::string path = named;
     for (int hop = 0;; ++hop) {
         struct stat entry {};
-        // Anything lstat cannot see (no such file, parent not a folder, no access) is left to the
-        // creation of the temporary file, whose error names the folder's problem.
-        if (::lstat(path.c_str(), &entry) != 0) return {path, folder_of(path), path.substr(path.rfind('/') + 1), std::nullopt};
+        if (::lstat(path.c_str(), &entry) != 0) {
+            // A "magic" link of /proc (what /dev/stdout leads to) names no path, e.g. "pipe:[123]";
+            // the kernel still follows it, and what it reaches must be a regular file too.
+            struct stat reached {};
+            if (hop > 0 && ::stat(named.c_str(), &reached) == 0 && !S_ISREG(reached.st_mode))
+                refuse(named, std::string("it leads to ") + kind_of(reached.st_mode) + "; rgbsub saves only to regular files");
+            // Anything else lstat cannot see (no such file, parent not a folder, no access) is left to
+            // the creation of the temporary file, whose error names the folder's problem.
+            return {path, folder_of(path), path.substr(path.rfind('/') + 1), std::nullopt};
+        }
         if (!S_ISLNK(entry.st_mode)) {
             const std::string via = path == named ? "it is " : "it leads to " + path + ", ";
             if (!S_ISREG(entry.st_mode))

@@ -202,6 +202,17 @@ TEST_F(SaveTarget, FifoIsRefusedAndLeftAFifo) {
     EXPECT_EQ(entries(), 2u);
 }
 
+// /dev/stdout leads through /proc/self/fd/1 to "pipe:[N]" when the output is piped: a link that
+// names no path. The same link to a pipe of the test's own, reached through /proc.
+TEST_F(SaveTarget, ProcLinkToAPipeIsRefused) {
+    int ends[2];
+    ASSERT_EQ(::pipe(ends), 0);
+    const std::string link = "/proc/self/fd/" + std::to_string(ends[1]);
+    EXPECT_EQ(save_error(link), "cannot save " + link + ": it leads to a FIFO (named pipe); rgbsub saves only to regular files");
+    ::close(ends[0]);
+    ::close(ends[1]);
+}
+
 TEST_F(SaveTarget, SocketIsRefused) {
     const int listener = ::socket(AF_UNIX, SOCK_STREAM, 0);
     sockaddr_un address{};
