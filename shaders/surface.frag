@@ -6,7 +6,7 @@ const int kColourPlain = 0;
 const int kColourRgb = 1;
 const int kColourLevel = 2;
 
-in vec3 v_position;
+in vec3 v_position;  // like u_eye and the brush, scaled by u_shading_scale (surface.vert)
 in vec3 v_normal;
 in vec3 v_barycentric;
 flat in uint v_code;

@@ -6,6 +6,7 @@ layout(location = 1) in vec3 a_normal;
 layout(location = 2) in uint a_code;  // bits 0-1: RGB colour, bits 8-15: face level
 
 uniform mat4 u_view_projection;
+uniform float u_shading_scale;  // a power of two that brings the scene near unit size (renderer.cpp)
 
 out vec3 v_position;
 out vec3 v_normal;
@@ -15,7 +16,7 @@ flat out uint v_code;
 void main() {
     int corner = gl_VertexID % 3;
     v_barycentric = vec3(corner == 0, corner == 1, corner == 2);
-    v_position = a_position;
+    v_position = a_position * u_shading_scale;
     v_normal = a_normal;
     v_code = a_code;
     gl_Position = u_view_projection * vec4(a_position, 1.0);

@@ -37,6 +37,13 @@ void Document::end_edit(bool changed) {
     dirty_ = dirty_ || changed;
 }
 
+bool Document::abandon_edit() {
+    std::optional<rgb::Mesh> before = history_.abandon_edit();
+    if (!before) return false;
+    replace_mesh(std::move(*before));
+    return true;
+}
+
 bool Document::undo() {
     std::optional<rgb::Mesh> before = history_.undo(mesh_);
     if (!before) return false;

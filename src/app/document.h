@@ -41,6 +41,8 @@ public:
     // Around every undoable edit: changed == false means the edit did nothing and leaves no step.
     void begin_edit(std::string label);
     void end_edit(bool changed);
+    // Puts the mesh back as it was at begin_edit, leaving no step; false if no edit is under way.
+    bool abandon_edit();
     bool undo();
     bool redo();
     UndoHistory& history() { return history_; }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <new>
 #include <utility>
 
 #include <glm/geometric.hpp>
@@ -240,17 +241,19 @@ bool Editor::sample_level_under_cursor() {
 bool Editor::open(const std::string& path) {
     if (busy()) return false;
     try {
-        const std::vector<std::string> warnings = document_.open(path);
-        report(warnings.empty() ? "opened " + path : path + ": " + warnings.front() +
-                                                         (warnings.size() > 1 ? " (and more)" : ""),
-               false);
+        load(path);
     } catch (const rgbio::ObjError& error) {
         report(error.what(), true);
         return false;
     }
+    return true;
+}
+
+void Editor::load(const std::string& path) {
+    const std::vector<std::string> warnings = document_.open(path);
+    report(warnings.empty() ? "opened " + path : path + ": " + warnings.front() + (warnings.size() > 1 ? " (and more)" : ""), false);
     remember_recent(path);
     reset_view();
-    return true;
 }
 
 bool Editor::save() {
@@ -318,6 +321,35 @@ void Editor::remember_recent(const std::string& path) {
 void Editor::report(std::string message, bool error) {
     message_ = std::move(message);
     message_is_error_ = error;
+}
+
+// ---- failures ----------------------------------------------------------------------------------
+
+bool Editor::run_guarded(const std::function<void()>& step) {
+    try {
+        step();
+        return true;
+    } catch (const std::exception& failure) {
+        recover_from(failure);
+        return false;
+    }
+}
+
+void Editor::recover_from(const std::exception& failure) {
+    const std::string action = painting_ ? "the brush stroke" : job_ ? job_->label() : "";
+    const std::string cause = dynamic_cast<const std::bad_alloc*>(&failure) != nullptr ? std::string("out of memory")
+                                                                                      : std::string(failure.what());
+    painting_ = false;
+    last_hit_.reset();
+    drag_ = Drag::None;
+    job_.reset();
+    std::string outcome;
+    try {
+        if (document_.abandon_edit()) outcome = "; " + action + " was rolled back, the mesh is as before it";
+    } catch (const std::exception&) {
+        outcome = "; " + action + " could not be rolled back either: save under a new name and check the file";
+    }
+    report((action.empty() ? cause : cause + " during " + action) + outcome, true);
 }
 
 std::string Editor::window_title() const { return document_title(document_) + " - rgbsub"; }

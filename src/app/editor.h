@@ -8,6 +8,8 @@
 // confirmations | statistics.
 #include <chrono>
 #include <cstddef>
+#include <exception>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -85,6 +87,9 @@ public:
     // ---- files ----
     // Each returns false and sets an error message when it cannot proceed.
     bool open(const std::string& path);  // no questions asked
+    // open, but a file that cannot be loaded throws its rgbio::ObjError (for callers that report it
+    // themselves, like the CLI's screenshot) instead of setting the message.
+    void load(const std::string& path);
     bool save();                         // to the document's path
     bool save_as(const std::string& path);
     // Asks first when there are unsaved changes / the file exists.
@@ -103,6 +108,14 @@ public:
     // ---- statistics ----
     const DabTiming& dab_timing() const { return timing_; }
 
+    // ---- failures ----
+    // Runs one input event or frame step. A std::exception from it (out of memory in a deep
+    // request, say) is reported in the panel instead of ending the program, and the editor carries
+    // on: a stroke or job under way is rolled back to the mesh before it, since the core may have
+    // stopped half-way through an operation; earlier work and the undo history stay. Returns false
+    // after a failure.
+    bool run_guarded(const std::function<void()>& step);
+
 private:
     void begin_stroke(glm::vec2 px);
     void continue_stroke(glm::vec2 px);
@@ -114,6 +127,7 @@ private:
     void finish_job();
     void remember_recent(const std::string& path);
     void report(std::string message, bool error);
+    void recover_from(const std::exception& failure);
     bool busy() const { return job_ != nullptr || painting_; }
 
     Document document_;

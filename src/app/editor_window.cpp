@@ -3,6 +3,7 @@
 #include <glad/gl.h>
 #include <GLFW/glfw3.h>
 #include <imgui.h>
+#include <imgui_internal.h>  // ErrorCheckEndFrameRecover
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
@@ -65,26 +66,30 @@ glm::vec2 to_pixels(GLFWwindow* window, double x, double y) {
 }
 
 // Installed before ImGui's backend, which chains to them; ImGui gets first say over the panels.
+// Every callback runs through Editor::run_guarded: an exception must not unwind through GLFW's C
+// frames (that terminates the program and loses the document).
 void install_callbacks(GLFWwindow* window) {
     glfwSetCursorPosCallback(window, [](GLFWwindow* w, double x, double y) {
-        editor_of(w).mouse_moved(to_pixels(w, x, y));
+        editor_of(w).run_guarded([&] { editor_of(w).mouse_moved(to_pixels(w, x, y)); });
     });
     glfwSetMouseButtonCallback(window, [](GLFWwindow* w, int button, int action, int mods) {
         const std::optional<MouseButton> b = button_of(button);
         if (!b) return;
-        if (action == GLFW_PRESS && !ImGui::GetIO().WantCaptureMouse) editor_of(w).mouse_pressed(*b, modifiers_of(mods));
-        if (action == GLFW_RELEASE) editor_of(w).mouse_released(*b);
+        editor_of(w).run_guarded([&] {
+            if (action == GLFW_PRESS && !ImGui::GetIO().WantCaptureMouse) editor_of(w).mouse_pressed(*b, modifiers_of(mods));
+            if (action == GLFW_RELEASE) editor_of(w).mouse_released(*b);
+        });
     });
     glfwSetScrollCallback(window, [](GLFWwindow* w, double, double dy) {
-        if (!ImGui::GetIO().WantCaptureMouse) editor_of(w).scrolled(static_cast<float>(dy));
+        if (!ImGui::GetIO().WantCaptureMouse) editor_of(w).run_guarded([&] { editor_of(w).scrolled(static_cast<float>(dy)); });
     });
     glfwSetKeyCallback(window, [](GLFWwindow* w, int key, int, int action, int mods) {
         editor_of(w).set_modifiers(modifiers_of(mods));
         if (action == GLFW_RELEASE || ImGui::GetIO().WantCaptureKeyboard) return;
-        if (const std::optional<Key> k = key_of(key)) editor_of(w).key_pressed(*k, modifiers_of(mods));
+        if (const std::optional<Key> k = key_of(key)) editor_of(w).run_guarded([&] { editor_of(w).key_pressed(*k, modifiers_of(mods)); });
     });
     glfwSetDropCallback(window, [](GLFWwindow* w, int count, const char** paths) {
-        if (count > 0) editor_of(w).request_open(paths[0]);
+        if (count > 0) editor_of(w).run_guarded([&] { editor_of(w).request_open(paths[0]); });
     });
     glfwSetWindowCloseCallback(window, [](GLFWwindow* w) {
         glfwSetWindowShouldClose(w, GLFW_FALSE);  // the editor decides, after asking
@@ -122,7 +127,7 @@ void run_loop(GLFWwindow* window, Editor& editor, const WindowLaunch& launch, Cl
         int fw = 1, fh = 1;
         glfwGetFramebufferSize(window, &fw, &fh);
         editor.set_viewport({fw, fh});
-        editor.update();
+        editor.run_guarded([&] { editor.update(); });
         if (editor.window_title() != title) {
             title = editor.window_title();
             glfwSetWindowTitle(window, title.c_str());
@@ -133,7 +138,9 @@ void run_loop(GLFWwindow* window, Editor& editor, const WindowLaunch& launch, Cl
         ImGui_ImplOpenGL3_NewFrame();
         ImGui_ImplGlfw_NewFrame();
         ImGui::NewFrame();
-        view.draw(editor, {fw, fh}, dt, glfwGetWindowAttrib(window, GLFW_HOVERED) != 0);
+        const bool hovered = glfwGetWindowAttrib(window, GLFW_HOVERED) != 0;
+        // A panel button may start work that fails; ImGui's window stack is then closed for it.
+        if (!editor.run_guarded([&] { view.draw(editor, {fw, fh}, dt, hovered); })) ImGui::ErrorCheckEndFrameRecover(nullptr);
         ImGui::Render();
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
         glfwSwapBuffers(window);

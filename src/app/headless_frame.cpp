@@ -36,7 +36,7 @@ struct ImGuiSession {
 
 render::Image render_editor_frame(const std::string& file, const HeadlessFrame& frame) {
     Editor editor(frame.size);
-    if (!editor.open(file)) throw std::runtime_error(editor.message());
+    editor.load(file);
     render::OffscreenContext context(frame.size.x, frame.size.y);
     ImGuiSession session;
     ImGuiIO& io = ImGui::GetIO();

@@ -19,8 +19,8 @@ struct HeadlessFrame {
     glm::vec2 cursor{0.5f, 0.5f};
 };
 
-// Opens `file` in an editor and renders one frame of it. Throws std::runtime_error with the load
-// error or when no OSMesa context can be made.
+// Opens `file` in an editor and renders one frame of it. Throws rgbio::ObjError when the file cannot
+// be loaded, std::runtime_error when no OSMesa context can be made.
 render::Image render_editor_frame(const std::string& file, const HeadlessFrame& frame);
 
 }  // namespace app

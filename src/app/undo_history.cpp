@@ -32,6 +32,13 @@ void UndoHistory::end_edit(const rgb::Mesh& /*mesh*/, bool changed) {
     pending_.reset();
 }
 
+std::optional<rgb::Mesh> UndoHistory::abandon_edit() {
+    if (!pending_) return std::nullopt;
+    const Step step = std::move(*pending_);
+    pending_.reset();
+    return rgb::restore_state(step.other);
+}
+
 std::optional<rgb::Mesh> UndoHistory::cross(std::deque<Step>& from, std::deque<Step>& to, const rgb::Mesh& current) {
     if (from.empty()) return std::nullopt;
     Step step = std::move(from.back());

@@ -25,6 +25,9 @@ public:
     void begin_edit(const rgb::Mesh& mesh, std::string label);
     void end_edit(const rgb::Mesh& mesh, bool changed);
     bool editing() const { return pending_.has_value(); }
+    // Ends the edit under way without a step and hands back the mesh as it was at begin_edit (for
+    // an edit that failed half-way). Empty when no edit is under way.
+    std::optional<rgb::Mesh> abandon_edit();
 
     bool can_undo() const { return !undo_.empty(); }
     bool can_redo() const { return !redo_.empty(); }

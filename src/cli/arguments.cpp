@@ -1,6 +1,7 @@
 #include "cli/arguments.h"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 
@@ -24,31 +25,57 @@ T parse_number(std::string_view option, const std::string& text) {
     return parsed;
 }
 
+// "-x", "--name": an option. A lone "-" (a conventional file name) and negative numbers ("-2",
+// "-.5,30" for --view) are values.
+bool looks_like_option(const std::string& word) {
+    if (word.size() < 2 || word[0] != '-') return false;
+    return !(std::isdigit(static_cast<unsigned char>(word[1])) || word[1] == '.');
+}
+
 }  // namespace
 
 Arguments::Arguments(std::span<const std::string> args, std::initializer_list<std::string_view> switches,
-                     std::initializer_list<std::string_view> options) {
+                     std::initializer_list<std::string_view> options, std::initializer_list<ShortName> short_names) {
+    const auto long_name_of = [&](const std::string& word) {
+        for (const auto& [short_name, long_name] : short_names)
+            if (word == short_name) return std::string(long_name);
+        return word;
+    };
+    const auto spelled = [&](const std::string& name) {
+        for (const auto& [short_name, long_name] : short_names)
+            if (name == long_name) return std::string(short_name) + "/" + name;
+        return name;
+    };
+    bool only_positional = false;
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string& word = args[i];
-        if (!word.starts_with("--")) {
+        if (only_positional || !looks_like_option(word)) {
             positional_.push_back(word);
             continue;
         }
-        const std::size_t equals = word.find('=');
-        const std::string name = word.substr(0, equals);
+        if (word == "--") {
+            only_positional = true;
+            continue;
+        }
+        const std::size_t equals = word.starts_with("--") ? word.find('=') : std::string::npos;
+        const std::string name = long_name_of(word.substr(0, equals));
+        if (named_.contains(name)) throw UsageError(spelled(name) + " is given twice");
         if (name == "--help" || contains(switches, name)) {
             if (equals != std::string::npos) throw UsageError(name + " takes no value");
             named_[name] = std::nullopt;
         } else if (contains(options, name)) {
             if (equals != std::string::npos) {
                 named_[name] = word.substr(equals + 1);
-            } else if (i + 1 < args.size()) {
+            } else if (i + 1 < args.size() && !looks_like_option(args[i + 1])) {
                 named_[name] = args[++i];
+            } else if (i + 1 < args.size()) {
+                throw UsageError(spelled(name) + " needs a value, but the next word is the option '" + args[i + 1] +
+                                 "' (a value that starts with '-' is written " + name + "=VALUE)");
             } else {
-                throw UsageError(name + " needs a value");
+                throw UsageError(spelled(name) + " needs a value");
             }
         } else {
-            throw UsageError("unknown option " + name);
+            throw UsageError("unknown option " + word.substr(0, equals));
         }
     }
 }

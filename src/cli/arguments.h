@@ -1,22 +1,30 @@
 #pragma once
 // A subcommand's command line split into positional words, switches (`--wireframe`) and options
-// with a value (`--level 3` or `--level=3`). `--help` is always accepted as a switch.
+// with a value (`--level 3` or `--level=3`). `--help` is always accepted as a switch. Short names
+// (`-o` for `--output`) are aliases the command declares. After `--`, every word is positional
+// (a file named `-x` is `-- -x` or `./-x`).
+//
+// Usage errors (UsageError, exit 1): an unknown option (`--nope`, `-x`), a switch given a value, an
+// option without its value (also when the next word is itself an option: `-o -o`), and any option
+// or switch given twice.
 #include <initializer_list>
 #include <map>
 #include <optional>
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace cli {
 
 class Arguments {
 public:
-    // Names include their dashes. Throws UsageError for an unknown `--name`, a switch given a
-    // value or an option missing its value.
+    using ShortName = std::pair<std::string_view, std::string_view>;  // {"-o", "--output"}
+
+    // Names include their dashes. Throws UsageError as described above.
     Arguments(std::span<const std::string> args, std::initializer_list<std::string_view> switches,
-              std::initializer_list<std::string_view> options);
+              std::initializer_list<std::string_view> options, std::initializer_list<ShortName> short_names = {});
 
     const std::vector<std::string>& positional() const { return positional_; }
     bool has(std::string_view name) const;

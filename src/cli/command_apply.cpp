@@ -25,8 +25,8 @@ double percentile(std::vector<double> values, double p) {
 }  // namespace
 
 int run_apply(std::span<const std::string> args) {
-    const std::vector<std::string> words = with_long_output_option(args);
-    const Arguments arguments(words, {"--timings", "--normals"}, {"--output", "--positions", "--max-triangles"});
+    const Arguments arguments(args, {"--timings", "--normals"}, {"--output", "--positions", "--max-triangles"},
+                              {{"-o", "--output"}});
     if (arguments.has("--help")) {
         std::cout << "usage: rgbsub apply IN.obj SCRIPT -o OUT.obj [--timings] [--positions display|limit] [--normals]\n"
                      "                    [--max-triangles N]\n"
@@ -53,40 +53,38 @@ int run_apply(std::span<const std::string> args) {
     const std::string& input = arguments.positional()[0];
     const std::string& script_file = arguments.positional()[1];
 
-    return report_io_errors("apply", [&] {
-        // The whole script is checked before the (possibly long) load and edits.
-        const std::vector<rgbio::ScriptLine> script = rgbio::read_lod_script(script_file);
-        std::vector<std::string> warnings;
-        rgb::Mesh mesh = rgbio::load_mesh(input, &warnings);
-        print_warnings("apply", input, warnings);
-        Progress progress("applying " + script_file);
-        rgbio::ScriptRunner runner;
-        std::vector<double> dab_ms;
-        rgb::RequestStats dab_stats;
-        for (std::size_t i = 0; i < script.size(); ++i) {
-            const rgbio::ScriptLine& line = script[i];
-            progress.update(i, script.size(), "(line " + std::to_string(line.line) + ")");
-            if (const auto* request = std::get_if<rgb::LevelRequest>(&line.edit)) rgbio::check_request_size(mesh, *request, limit);
-            const auto* dab = std::get_if<rgbio::DabEdit>(&line.edit);
-            if (dab) rgbio::check_request_size(mesh, rgb::dab_request(mesh, runner.dab(*dab)), limit);
-            const auto start = std::chrono::steady_clock::now();
-            const rgb::RequestStats stats = runner.run(mesh, line);
-            const std::chrono::duration<double, std::milli> elapsed = std::chrono::steady_clock::now() - start;
-            if (dab) {
-                dab_ms.push_back(elapsed.count());
-                dab_stats += stats;
-            } else if (arguments.has("--timings") && !std::holds_alternative<rgbio::BrushEdit>(line.edit)) {
-                std::cout << script_file << ':' << line.line << ": " << line.text << ": " << elapsed.count() << " ms, "
-                          << stats.splits << " splits, " << stats.removals << " removals, " << mesh.num_faces() << " triangles\n";
-            }
+    // The whole script is checked before the (possibly long) load and edits.
+    const std::vector<rgbio::ScriptLine> script = rgbio::read_lod_script(script_file);
+    std::vector<std::string> warnings;
+    rgb::Mesh mesh = rgbio::load_mesh(input, &warnings);
+    print_warnings("apply", input, warnings);
+    Progress progress("applying " + script_file);
+    rgbio::ScriptRunner runner;
+    std::vector<double> dab_ms;
+    rgb::RequestStats dab_stats;
+    for (std::size_t i = 0; i < script.size(); ++i) {
+        const rgbio::ScriptLine& line = script[i];
+        progress.update(i, script.size(), "(line " + std::to_string(line.line) + ")");
+        if (const auto* request = std::get_if<rgb::LevelRequest>(&line.edit)) rgbio::check_request_size(mesh, *request, limit);
+        const auto* dab = std::get_if<rgbio::DabEdit>(&line.edit);
+        if (dab) rgbio::check_request_size(mesh, rgb::dab_request(mesh, runner.dab(*dab)), limit);
+        const auto start = std::chrono::steady_clock::now();
+        const rgb::RequestStats stats = runner.run(mesh, line);
+        const std::chrono::duration<double, std::milli> elapsed = std::chrono::steady_clock::now() - start;
+        if (dab) {
+            dab_ms.push_back(elapsed.count());
+            dab_stats += stats;
+        } else if (arguments.has("--timings") && !std::holds_alternative<rgbio::BrushEdit>(line.edit)) {
+            std::cout << script_file << ':' << line.line << ": " << line.text << ": " << elapsed.count() << " ms, "
+                      << stats.splits << " splits, " << stats.removals << " removals, " << mesh.num_faces() << " triangles\n";
         }
-        if (arguments.has("--timings") && !dab_ms.empty())
-            std::cout << script_file << ": " << dab_ms.size() << " dabs: engine per dab p50 " << percentile(dab_ms, 0.5)
-                      << " ms p95 " << percentile(dab_ms, 0.95) << " ms, " << dab_stats.splits << " splits, " << dab_stats.removals
-                      << " removals, " << mesh.num_faces() << " triangles\n";
-        rgbio::save_mesh(mesh, *output, save);
-        return exit_ok;
-    });
+    }
+    if (arguments.has("--timings") && !dab_ms.empty())
+        std::cout << script_file << ": " << dab_ms.size() << " dabs: engine per dab p50 " << percentile(dab_ms, 0.5)
+                  << " ms p95 " << percentile(dab_ms, 0.95) << " ms, " << dab_stats.splits << " splits, " << dab_stats.removals
+                  << " removals, " << mesh.num_faces() << " triangles\n";
+    rgbio::save_mesh(mesh, *output, save);
+    return exit_ok;
 }
 
 }  // namespace cli

@@ -2,12 +2,12 @@
 // to the headless command instead of failing inside GLFW.
 #include <cstdlib>
 #include <iostream>
-#include <stdexcept>
 
 #include "app/editor_window.h"
 #include "app/headless_frame.h"
 #include "cli/arguments.h"
 #include "cli/commands.h"
+#include "io/atomic_file.h"
 
 namespace cli {
 namespace {
@@ -25,12 +25,7 @@ int write_screenshot(const std::string& file, const std::string& output, const s
     } else if (mode != "shaded") {
         throw UsageError("--mode must be shaded, wire, rgb or level, got '" + mode + "'");
     }
-    try {
-        render::write_png(app::render_editor_frame(file, frame), output);
-    } catch (const std::runtime_error& error) {
-        std::cerr << "rgbsub edit: " << error.what() << '\n';
-        return exit_bad_input;
-    }
+    rgbio::write_file_atomically(output, render::encode_png(app::render_editor_frame(file, frame)));
     return exit_ok;
 }
 

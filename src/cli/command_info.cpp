@@ -3,8 +3,8 @@
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
-#include "cli/mesh_io_support.h"
 #include "cli/mesh_summary.h"
+#include "io/mesh_file.h"
 #include "io/obj_reader.h"
 
 namespace cli {
@@ -20,15 +20,13 @@ int run_info(std::span<const std::string> args) {
     }
     if (arguments.positional().size() != 1) throw UsageError("expects exactly one FILE.obj");
     const std::string& file = arguments.positional()[0];
-    return report_io_errors("info", [&] {
-        const rgbio::LoadedMesh loaded = rgbio::read_obj_file(file);
-        const rgb::Mesh mesh = rgbio::build_mesh(loaded);
-        std::cout << file << ": valid" << (loaded.warnings.empty() ? "" : " after fixes") << '\n';
-        for (const std::string& warning : loaded.warnings) std::cout << "warning: " << warning << '\n';
-        std::cout << "adaptive state: " << (loaded.adaptive ? "restored from the file's #rgb lines" : "none (base mesh)") << '\n';
-        print_summary(std::cout, summarize(mesh));
-        return exit_ok;
-    });
+    const rgbio::LoadedMesh loaded = rgbio::read_obj_file(file);
+    const rgb::Mesh mesh = rgbio::build_mesh(loaded);
+    std::cout << file << ": valid" << (loaded.warnings.empty() ? "" : " after fixes") << '\n';
+    for (const std::string& warning : loaded.warnings) std::cout << "warning: " << warning << '\n';
+    std::cout << "adaptive state: " << (loaded.adaptive ? "restored from the file's #rgb lines" : "none (base mesh)") << '\n';
+    print_summary(std::cout, summarize(mesh));
+    return exit_ok;
 }
 
 }  // namespace cli

@@ -33,8 +33,8 @@ rgb::Sphere parse_sphere(const std::string& text) {
 }  // namespace
 
 int run_refine(std::span<const std::string> args) {
-    const std::vector<std::string> words = with_long_output_option(args);
-    const Arguments arguments(words, {"--normals"}, {"--output", "--level", "--sphere", "--positions", "--max-triangles"});
+    const Arguments arguments(args, {"--normals"}, {"--output", "--level", "--sphere", "--positions", "--max-triangles"},
+                              {{"-o", "--output"}});
     if (arguments.has("--help")) {
         std::cout << "usage: rgbsub refine IN.obj -o OUT.obj --level N [--sphere X,Y,Z,R] [--positions display|limit]\n"
                      "                     [--normals] [--max-triangles N]\n"
@@ -59,19 +59,17 @@ int run_refine(std::span<const std::string> args) {
     save.normals = arguments.has("--normals");
     const std::string& input = arguments.positional()[0];
 
-    return report_io_errors("refine", [&] {
-        std::vector<std::string> warnings;
-        rgb::Mesh mesh = rgbio::load_mesh(input, &warnings);
-        print_warnings("refine", input, warnings);
-        rgbio::check_request_size(mesh, request, limit);
-        {
-            Progress progress("refining");
-            progress.update(0, 1, "to level " + std::to_string(request.level));
-            rgb::apply_request(mesh, request);
-        }
-        rgbio::save_mesh(mesh, *output, save);
-        return exit_ok;
-    });
+    std::vector<std::string> warnings;
+    rgb::Mesh mesh = rgbio::load_mesh(input, &warnings);
+    print_warnings("refine", input, warnings);
+    rgbio::check_request_size(mesh, request, limit);
+    {
+        Progress progress("refining");
+        progress.update(0, 1, "to level " + std::to_string(request.level));
+        rgb::apply_request(mesh, request);
+    }
+    rgbio::save_mesh(mesh, *output, save);
+    return exit_ok;
 }
 
 }  // namespace cli

@@ -1,15 +1,16 @@
 // `rgbsub render`: a headless screenshot of an OBJ through OSMesa, framed automatically.
 #include <charconv>
-#include <cstdio>
+#include <cmath>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
+#include "io/atomic_file.h"
 #include "io/mesh_file.h"
-#include "io/obj_error.h"
 #include "render/headless.h"
 #include "rgb/loop_geometry.h"
 #include "rgb/mesh.h"
@@ -21,7 +22,7 @@ constexpr std::string_view kUsage =
     "usage: rgbsub render IN.obj -o OUT.png [--size WxH] [--mode shaded|flat|rgb|level] [--wire]\n"
     "                     [--view AZIMUTH,ELEVATION] [--limit] [--base]\n"
     "Renders the mesh headless (OSMesa, no display needed), framed automatically.\n"
-    "  -o, --output PATH   the PNG to write (replaced atomically)\n"
+    "  -o, --output PATH   the PNG to write (saved like OBJ files: see the README)\n"
     "  --size WxH          image size in pixels (default 1024x768)\n"
     "  --mode MODE         shaded (smooth), flat, rgb (triangle types: green/red/blue),\n"
     "                      level (heat map of face levels with a legend); default shaded\n"
@@ -33,14 +34,6 @@ constexpr std::string_view kUsage =
     "The same input gives the same bytes.\n";
 
 constexpr int kMaxImageSide = 8192;
-
-// Arguments knows only --long names; -o is the conventional spelling of the output.
-std::vector<std::string> spell_out_short_options(std::span<const std::string> args) {
-    std::vector<std::string> out(args.begin(), args.end());
-    for (std::string& word : out)
-        if (word == "-o") word = "--output";
-    return out;
-}
 
 template <class T>
 T parse_part(std::string_view text, std::string_view option, std::string_view whole) {
@@ -67,6 +60,8 @@ void parse_view(const std::string& text, render::HeadlessView& view) {
     if (comma == std::string::npos) throw UsageError("--view expects AZIMUTH,ELEVATION in degrees, got '" + text + "'");
     view.azimuth_deg = parse_part<float>(std::string_view(text).substr(0, comma), "--view", text);
     view.elevation_deg = parse_part<float>(std::string_view(text).substr(comma + 1), "--view", text);
+    if (!std::isfinite(view.azimuth_deg) || !std::isfinite(view.elevation_deg))
+        throw UsageError("--view: angles must be finite numbers, got '" + text + "'");
     if (view.elevation_deg < -90.0f || view.elevation_deg > 90.0f)
         throw UsageError("--view: elevation must be between -90 and 90, got '" + text + "'");
 }
@@ -89,8 +84,7 @@ void apply_mode(const std::string& mode, render::RenderOptions& options) {
 }  // namespace
 
 int run_render(std::span<const std::string> args) {
-    const std::vector<std::string> words = spell_out_short_options(args);
-    const Arguments arguments(words, {"--wire", "--limit", "--base"}, {"--output", "--size", "--mode", "--view"});
+    const Arguments arguments(args, {"--wire", "--limit", "--base"}, {"--output", "--size", "--mode", "--view"}, {{"-o", "--output"}});
     if (arguments.has("--help")) {
         std::cout << kUsage;
         return exit_ok;
@@ -111,27 +105,15 @@ int run_render(std::span<const std::string> args) {
 
     const std::string& input = arguments.positional().front();
     std::vector<std::string> warnings;
-    rgb::Mesh mesh;
-    try {
-        mesh = rgbio::load_mesh(input, &warnings);
-    } catch (const rgbio::ObjError& error) {
-        std::cerr << "rgbsub render: " << error.what() << '\n';
-        return error.problem() == rgbio::ObjProblem::Unreadable ? exit_io_failure : exit_bad_input;
-    }
+    rgb::Mesh mesh = rgbio::load_mesh(input, &warnings);
     for (const std::string& warning : warnings) std::cerr << "rgbsub render: " << input << ": " << warning << '\n';
     render::Image image;
     try {
         image = render::render_headless(mesh, options, view);
     } catch (const std::runtime_error& error) {
-        std::cerr << "rgbsub render: cannot render headless: " << error.what() << '\n';
-        return exit_bad_input;
+        throw std::runtime_error(std::string("cannot render headless: ") + error.what());
     }
-    try {
-        render::write_png(image, *output);
-    } catch (const std::runtime_error& error) {
-        std::cerr << "rgbsub render: " << error.what() << '\n';
-        return exit_io_failure;
-    }
+    rgbio::write_file_atomically(*output, render::encode_png(image));
     return exit_ok;
 }
 

@@ -9,11 +9,15 @@
 
 namespace cli {
 
-// Exit codes shared by every subcommand.
+// Exit codes shared by every subcommand. Commands return exit_ok and report every failure by
+// throwing; the dispatcher (dispatch.cpp) turns the exception into the code, in one place:
 inline constexpr int exit_ok = 0;
-inline constexpr int exit_usage = 1;      // malformed command line
-inline constexpr int exit_bad_input = 2;  // the input (file, environment) cannot be used
-inline constexpr int exit_io_failure = 3; // reading or writing a file failed
+inline constexpr int exit_usage = 1;       // UsageError: a malformed command line
+inline constexpr int exit_bad_input = 2;   // rgbio::ObjError (but Unreadable), any other std::exception:
+                                           // the input (file, environment) cannot be used
+inline constexpr int exit_io_failure = 3;  // ObjError Unreadable, rgbio::SaveError, and resources the
+                                           // system could not give: std::bad_alloc, std::length_error,
+                                           // std::system_error
 
 // Thrown for a malformed command line; the dispatcher prints it with a pointer to --help and
 // exits with exit_usage.

@@ -2,9 +2,14 @@
 
 #include <algorithm>
 #include <iostream>
+#include <new>
+#include <stdexcept>
 #include <string_view>
+#include <system_error>
 
 #include "cli/commands.h"
+#include "io/obj_error.h"
+#include "io/triangle_limit.h"
 
 namespace cli {
 namespace {
@@ -30,16 +35,33 @@ void print_help(std::ostream& out) {
             << command.description << '\n';
     }
     out << "\n'rgbsub COMMAND --help' describes a command's arguments.\n"
-           "exit codes: 0 ok, 1 usage error, 2 bad input, 3 I/O failure\n";
+           "exit codes: 0 ok, 1 usage error, 2 bad input, 3 I/O or resource failure\n";
 }
 
 int run_command(const Command& command, std::span<const std::string> args) {
+    const auto fail = [&](int code, const std::string& message) {
+        std::cerr << "rgbsub " << command.name << ": " << message << '\n';
+        return code;
+    };
     try {
         return command.run(args);
     } catch (const UsageError& error) {
-        std::cerr << "rgbsub " << command.name << ": " << error.what() << "\n(see 'rgbsub " << command.name
-                  << " --help')\n";
-        return exit_usage;
+        return fail(exit_usage, std::string(error.what()) + "\n(see 'rgbsub " + std::string(command.name) + " --help')");
+    } catch (const rgbio::ObjError& error) {
+        return fail(error.problem() == rgbio::ObjProblem::Unreadable ? exit_io_failure : exit_bad_input, error.what());
+    } catch (const rgbio::SaveError& error) {
+        return fail(exit_io_failure, error.what());
+    } catch (const rgbio::TooLarge& error) {
+        return fail(exit_io_failure, std::string("refused: ") + error.what());
+    } catch (const std::bad_alloc&) {
+        return fail(exit_io_failure, "out of memory: the request needs more memory than the system would give; nothing was saved");
+    } catch (const std::length_error& error) {
+        return fail(exit_io_failure, std::string("out of memory: a size beyond what this machine can hold (") + error.what() +
+                                         "); nothing was saved");
+    } catch (const std::system_error& error) {
+        return fail(exit_io_failure, std::string("the system refused a resource: ") + error.what());
+    } catch (const std::exception& error) {
+        return fail(exit_bad_input, error.what());
     }
 }
 

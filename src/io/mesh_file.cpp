@@ -1,6 +1,7 @@
 #include "io/mesh_file.h"
 
 #include <stdexcept>
+#include <string_view>
 
 #include <glm/geometric.hpp>
 
@@ -56,7 +57,19 @@ rgb::Mesh load_mesh(const std::string& path, std::vector<std::string>* warnings)
     return build_mesh(loaded);
 }
 
-std::string format_obj(const rgb::Mesh& mesh, const SaveOptions& options) {
+namespace {
+
+// The text collected in one string (format_obj).
+struct StringOutput {
+    std::string text;
+    std::string& buffer() { return text; }
+    void flush_if_full() {}
+};
+
+// Appends the OBJ text record by record; Output is StringOutput or AtomicFileWriter (save_mesh
+// streams the file instead of holding it whole).
+template <class Output>
+void write_obj(const rgb::Mesh& mesh, const SaveOptions& options, Output& output) {
     std::vector<std::uint32_t> obj_index;
     const std::vector<glm::dvec3> positions = written_positions(mesh, options.positions, obj_index);
     std::vector<rgb::Triangle> triangles;
@@ -66,19 +79,21 @@ std::string format_obj(const rgb::Mesh& mesh, const SaveOptions& options) {
         triangles.push_back({obj_index[v[0].idx], obj_index[v[1].idx], obj_index[v[2].idx]});
     }
 
-    std::string out = "# rgbsub mesh: " + std::to_string(positions.size()) + " vertices, " + std::to_string(triangles.size()) +
-                      " triangles; positions: " + (options.positions == SavedPositions::Limit ? "limit" : "displayed") + "\n";
-    out.reserve(out.size() + 40 * positions.size() + 30 * triangles.size());
+    std::string& out = output.buffer();
+    out += "# rgbsub mesh: " + std::to_string(positions.size()) + " vertices, " + std::to_string(triangles.size()) +
+           " triangles; positions: " + (options.positions == SavedPositions::Limit ? "limit" : "displayed") + "\n";
     for (const glm::dvec3& p : positions) {
         out += 'v';
         for (int i = 0; i < 3; ++i) append_double(out, p[i]);
         out += '\n';
+        output.flush_if_full();
     }
     if (options.normals)
         for (const glm::dvec3& n : vertex_normals(positions, triangles)) {
             out += "vn";
             for (int i = 0; i < 3; ++i) append_double(out, n[i]);
             out += '\n';
+            output.flush_if_full();
         }
     for (const rgb::Triangle& t : triangles) {
         out += 'f';
@@ -88,13 +103,25 @@ std::string format_obj(const rgb::Mesh& mesh, const SaveOptions& options) {
             if (options.normals) out += "//" + index;
         }
         out += '\n';
+        output.flush_if_full();
     }
-    if (options.state) out += format_state(rgb::capture_state(mesh), options.positions == SavedPositions::Limit);
-    return out;
+    if (options.state)
+        write_state(rgb::capture_state(mesh), options.positions == SavedPositions::Limit, out, [&] { output.flush_if_full(); });
+}
+
+}  // namespace
+
+std::string format_obj(const rgb::Mesh& mesh, const SaveOptions& options) {
+    StringOutput output;
+    output.text.reserve(40 * mesh.num_vertices() + 30 * mesh.num_faces());
+    write_obj(mesh, options, output);
+    return std::move(output.text);
 }
 
 void save_mesh(const rgb::Mesh& mesh, const std::string& path, const SaveOptions& options) {
-    write_file_atomically(path, format_obj(mesh, options));
+    AtomicFileWriter file(path);
+    write_obj(mesh, options, file);
+    file.commit();
 }
 
 }  // namespace rgbio

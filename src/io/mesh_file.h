@@ -33,7 +33,8 @@ struct SaveOptions {
 // The file content. The mesh is not modified (limit positions may be cached, see loop_geometry.h).
 std::string format_obj(const rgb::Mesh& mesh, const SaveOptions& options);
 
-// format_obj written atomically (atomic_file.h). Throws SaveError.
+// The same text streamed to the file through AtomicFileWriter (atomic_file.h), a few MB at a time.
+// Throws SaveError.
 void save_mesh(const rgb::Mesh& mesh, const std::string& path, const SaveOptions& options = {});
 
 }  // namespace rgbio

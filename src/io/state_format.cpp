@@ -70,9 +70,9 @@ private:
 
 }  // namespace
 
-std::string format_state(const rgb::MeshState& state, bool limit_positions) {
+void write_state(const rgb::MeshState& state, bool limit_positions, std::string& out, const std::function<void()>& flush_if_full) {
     const std::size_t n0 = state.base_positions.size();
-    std::string out = "# rgbsub adaptive state: the #rgb lines restore the exact RGB mesh; other readers ignore them\n";
+    out += "# rgbsub adaptive state: the #rgb lines restore the exact RGB mesh; other readers ignore them\n";
     out += "#rgb state " + std::to_string(kStateFormatVersion) + "\n";
     out += limit_positions ? "#rgb positions limit\n" : "#rgb positions displayed\n";
     out += "#rgb section base-vertices " + std::to_string(n0) + "\n";
@@ -87,6 +87,7 @@ std::string format_state(const rgb::MeshState& state, bool limit_positions) {
         for (std::size_t k = i; k < std::min(state.base_triangles.size(), i + kPerLine); ++k)
             for (std::uint32_t v : state.base_triangles[k]) append_number(out, v);
         out += '\n';
+        flush_if_full();
     }
     const std::size_t addresses = state.vertices.size() - std::min(n0, state.vertices.size());
     out += "#rgb section addresses " + std::to_string(addresses) + "\n";
@@ -98,9 +99,9 @@ std::string format_state(const rgb::MeshState& state, bool limit_positions) {
                 append_number(out, x);
         }
         out += '\n';
+        flush_if_full();
     }
     out += "#rgb end\n";
-    return out;
 }
 
 std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const std::string& file) {

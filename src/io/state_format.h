@@ -14,6 +14,7 @@
 //                                      base vertices (which come first, in base order)
 //   #rgb end
 // A later version adds sections; a reader refuses a section it does not know, naming it.
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -31,7 +32,9 @@ struct SavedState {
     bool limit_positions = false;  // the v lines hold limit positions, not displayed ones
 };
 
-std::string format_state(const rgb::MeshState& state, bool limit_positions);
+// Appends the state's lines to `out`, calling flush_if_full() between lines so that a file writer can
+// empty the buffer (the state of a large mesh is tens of megabytes).
+void write_state(const rgb::MeshState& state, bool limit_positions, std::string& out, const std::function<void()>& flush_if_full);
 
 // The #rgb lines of a file, or nothing when they are not an rgbsub state at all (no `#rgb state`
 // header first: some other program's comments). Throws ObjError(BadState) naming the offending line,

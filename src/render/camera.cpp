@@ -9,37 +9,51 @@
 
 namespace render {
 
+// In double: squared distances of coordinates far from unit scale (1e-20, 1e12) leave float's range.
 BoundingSphere bounding_sphere(std::span<const glm::vec3> points) {
     if (points.empty()) return {};
-    glm::vec3 lo = points.front();
-    glm::vec3 hi = points.front();
+    glm::dvec3 lo = points.front();
+    glm::dvec3 hi = points.front();
     for (const glm::vec3& p : points) {
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
+        lo = glm::min(lo, glm::dvec3(p));
+        hi = glm::max(hi, glm::dvec3(p));
     }
-    BoundingSphere sphere{0.5f * (lo + hi), 0.0f};
-    for (const glm::vec3& p : points) sphere.radius = std::max(sphere.radius, glm::distance(p, sphere.centre));
-    if (sphere.radius <= 0.0f) sphere.radius = 1.0f;  // a single point still needs a view
-    return sphere;
+    const glm::dvec3 centre = 0.5 * (lo + hi);
+    double radius = 0.0;
+    for (const glm::vec3& p : points) radius = std::max(radius, glm::distance(glm::dvec3(p), centre));
+    if (radius <= 0.0) radius = 1.0;  // a single point still needs a view
+    return {glm::vec3(centre), static_cast<float>(radius)};
 }
 
-glm::vec3 OrbitCamera::eye() const {
-    const float az = glm::radians(azimuth_deg);
-    const float el = glm::radians(elevation_deg);
-    return target + distance * glm::vec3(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az));
+// The camera's matrices are made in double and rounded once: at extreme scales the normalisations
+// inside lookAt and the products in perspective under- or overflow in float.
+glm::dvec3 OrbitCamera::eye_double() const {
+    const double az = glm::radians(static_cast<double>(azimuth_deg));
+    const double el = glm::radians(static_cast<double>(elevation_deg));
+    return glm::dvec3(target) + static_cast<double>(distance) * glm::dvec3(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az));
 }
 
-glm::mat4 OrbitCamera::view() const {
-    const float az = glm::radians(azimuth_deg);
+glm::vec3 OrbitCamera::eye() const { return glm::vec3(eye_double()); }
+
+glm::dmat4 OrbitCamera::view_double() const {
+    const double az = glm::radians(static_cast<double>(azimuth_deg));
+    const glm::dvec3 eye = eye_double();
     // Up is derived from the azimuth's right vector, so looking straight down is well defined.
-    const glm::vec3 back = glm::normalize(eye() - target);
-    const glm::vec3 right(std::cos(az), 0.0f, -std::sin(az));
-    return glm::lookAt(eye(), target, glm::cross(back, right));
+    const glm::dvec3 back = glm::normalize(eye - glm::dvec3(target));
+    const glm::dvec3 right(std::cos(az), 0.0, -std::sin(az));
+    return glm::lookAt(eye, glm::dvec3(target), glm::cross(back, right));
 }
 
-glm::mat4 OrbitCamera::projection(float aspect) const {
-    return glm::perspective(glm::radians(fov_y_deg), aspect, near_plane, far_plane);
+glm::mat4 OrbitCamera::view() const { return glm::mat4(view_double()); }
+
+glm::dmat4 OrbitCamera::projection_double(float aspect) const {
+    return glm::perspective(glm::radians(static_cast<double>(fov_y_deg)), static_cast<double>(aspect), static_cast<double>(near_plane),
+                            static_cast<double>(far_plane));
 }
+
+glm::mat4 OrbitCamera::projection(float aspect) const { return glm::mat4(projection_double(aspect)); }
+
+glm::mat4 OrbitCamera::view_projection(float aspect) const { return glm::mat4(projection_double(aspect) * view_double()); }
 
 OrbitCamera frame_sphere(const BoundingSphere& sphere, float azimuth_deg, float elevation_deg, float aspect) {
     OrbitCamera camera;

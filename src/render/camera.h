@@ -14,7 +14,8 @@ struct BoundingSphere {
     float radius = 1.0f;
 };
 
-// Centre of the bounding box and the largest distance from it; radius 1 around the origin if empty.
+// Centre of the bounding box and the largest distance from it (computed in double, so any float
+// scale works); radius 1 around the origin if empty or a single point.
 BoundingSphere bounding_sphere(std::span<const glm::vec3> points);
 
 struct OrbitCamera {
@@ -29,7 +30,12 @@ struct OrbitCamera {
     glm::vec3 eye() const;
     glm::mat4 view() const;
     glm::mat4 projection(float aspect) const;
-    glm::mat4 view_projection(float aspect) const { return projection(aspect) * view(); }
+    glm::mat4 view_projection(float aspect) const;
+
+private:
+    glm::dvec3 eye_double() const;
+    glm::dmat4 view_double() const;
+    glm::dmat4 projection_double(float aspect) const;
 };
 
 // A camera at the given angles whose view cone contains the sphere (with a small margin) for a

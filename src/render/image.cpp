@@ -3,40 +3,46 @@
 #include <cstdlib>
 #include <memory>
 #include <stdexcept>
-#include <system_error>
 
 #include <stb_image.h>
 #include <stb_image_write.h>
 
 namespace render {
 
-void write_png(const Image& image, const std::filesystem::path& path) {
-    std::filesystem::path partial = path;
-    partial += ".partial";
-    const int ok = stbi_write_png(partial.c_str(), image.width, image.height, 4, image.rgba.data(), image.width * 4);
-    if (ok == 0) {
-        std::error_code ignored;
-        std::filesystem::remove(partial, ignored);
-        throw std::runtime_error(path.string() + ": cannot write PNG (is the directory writable?)");
-    }
-    std::error_code error;
-    std::filesystem::rename(partial, path, error);
-    if (error) {
-        std::filesystem::remove(partial, error);
-        throw std::runtime_error(path.string() + ": cannot write PNG: " + error.message());
-    }
+namespace {
+
+extern "C" void append_to_string(void* context, void* data, int size) {
+    static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<std::size_t>(size));
 }
 
-Image read_png(const std::filesystem::path& path) {
-    int width = 0;
-    int height = 0;
-    int channels = 0;
-    std::unique_ptr<stbi_uc, decltype(&stbi_image_free)> pixels(stbi_load(path.c_str(), &width, &height, &channels, 4),
-                                                                &stbi_image_free);
-    if (!pixels) throw std::runtime_error(path.string() + ": cannot read PNG: " + stbi_failure_reason());
+Image to_image(stbi_uc* decoded, int width, int height, const std::string& source) {
+    const std::unique_ptr<stbi_uc, decltype(&stbi_image_free)> pixels(decoded, &stbi_image_free);
+    if (!pixels) throw std::runtime_error(source + ": cannot read PNG: " + stbi_failure_reason());
     Image image{width, height, {}};
     image.rgba.assign(pixels.get(), pixels.get() + static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
     return image;
+}
+
+}  // namespace
+
+std::string encode_png(const Image& image) {
+    std::string png;
+    if (stbi_write_png_to_func(append_to_string, &png, image.width, image.height, 4, image.rgba.data(), image.width * 4) == 0)
+        throw std::runtime_error("cannot encode a " + std::to_string(image.width) + "x" + std::to_string(image.height) + " PNG");
+    return png;
+}
+
+Image decode_png(const std::string& png) {
+    int width = 0, height = 0, channels = 0;
+    stbi_uc* decoded = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(png.data()), static_cast<int>(png.size()), &width,
+                                             &height, &channels, 4);
+    return to_image(decoded, width, height, "PNG data");
+}
+
+Image read_png(const std::filesystem::path& path) {
+    int width = 0, height = 0, channels = 0;
+    stbi_uc* decoded = stbi_load(path.c_str(), &width, &height, &channels, 4);
+    return to_image(decoded, width, height, path.string());
 }
 
 }  // namespace render

@@ -1,7 +1,8 @@
 #pragma once
-// An RGBA8 image, rows top to bottom, and its PNG file form.
+// An RGBA8 image, rows top to bottom, and its PNG form.
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include <glm/vec4.hpp>
@@ -19,10 +20,11 @@ struct Image {
     }
 };
 
-// Writes through a temporary file and a rename, so a failure never leaves a half-written PNG.
-// Throws std::runtime_error naming the path.
-void write_png(const Image& image, const std::filesystem::path& path);
-// Throws std::runtime_error naming the path and stb's reason.
+// The PNG file's bytes, made in memory so that callers save them with rgbio::AtomicFileWriter (the
+// render layer does no file writing of its own). Throws std::runtime_error if stb cannot encode.
+std::string encode_png(const Image& image);
+// Throw std::runtime_error naming the source and stb's reason.
+Image decode_png(const std::string& png);
 Image read_png(const std::filesystem::path& path);
 
 }  // namespace render

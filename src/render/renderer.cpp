@@ -1,5 +1,6 @@
 #include "render/renderer.h"
 
+#include <cmath>
 #include <stdexcept>
 #include <vector>
 
@@ -152,7 +153,11 @@ void Renderer::draw(const OrbitCamera& camera, const RenderOptions& options, glm
     const ShaderProgram& surface = s.surface_program;
     surface.use();
     surface.set("u_view_projection", view_projection);
-    surface.set("u_eye", camera.eye());
+    // Shading normalises vectors between positions; for scenes far from unit size their squared
+    // lengths leave float's range. A power of two of about 1 / distance scales them exactly.
+    const float shading_scale = std::exp2(-std::round(std::log2(camera.distance)));
+    surface.set("u_shading_scale", shading_scale);
+    surface.set("u_eye", camera.eye() * shading_scale);
     surface.set("u_flat", options.shading == Shading::Flat);
     surface.set("u_colouring", static_cast<int>(options.colouring));
     surface.set("u_plain_colour", kPlainColour);
@@ -163,8 +168,8 @@ void Renderer::draw(const OrbitCamera& camera, const RenderOptions& options, glm
     surface.set("u_wire_colour", kWireColour);
     surface.set("u_brush", options.brush.has_value());
     if (options.brush) {
-        surface.set("u_brush_centre", options.brush->centre);
-        surface.set("u_brush_radius", options.brush->radius);
+        surface.set("u_brush_centre", options.brush->centre * shading_scale);
+        surface.set("u_brush_radius", options.brush->radius * shading_scale);
         surface.set("u_brush_width", kBrushWidthPx);
         surface.set("u_brush_colour", kBrushColour);
     }

@@ -78,15 +78,17 @@ void SurfaceGeometry::update_position(const rgb::Mesh& mesh, rgb::VertexId v) {
     positions_[v.idx] = glm::vec3(p);
 }
 
+// In double: the cross products grow with the square of the scale, and leave float's range for
+// meshes far from unit size (1e10: overflow, 1e-20: underflow).
 void SurfaceGeometry::update_normal(const rgb::Mesh& mesh, rgb::VertexId v) {
-    glm::vec3 sum(0.0f);
+    glm::dvec3 sum(0.0);
     for_each_face_around(mesh, v, [&](rgb::FaceId f) {
         const auto& c = mesh.face_vertices(f);
-        const glm::vec3& p0 = positions_[c[0].idx];
-        sum += glm::cross(positions_[c[1].idx] - p0, positions_[c[2].idx] - p0);
+        const glm::dvec3 p0 = positions_[c[0].idx];
+        sum += glm::cross(glm::dvec3(positions_[c[1].idx]) - p0, glm::dvec3(positions_[c[2].idx]) - p0);
     });
-    const float length = glm::length(sum);
-    normals_[v.idx] = length > 0.0f ? sum / length : glm::vec3(0.0f, 0.0f, 1.0f);
+    const double length = glm::length(sum);
+    normals_[v.idx] = length > 0.0 ? glm::vec3(sum / length) : glm::vec3(0.0f, 0.0f, 1.0f);
 }
 
 void SurfaceGeometry::count(std::uint32_t code, int delta) {

@@ -53,4 +53,57 @@ TEST(Arguments, RejectsValuesThatAreNotNumbersInRange) {
     EXPECT_THROW(arguments.number("--radius", 0.0), cli::UsageError);
 }
 
+// The UsageError text for `words`, or "" if they parse.
+std::string usage_error(const Words& words) {
+    try {
+        const cli::Arguments arguments(words, {"--wire"}, {"--output", "--level", "--view"}, {{"-o", "--output"}});
+    } catch (const cli::UsageError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(Arguments, ShortNamesAreAliases) {
+    const cli::Arguments arguments(Words{"in.obj", "-o", "out.obj"}, {}, {"--output"}, {{"-o", "--output"}});
+    EXPECT_EQ(arguments.value("--output"), "out.obj");
+    EXPECT_EQ(arguments.positional(), (Words{"in.obj"}));
+}
+
+TEST(Arguments, RepeatedOptionsAreUsageErrors) {
+    EXPECT_EQ(usage_error({"-o", "a.obj", "-o", "b.obj"}), "-o/--output is given twice");
+    EXPECT_EQ(usage_error({"--output=a.obj", "-o", "b.obj"}), "-o/--output is given twice");
+    EXPECT_EQ(usage_error({"--level", "1", "--level=2"}), "--level is given twice");
+    EXPECT_EQ(usage_error({"--wire", "--wire"}), "--wire is given twice");
+}
+
+// `-o -o` used to write a file named "--output": an option's value cannot be another option.
+TEST(Arguments, AnOptionIsNotAnotherOptionsValue) {
+    EXPECT_EQ(usage_error({"in.obj", "-o", "-o"}),
+              "-o/--output needs a value, but the next word is the option '-o' (a value that starts with '-' is written --output=VALUE)");
+    EXPECT_EQ(usage_error({"--level", "--wire"}),
+              "--level needs a value, but the next word is the option '--wire' (a value that starts with '-' is written --level=VALUE)");
+    EXPECT_EQ(usage_error({"-o"}), "-o/--output needs a value");
+    const cli::Arguments explicit_value(Words{"--output=-o"}, {}, {"--output"}, {{"-o", "--output"}});
+    EXPECT_EQ(explicit_value.value("--output"), "-o");
+}
+
+TEST(Arguments, NegativeNumbersAndLoneDashAreValues) {
+    const cli::Arguments arguments(Words{"--level", "-2", "--view", "-.5,30", "-"}, {}, {"--level", "--view"});
+    EXPECT_EQ(arguments.value("--level"), "-2");
+    EXPECT_EQ(arguments.value("--view"), "-.5,30");
+    EXPECT_EQ(arguments.positional(), (Words{"-"}));
+}
+
+TEST(Arguments, UnknownShortAndLongOptionsAreNamed) {
+    EXPECT_EQ(usage_error({"in.obj", "-x"}), "unknown option -x");
+    EXPECT_EQ(usage_error({"--nope=3"}), "unknown option --nope");
+    EXPECT_EQ(usage_error({"-output", "x"}), "unknown option -output");
+}
+
+TEST(Arguments, DoubleDashEndsTheOptions) {
+    const cli::Arguments arguments(Words{"--level", "2", "--", "-x.obj", "--level", "--"}, {}, {"--level"});
+    EXPECT_EQ(arguments.positional(), (Words{"-x.obj", "--level", "--"}));
+    EXPECT_EQ(arguments.value("--level"), "2");
+}
+
 }  // namespace

@@ -1,56 +1,25 @@
 // Saving never leaves a partial file: failures (file too large / disk full, read-only folder,
-// parent not a folder) keep the old file byte for byte and leave no temporary behind.
+// parent not a folder) keep the old file byte for byte and leave no temporary behind; streamed
+// chunks arrive in order whatever their sizes; names up to the file system's limit save.
 #include <csignal>
 #include <filesystem>
-#include <fstream>
-#include <functional>
-#include <sstream>
 
 #include <sys/resource.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <gtest/gtest.h>
 
 #include "io/atomic_file.h"
 #include "io/obj_error.h"
+#include "scratch_folder.h"
 
 namespace rgbio {
 namespace {
 
 namespace fs = std::filesystem;
 
-class AtomicFile : public ::testing::Test {
-protected:
-    void SetUp() override {
-        folder_ = fs::temp_directory_path() / ("rgbsub_atomic_" + std::to_string(::getpid()) + "_" +
-                                               ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(folder_);
-        fs::create_directories(folder_);
-    }
-    void TearDown() override {
-        fs::permissions(folder_, fs::perms::owner_all);
-        fs::remove_all(folder_);
-    }
-    static std::string read(const fs::path& p) {
-        std::ifstream in(p, std::ios::binary);
-        std::stringstream s;
-        s << in.rdbuf();
-        return s.str();
-    }
-    std::size_t entries() const { return static_cast<std::size_t>(std::distance(fs::directory_iterator(folder_), fs::directory_iterator())); }
-    fs::path folder_;
-};
-
-// Runs `check` in a child process (so limits and identities do not leak into the test process)
-// and returns whether it returned true.
-bool in_child(const std::function<bool()>& check) {
-    const pid_t pid = ::fork();
-    if (pid == 0) ::_exit(check() ? 0 : 1);
-    int status = 0;
-    ::waitpid(pid, &status, 0);
-    return WIFEXITED(status) && WEXITSTATUS(status) == 0;
-}
+using AtomicFile = test::ScratchFolder;
+using test::in_child;
 
 bool save_fails(const std::string& path, const std::string& content) {
     try {
@@ -108,6 +77,93 @@ TEST_F(AtomicFile, ParentThatIsAFileFails) {
     } catch (const SaveError& e) {
         EXPECT_EQ(std::string(e.what()), "cannot save " + target + ": cannot create a temporary file in its folder: Not a directory");
     }
+}
+
+// Chunk sizes around and across the buffer size; the expected file is their plain concatenation.
+TEST_F(AtomicFile, StreamedChunksArriveInOrder) {
+    const std::size_t buffer = AtomicFileWriter::kBufferBytes;
+    std::string expected;
+    {
+        AtomicFileWriter writer(path("stream.obj"));
+        char fill = 'a';
+        for (std::size_t size : {std::size_t{1}, buffer - 2, std::size_t{1}, std::size_t{5}, 3 * buffer + 7, std::size_t{0}, buffer}) {
+            const std::string chunk(size, fill++);
+            writer.write(chunk);
+            expected += chunk;
+        }
+        writer.buffer() += "formatted in place\n";
+        writer.flush_if_full();
+        expected += "formatted in place\n";
+        writer.commit();
+    }
+    EXPECT_TRUE(read(path("stream.obj")) == expected) << "the streamed file differs from the chunks written";
+    EXPECT_EQ(entries(), 1u);
+}
+
+TEST_F(AtomicFile, AbandonedWriterKeepsTheOldFileAndLeavesNoTemporary) {
+    write_file_atomically(path("mesh.obj"), "old content\n");
+    {
+        AtomicFileWriter writer(path("mesh.obj"));
+        writer.write(std::string(3 * AtomicFileWriter::kBufferBytes, 'x'));  // reaches the temporary file
+        EXPECT_EQ(entries(), 2u);
+    }  // destroyed without commit, as when formatting throws
+    EXPECT_EQ(read(path("mesh.obj")), "old content\n");
+    EXPECT_EQ(entries(), 1u);
+}
+
+// A streamed save larger than the buffer fails part-way through, after writes already succeeded.
+TEST_F(AtomicFile, FullDiskDuringAStreamedSaveKeepsTheOldFile) {
+    write_file_atomically(path("mesh.obj"), "old content\n");
+    EXPECT_TRUE(in_child([&] {
+        std::signal(SIGXFSZ, SIG_IGN);
+        const rlimit limit{AtomicFileWriter::kBufferBytes + 4096, AtomicFileWriter::kBufferBytes + 4096};
+        ::setrlimit(RLIMIT_FSIZE, &limit);
+        try {
+            AtomicFileWriter writer(path("mesh.obj"));
+            for (int i = 0; i < 3; ++i) writer.write(std::string(AtomicFileWriter::kBufferBytes, 'x'));
+            writer.commit();
+        } catch (const SaveError& e) {
+            return std::string(e.what()) == "cannot save " + path("mesh.obj") + ": write failed: File too large";
+        }
+        return false;
+    }));
+    EXPECT_EQ(read(path("mesh.obj")), "old content\n");
+    EXPECT_EQ(entries(), 1u);
+}
+
+// 250 bytes is a legal name (the limit is 255); the temporary name must shorten it, not fail.
+TEST_F(AtomicFile, LongestNamesSave) {
+    for (std::size_t length : {250u, 255u}) {
+        const std::string name = std::string(length - 4, 'n') + ".obj";
+        write_file_atomically(path(name), "v 1 2 3\n");
+        write_file_atomically(path(name), "v 4 5 6\n");
+        EXPECT_EQ(read(path(name)), "v 4 5 6\n");
+        fs::remove(path(name));
+    }
+    EXPECT_EQ(entries(), 0u);
+}
+
+// The temporary name is the file's name cut to 244 bytes plus ".tmp-XXXXXX"; a two-byte character
+// across the cut is dropped whole. Here "x" + 126 two-byte characters: the cut falls inside the
+// 122nd, so the name keeps "x" and 121 characters (243 bytes).
+TEST_F(AtomicFile, TemporaryNamesDoNotSplitCharacters) {
+    std::string name = "x";
+    for (int i = 0; i < 126; ++i) name += "\xc3\xa9";
+    AtomicFileWriter writer(path(name));
+    const std::string temporary = fs::directory_iterator(folder_)->path().filename().string();
+    EXPECT_EQ(temporary.size(), 243u + 11u);
+    EXPECT_EQ(temporary.substr(0, 243), name.substr(0, 243));
+    EXPECT_EQ(temporary.substr(243, 5), ".tmp-");
+    writer.commit();
+    EXPECT_EQ(entries(), 1u);
+    EXPECT_TRUE(fs::exists(path(name)));
+}
+
+TEST_F(AtomicFile, NewFilesGetTheUsualPermissions) {
+    const mode_t previous = ::umask(027);
+    write_file_atomically(path("new.obj"), "v 1 2 3\n");
+    ::umask(previous);
+    EXPECT_EQ(fs::status(path("new.obj")).permissions(), fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
 }
 
 }  // namespace

@@ -5,11 +5,15 @@
 #include <fstream>
 #include <set>
 
+#include <sys/resource.h>
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 
 #include "cli/dispatch.h"
 #include "io/obj_reader.h"
 #include "obj_test_support.h"
+#include "scratch_folder.h"
 
 namespace rgbio {
 namespace {
@@ -101,6 +105,22 @@ TEST_F(CliCommands, ApplyBudgetMeetsTheTriangleCountExactly) {
     EXPECT_EQ(read_obj_file(path("down.obj")).triangles.size(), 100u);
     write("bad.txt", "budget lots\n");
     EXPECT_EQ(run({"apply", path("octahedron.obj"), path("bad.txt"), "-o", path("bad.obj")}), 2);
+}
+
+// Running out of memory is reported (exit 3, nothing saved), not an abort: the child process gets
+// 256 MB of address space beyond what it uses and asks for level 12 (134M triangles).
+TEST_F(CliCommands, OutOfMemoryIsExitThreeNotAnAbort) {
+    const int status = test::wait_status_of_child([&] {
+        long pages = 0;
+        std::ifstream("/proc/self/statm") >> pages;
+        const rlim_t limit = static_cast<rlim_t>(pages) * static_cast<rlim_t>(::sysconf(_SC_PAGESIZE)) + (rlim_t{256} << 20);
+        const rlimit address_space{limit, limit};
+        ::setrlimit(RLIMIT_AS, &address_space);
+        return run({"refine", path("octahedron.obj"), "-o", path("fine.obj"), "--level", "12"});
+    });
+    ASSERT_TRUE(WIFEXITED(status)) << "the command died of signal " << WTERMSIG(status);
+    EXPECT_EQ(WEXITSTATUS(status), 3);
+    EXPECT_EQ(std::distance(fs::directory_iterator(folder_), fs::directory_iterator()), 1) << "only the input is there";
 }
 
 }  // namespace

@@ -2,13 +2,18 @@
 // state bit for bit, and further edits then give identical results to never having saved.
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <set>
 #include <sstream>
+
+#include <unistd.h>
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 #include <tiny_obj_loader.h>
 
+#include "io/atomic_file.h"
 #include "io/mesh_file.h"
 #include "io/obj_error.h"
 #include "io/number_format.h"
@@ -125,6 +130,24 @@ TEST(MeshFile, CoarseningAfterLoadingMatchesCoarseningWithoutSaving) {
     rgb::apply_request(restored, rgb::LevelRequest{});
     EXPECT_TRUE(rgbtest::same_mesh(restored, original));
     EXPECT_TRUE(rgbtest::same_mesh(restored, octahedron()));
+}
+
+// save_mesh streams the file a buffer at a time; it must hold exactly the text format_obj builds
+// whole. Level 8 of the octahedron (524,288 triangles) with normals is several buffers long.
+TEST(MeshFile, StreamedFileIsExactlyTheFormattedText) {
+    rgb::Mesh mesh = octahedron();
+    rgb::set_level(mesh, 8);
+    rgb::set_level(mesh, 3, rgb::Sphere{{1, 0, 0}, 0.5});
+    const SaveOptions options{.normals = true};
+    const std::string expected = format_obj(mesh, options);
+    ASSERT_GT(expected.size(), 3 * AtomicFileWriter::kBufferBytes);
+    const std::filesystem::path path = std::filesystem::temp_directory_path() / ("rgbsub_streamed_" + std::to_string(::getpid()) + ".obj");
+    save_mesh(mesh, path.string(), options);
+    std::ifstream in(path, std::ios::binary);
+    const std::string written((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::filesystem::remove(path);
+    EXPECT_EQ(written.size(), expected.size());
+    EXPECT_TRUE(written == expected) << "the streamed file differs from format_obj";
 }
 
 TEST(MeshFile, OtherReadersSeeTheDisplayedMesh) {

@@ -4,6 +4,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <iostream>
 #include <string>
@@ -72,7 +73,7 @@ TEST_P(Golden, MatchesTheReviewedImage) {
     const Image image = render::render_headless(mesh, c.options, {{256, 256}, 30.0f, 20.0f});
     const std::filesystem::path path = std::filesystem::path(RGBSUB_GOLDEN_DIR) / (c.name + ".png");
     if (std::getenv("RGBSUB_UPDATE_GOLDEN") != nullptr) {
-        render::write_png(image, path);
+        std::ofstream(path, std::ios::binary) << render::encode_png(image);
         std::cout << "wrote " << path << '\n';
         return;
     }

@@ -9,7 +9,7 @@
 
 namespace render_test {
 
-rgb::Mesh icosphere(int subdivisions) {
+rgb::Mesh icosphere(int subdivisions, double scale) {
     const double t = (1.0 + std::sqrt(5.0)) / 2.0;
     std::vector<glm::dvec3> points{{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
                                    {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
@@ -36,6 +36,7 @@ rgb::Mesh icosphere(int subdivisions) {
         }
         triangles = std::move(finer);
     }
+    for (glm::dvec3& p : points) p *= scale;
     return rgb::Mesh(points, triangles);
 }
 

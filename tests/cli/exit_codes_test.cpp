@@ -1,0 +1,118 @@
+// One table of exit codes, true for every command: each subcommand is run through each row of the
+// README's table (ok, usage error, bad input, I/O or resource failure) and must exit with the code
+// the README gives that row. The expected codes are read from README.md, not from the program.
+#include <fstream>
+#include <map>
+#include <regex>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <sys/stat.h>
+
+#include <gtest/gtest.h>
+
+#include "cli/commands.h"
+#include "obj_test_support.h"
+#include "run_rgbsub.h"
+#include "scratch_folder.h"
+
+namespace {
+
+// Rows "| 0 | ok | ..." of the README's exit code table: meaning -> code.
+std::map<std::string, int> readme_exit_codes() {
+    std::ifstream readme(RGBSUB_SOURCE_DIR "/README.md");
+    std::map<std::string, int> codes;
+    const std::regex row(R"(^\| (\d) \| ([^|]+?) \|)");
+    bool in_table = false;
+    for (std::string line; std::getline(readme, line);) {
+        if (line == "### Exit codes") in_table = true;
+        else if (in_table && line.starts_with("#")) break;
+        std::smatch match;
+        if (in_table && std::regex_search(line, match, row)) codes[match[2]] = std::stoi(match[1]);
+    }
+    return codes;
+}
+
+struct Case {
+    std::vector<std::string> args;
+    std::string row;  // the README's meaning
+    std::string shell_prefix = {};
+};
+
+class ExitCodes : public rgbio::test::ScratchFolder {};
+
+TEST_F(ExitCodes, EveryCommandFollowsTheReadmeTable) {
+    const std::map<std::string, int> table = readme_exit_codes();
+    ASSERT_EQ(table, (std::map<std::string, int>{{"ok", 0}, {"usage error", 1}, {"bad input", 2}, {"I/O or resource failure", 3}}))
+        << "the README's table changed: update this test's cases with it";
+
+    write("mesh.obj", rgbio::test::kOctahedron);
+    write("bowtie.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv -1 0 0\nv -1 -1 0\nf 1 2 3\nf 1 4 5\n");
+    write("script.txt", "level 2\n");
+    write("bad_script.txt", "level 2\nbogus\n");
+    ::mkdir(path("folder").c_str(), 0755);
+    const std::string mesh = path("mesh.obj"), bowtie = path("bowtie.obj"), missing = path("missing.obj"), folder = path("folder");
+    const std::string obj = path("out.obj"), png = path("out.png");
+    const std::string tiny_disk = "ulimit -f 1;";  // a file-size limit of 512 bytes acts as a full disk
+
+    const std::vector<Case> cases{
+        {{"edit", mesh, "--screenshot", png}, "ok"},
+        {{"edit", "-x"}, "usage error"},
+        {{"edit", mesh, "--screenshot", png, "--screenshot", png}, "usage error"},
+        {{"edit", bowtie, "--screenshot", png}, "bad input"},
+        {{"edit", missing, "--screenshot", png}, "I/O or resource failure"},
+        {{"edit", mesh, "--screenshot", folder}, "I/O or resource failure"},
+        {{"edit", mesh, "--screenshot", png}, "I/O or resource failure", tiny_disk},
+
+        {{"render", mesh, "-o", png, "--size", "64x48"}, "ok"},
+        {{"render", mesh, "-o", png, "-x"}, "usage error"},
+        {{"render", mesh, "-o", "-o"}, "usage error"},
+        {{"render", mesh, "-o", png, "--view", "nan,0"}, "usage error"},
+        {{"render", bowtie, "-o", png}, "bad input"},
+        {{"render", missing, "-o", png}, "I/O or resource failure"},
+        {{"render", mesh, "-o", folder}, "I/O or resource failure"},
+        {{"render", mesh, "-o", ""}, "I/O or resource failure"},
+        {{"render", mesh, "-o", png, "--size", "64x48"}, "I/O or resource failure", tiny_disk},
+
+        {{"info", mesh}, "ok"},
+        {{"info", "-x", mesh}, "usage error"},
+        {{"info", mesh, mesh}, "usage error"},
+        {{"info", bowtie}, "bad input"},
+        {{"info", missing}, "I/O or resource failure"},
+        {{"info", folder}, "I/O or resource failure"},
+
+        {{"refine", mesh, "-o", obj, "--level", "2"}, "ok"},
+        {{"refine", mesh, "-o", obj, "--level", "2", "-x"}, "usage error"},
+        {{"refine", mesh, "-o", obj, "-o", obj, "--level", "2"}, "usage error"},
+        {{"refine", bowtie, "-o", obj, "--level", "2"}, "bad input"},
+        {{"refine", missing, "-o", obj, "--level", "2"}, "I/O or resource failure"},
+        {{"refine", mesh, "-o", folder, "--level", "2"}, "I/O or resource failure"},
+        {{"refine", mesh, "-o", obj, "--level", "2"}, "I/O or resource failure", tiny_disk},
+
+        {{"apply", mesh, path("script.txt"), "-o", obj}, "ok"},
+        {{"apply", mesh, path("script.txt"), "-o", obj, "-x"}, "usage error"},
+        {{"apply", mesh, "-o", obj}, "usage error"},
+        {{"apply", bowtie, path("script.txt"), "-o", obj}, "bad input"},
+        {{"apply", mesh, path("bad_script.txt"), "-o", obj}, "bad input"},
+        {{"apply", mesh, path("missing.txt"), "-o", obj}, "I/O or resource failure"},
+        {{"apply", mesh, path("script.txt"), "-o", folder}, "I/O or resource failure"},
+        {{"apply", mesh, path("script.txt"), "-o", obj}, "I/O or resource failure", tiny_disk},
+    };
+
+    std::set<std::pair<std::string, std::string>> covered;
+    for (const Case& c : cases) {
+        const cli_test::Outcome run = cli_test::run_rgbsub(c.args, c.shell_prefix);
+        std::string shown = c.shell_prefix + " rgbsub";
+        for (const std::string& a : c.args) shown += " '" + a + "'";
+        EXPECT_EQ(run.exit_code, table.at(c.row)) << shown << " should be '" << c.row << "'; it printed:\n" << run.output;
+        covered.insert({c.args.front(), c.row});
+    }
+    // Every subcommand went through every row.
+#define RGBSUB_EXPECT_COVERED(name, description) \
+    for (const auto& [meaning, code] : table) EXPECT_TRUE(covered.contains({#name, meaning})) << #name << " is not run through '" << meaning << "'";
+    RGBSUB_COMMANDS(RGBSUB_EXPECT_COVERED)
+#undef RGBSUB_EXPECT_COVERED
+}
+
+}  // namespace
