@@ -204,7 +204,9 @@ bool can_remove_vertex(const Mesh& mesh, VertexId v) { return mesh.is_live(v) &&
 void remove_vertex(Mesh& mesh, VertexId v) {
     auto star = analyse(mesh, v);
     if (!star) throw std::logic_error("remove_vertex: the vertex is not removable");
-    while (!mergeable(*star)) {
+    // Each half needs at most one swap; more would mean the star is not what removability promised.
+    for (int swaps = 0; !mergeable(*star); ++swaps) {
+        if (swaps == 2) throw std::logic_error("remove_vertex: the star does not normalise");
         for (const Half& half : star->halves)
             if (half.kind == HalfKind::GGG || half.kind == HalfKind::GBR) {
                 normalise(mesh, v, half);

@@ -43,6 +43,7 @@ bool refine_halfedge(Mesh& mesh, HalfedgeId h) {
         const FaceId f = Mesh::face(s);
         if (mesh.level(f) >= e.level) continue;
         const HalfedgeId coarse = edge_refining_face(mesh, f);
+        if (!coarse.valid()) throw std::logic_error("refine_edge: a coarser neighbour has no edge to refine (invalid RGB mesh)");
         refine_vertices(mesh, mesh.from_vertex(coarse), mesh.to_vertex(coarse));
     }
     h = mesh.find_edge(a, b);

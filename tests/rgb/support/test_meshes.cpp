@@ -130,6 +130,100 @@ TestMesh grid(int nx, int ny) {
     return m;
 }
 
+namespace {
+
+// Cells of an nx-by-ny grid: solid, or a hole every `every` cells (never on the rim).
+bool is_hole(int x, int y, int nx, int ny, int every) {
+    return every > 0 && x > 0 && y > 0 && x < nx - 1 && y < ny - 1 && x % every == every / 2 && y % every == every / 2;
+}
+
+}  // namespace
+
+TestMesh perforated_slab(int nx, int ny, int every) {
+    TestMesh m{"slab" + std::to_string(nx) + "x" + std::to_string(ny) + "h" + std::to_string(every), {}, {}};
+    const auto row = static_cast<std::uint32_t>(nx + 1);
+    const std::uint32_t layer = row * static_cast<std::uint32_t>(ny + 1);
+    for (int z = 0; z < 2; ++z)
+        for (int y = 0; y <= ny; ++y)
+            for (int x = 0; x <= nx; ++x) m.positions.push_back({x, y, 0.6 * z});
+    auto quad = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {  // counter-clockwise
+        m.triangles.push_back({a, b, c});
+        m.triangles.push_back({a, c, d});
+    };
+    auto solid = [&](int x, int y) { return x >= 0 && y >= 0 && x < nx && y < ny && !is_hole(x, y, nx, ny, every); };
+    for (int y = 0; y < ny; ++y)
+        for (int x = 0; x < nx; ++x) {
+            if (!solid(x, y)) continue;
+            const std::uint32_t a = static_cast<std::uint32_t>(y) * row + static_cast<std::uint32_t>(x), b = a + 1, c = a + row + 1,
+                                d = a + row;
+            quad(a + layer, b + layer, c + layer, d + layer);  // top, facing +z
+            quad(a, d, c, b);                                  // bottom, facing -z
+            // Walls where a solid cell meets a hole or the outside, facing away from the cell.
+            if (!solid(x, y - 1)) quad(a, b, b + layer, a + layer);
+            if (!solid(x + 1, y)) quad(b, c, c + layer, b + layer);
+            if (!solid(x, y + 1)) quad(c, d, d + layer, c + layer);
+            if (!solid(x - 1, y)) quad(d, a, a + layer, d + layer);
+        }
+    // Drop the vertices no face uses (inside the holes' columns there are none, but keep it general).
+    std::vector<std::uint32_t> index(m.positions.size(), UINT32_MAX);
+    std::vector<glm::dvec3> used;
+    for (rgb::Triangle& t : m.triangles)
+        for (std::uint32_t& v : t) {
+            if (index[v] == UINT32_MAX) {
+                index[v] = static_cast<std::uint32_t>(used.size());
+                used.push_back(m.positions[v]);
+            }
+            v = index[v];
+        }
+    m.positions = used;
+    jitter(m.positions, 0.08, 500 + static_cast<std::uint32_t>(nx * ny));
+    return m;
+}
+
+TestMesh grid_with_holes(int nx, int ny, int every) {
+    TestMesh m{"holes" + std::to_string(nx) + "x" + std::to_string(ny) + "h" + std::to_string(every), {}, {}};
+    const auto row = static_cast<std::uint32_t>(nx + 1);
+    for (int y = 0; y <= ny; ++y)
+        for (int x = 0; x <= nx; ++x) m.positions.push_back({x, y, 0.1 * ((x * 7 + y * 3) % 5)});
+    for (int y = 0; y < ny; ++y)
+        for (int x = 0; x < nx; ++x) {
+            if (is_hole(x, y, nx, ny, every)) continue;
+            const std::uint32_t a = static_cast<std::uint32_t>(y) * row + static_cast<std::uint32_t>(x), b = a + 1, c = a + row,
+                                d = c + 1;
+            m.triangles.push_back({a, b, d});
+            m.triangles.push_back({a, d, c});
+        }
+    jitter(m.positions, 0.1, 600 + static_cast<std::uint32_t>(nx * ny));
+    return m;
+}
+
+TestMesh with_rotated_corners(const TestMesh& m) {
+    TestMesh r = m;
+    r.name += "-rotated";
+    for (rgb::Triangle& t : r.triangles) t = {t[1], t[2], t[0]};
+    return r;
+}
+
+TestMesh with_reversed_faces(const TestMesh& m) {
+    TestMesh r = m;
+    r.name += "-reversed";
+    std::reverse(r.triangles.begin(), r.triangles.end());
+    return r;
+}
+
+TestMesh with_shuffled_vertices(const TestMesh& m, std::uint32_t seed) {
+    TestMesh r = m;
+    r.name += "-shuffled";
+    std::vector<std::uint32_t> to(m.positions.size());
+    for (std::uint32_t i = 0; i < to.size(); ++i) to[i] = i;
+    std::mt19937 rng(seed);
+    for (std::size_t i = to.size(); i > 1; --i) std::swap(to[i - 1], to[rng() % i]);
+    for (std::uint32_t i = 0; i < to.size(); ++i) r.positions[to[i]] = m.positions[i];
+    for (rgb::Triangle& t : r.triangles)
+        for (std::uint32_t& v : t) v = to[v];
+    return r;
+}
+
 TestMesh single_triangle() { return {"triangle", {{0, 0, 0}, {1, 0, 0}, {0.3, 0.9, 0.1}}, {{0, 1, 2}}}; }
 
 TestMesh bunny() {

@@ -35,10 +35,21 @@ TestMesh fan(int n);
 // An open nx-by-ny grid of quads, each cut into two triangles (interior valence 6, boundary 3 or 4,
 // corners 2 or 3).
 TestMesh grid(int nx, int ny);
+// A closed slab of nx-by-ny cells with a square hole through every `every`-th cell in both
+// directions: genus = number of holes. Cells are split into two triangles on each face.
+TestMesh perforated_slab(int nx, int ny, int every);
+// An open grid with a square hole at every `every`-th cell: several boundary loops.
+TestMesh grid_with_holes(int nx, int ny, int every);
 // One triangle (0, 1, 2): every edge on the boundary.
 TestMesh single_triangle();
 // assets/bunny.obj: 1839 vertices, 3674 triangles, closed.
 TestMesh bunny();
+
+// The same surface stored differently: each triangle's corners rotated by one, the triangle list
+// reversed, or the vertices renumbered by a seeded shuffle.
+TestMesh with_rotated_corners(const TestMesh& m);
+TestMesh with_reversed_faces(const TestMesh& m);
+TestMesh with_shuffled_vertices(const TestMesh& m, std::uint32_t seed);
 
 // The small meshes most tests iterate over: tetrahedron, octahedron, icosahedron, bipyramids
 // n = 3..10, fans n = 5, 6, 7, a 3x2 grid, a single triangle.
