@@ -56,8 +56,8 @@ rgb::Mesh build_mesh(const LoadedMesh& loaded, const std::string& file) {
     }
 }
 
-rgb::Mesh load_mesh(const std::string& path, std::vector<std::string>* warnings) {
-    const LoadedMesh loaded = read_obj_file(path);
+rgb::Mesh load_mesh(const std::string& path, std::vector<std::string>* warnings, const ReadOptions& options) {
+    const LoadedMesh loaded = read_obj_file(path, options);
     if (warnings) warnings->insert(warnings->end(), loaded.warnings.begin(), loaded.warnings.end());
     return build_mesh(loaded, path);
 }

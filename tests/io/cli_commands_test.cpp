@@ -57,7 +57,7 @@ TEST_F(CliCommands, ExitCodes) {
     EXPECT_EQ(run({"refine", path("octahedron.obj"), "-o", path("o.obj"), "--level", "1", "--sphere", "1,2"}), 1);
     EXPECT_EQ(run({"refine", path("octahedron.obj"), "-o", path("o.obj"), "--level", "1", "--positions", "x"}), 1);
     write("bowtie.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv -1 0 0\nv -1 -1 0\nf 1 2 3\nf 1 4 5\n");
-    EXPECT_EQ(run({"info", path("bowtie.obj")}), 2);
+    EXPECT_EQ(run({"info", path("bowtie.obj")}), 0);  // repaired, with a warning
     EXPECT_EQ(run({"info", path("missing.obj")}), 3);
     EXPECT_EQ(run({"refine", path("octahedron.obj"), "-o", path("octahedron.obj/x.obj"), "--level", "1"}), 3);
     write("script.txt", "level 2\nlevel 3 sphere 1 0 0 0.5\nbogus\n");
