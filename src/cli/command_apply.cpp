@@ -13,14 +13,16 @@ namespace cli {
 
 int run_apply(std::span<const std::string> args) {
     const std::vector<std::string> words = with_long_output_option(args);
-    const Arguments arguments(words, {"--timings", "--normals"}, {"--output", "--positions"});
+    const Arguments arguments(words, {"--timings", "--normals", kStrictSwitch}, {"--output", "--positions"});
     if (arguments.has("--help")) {
         std::cout << "usage: rgbsub apply IN.obj SCRIPT -o OUT.obj [--timings] [--positions display|limit] [--normals]\n"
+                     "                    [--strict]\n"
                      "Runs SCRIPT, one edit per line, then saves the adaptive mesh:\n"
                      "  level N sphere X Y Z R   set the level of detail to N inside the sphere\n"
                      "  level N                  set it everywhere\n"
                      "  budget TRIANGLES         refine/coarsen towards a triangle count\n"
-                     "Blank lines and lines starting with # are skipped. --timings prints the engine time per line.\n";
+                     "Blank lines and lines starting with # are skipped. --timings prints the engine time per line.\n"
+                  << kStrictHelp;
         return exit_ok;
     }
     if (arguments.positional().size() != 2) throw UsageError("expects IN.obj and SCRIPT");
@@ -36,7 +38,7 @@ int run_apply(std::span<const std::string> args) {
         // The whole script is checked before the (possibly long) load and edits.
         const std::vector<LodEdit> script = read_lod_script(script_file);
         std::vector<std::string> warnings;
-        rgb::Mesh mesh = rgbio::load_mesh(input, &warnings);
+        rgb::Mesh mesh = rgbio::load_mesh(input, &warnings, read_options(arguments));
         print_warnings("apply", input, warnings);
         Progress progress("applying " + script_file);
         for (std::size_t i = 0; i < script.size(); ++i) {

@@ -10,18 +10,19 @@
 namespace cli {
 
 int run_info(std::span<const std::string> args) {
-    const Arguments arguments(args, {}, {});
+    const Arguments arguments(args, {kStrictSwitch}, {});
     if (arguments.has("--help")) {
-        std::cout << "usage: rgbsub info FILE.obj\n"
+        std::cout << "usage: rgbsub info FILE.obj [--strict]\n"
                      "Validates FILE.obj as rgbsub loads it (fixes are reported as warnings, problems as errors\n"
                      "naming the line) and prints V, E, F, boundary loops, Euler characteristic, and the\n"
-                     "triangles per colour and per level.\n";
+                     "triangles per colour and per level.\n"
+                  << kStrictHelp;
         return exit_ok;
     }
     if (arguments.positional().size() != 1) throw UsageError("expects exactly one FILE.obj");
     const std::string& file = arguments.positional()[0];
     return report_io_errors("info", [&] {
-        const rgbio::LoadedMesh loaded = rgbio::read_obj_file(file);
+        const rgbio::LoadedMesh loaded = rgbio::read_obj_file(file, read_options(arguments));
         const rgb::Mesh mesh = rgbio::build_mesh(loaded, file);
         std::cout << file << ": valid" << (loaded.warnings.empty() ? "" : " after fixes") << '\n';
         for (const std::string& warning : loaded.warnings) std::cout << "warning: " << warning << '\n';

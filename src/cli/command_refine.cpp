@@ -34,14 +34,15 @@ rgb::Region parse_sphere(const std::string& text) {
 
 int run_refine(std::span<const std::string> args) {
     const std::vector<std::string> words = with_long_output_option(args);
-    const Arguments arguments(words, {"--normals"}, {"--output", "--level", "--sphere", "--positions"});
+    const Arguments arguments(words, {"--normals", kStrictSwitch}, {"--output", "--level", "--sphere", "--positions"});
     if (arguments.has("--help")) {
         std::cout << "usage: rgbsub refine IN.obj -o OUT.obj --level N [--sphere X,Y,Z,R] [--positions display|limit]\n"
-                     "                     [--normals]\n"
+                     "                     [--normals] [--strict]\n"
                      "Sets the level of detail to N inside the sphere (everywhere without --sphere): faces below N\n"
                      "are refined, vertices above N removed where removable. OUT.obj keeps the adaptive state, so\n"
                      "it can be refined further; '--level 0' on it returns the base mesh. --positions limit writes\n"
-                     "Loop limit positions where the mesh holds a vertex's ring (displayed ones elsewhere).\n";
+                     "Loop limit positions where the mesh holds a vertex's ring (displayed ones elsewhere).\n"
+                  << kStrictHelp;
         return exit_ok;
     }
     if (arguments.positional().size() != 1) throw UsageError("expects exactly one IN.obj");
@@ -57,7 +58,7 @@ int run_refine(std::span<const std::string> args) {
 
     return report_io_errors("refine", [&] {
         std::vector<std::string> warnings;
-        rgb::Mesh mesh = rgbio::load_mesh(input, &warnings);
+        rgb::Mesh mesh = rgbio::load_mesh(input, &warnings, read_options(arguments));
         print_warnings("refine", input, warnings);
         {
             Progress progress("refining");

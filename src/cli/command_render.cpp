@@ -8,6 +8,7 @@
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
+#include "cli/mesh_io_support.h"
 #include "io/mesh_file.h"
 #include "io/obj_error.h"
 #include "render/headless.h"
@@ -19,7 +20,7 @@ namespace {
 
 constexpr std::string_view kUsage =
     "usage: rgbsub render IN.obj -o OUT.png [--size WxH] [--mode shaded|flat|rgb|level] [--wire]\n"
-    "                     [--view AZIMUTH,ELEVATION] [--limit] [--base]\n"
+    "                     [--view AZIMUTH,ELEVATION] [--limit] [--base] [--strict]\n"
     "Renders the mesh headless (OSMesa, no display needed), framed automatically.\n"
     "  -o, --output PATH   the PNG to write (replaced atomically)\n"
     "  --size WxH          image size in pixels (default 1024x768)\n"
@@ -30,6 +31,7 @@ constexpr std::string_view kUsage =
     "  --limit             limit-surface positions where the mesh holds a vertex's ring,\n"
     "                      displayed positions elsewhere (the count is reported)\n"
     "  --base              overlay the base mesh's edges\n"
+    "  --strict            refuse a non-manifold input instead of cutting it apart\n"
     "The same input gives the same bytes.\n";
 
 constexpr int kMaxImageSide = 8192;
@@ -96,7 +98,7 @@ std::size_t count_limit_fallbacks(const rgb::Mesh& mesh) {
 
 int run_render(std::span<const std::string> args) {
     const std::vector<std::string> words = spell_out_short_options(args);
-    const Arguments arguments(words, {"--wire", "--limit", "--base"}, {"--output", "--size", "--mode", "--view"});
+    const Arguments arguments(words, {"--wire", "--limit", "--base", kStrictSwitch}, {"--output", "--size", "--mode", "--view"});
     if (arguments.has("--help")) {
         std::cout << kUsage;
         return exit_ok;
@@ -119,7 +121,7 @@ int run_render(std::span<const std::string> args) {
     std::vector<std::string> warnings;
     rgb::Mesh mesh;
     try {
-        mesh = rgbio::load_mesh(input, &warnings);
+        mesh = rgbio::load_mesh(input, &warnings, read_options(arguments));
     } catch (const rgbio::ObjError& error) {
         std::cerr << "rgbsub render: " << error.what() << '\n';
         return error.problem() == rgbio::ObjProblem::Unreadable ? exit_io_failure : exit_bad_input;

@@ -1,14 +1,26 @@
 #pragma once
-// What the mesh commands (info, refine, apply) share: `-o` as the short form of `--output`,
-// turning io errors into messages and exit codes, and printing loader warnings.
+// What the mesh commands (info, refine, apply, render, edit) share: `-o` as the short form of
+// `--output`, `--strict`, turning io errors into messages and exit codes, and printing loader
+// warnings.
 #include <functional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
+#include "cli/arguments.h"
 #include "io/mesh_file.h"
 
 namespace cli {
+
+// The switch every command that reads a mesh accepts, and its line for the command's --help.
+inline constexpr std::string_view kStrictSwitch = "--strict";
+inline constexpr std::string_view kStrictHelp =
+    "  --strict            refuse a non-manifold input (bow-tie vertices, edges of more than two faces)\n"
+    "                      with exit code 2 instead of cutting it apart into a manifold\n";
+
+// How to read the input mesh given the command's arguments (which must accept kStrictSwitch).
+rgbio::ReadOptions read_options(const Arguments& arguments);
 
 // args with every "-o" replaced by "--output" (Arguments only knows long options).
 std::vector<std::string> with_long_output_option(std::span<const std::string> args);

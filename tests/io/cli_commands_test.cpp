@@ -58,12 +58,32 @@ TEST_F(CliCommands, ExitCodes) {
     EXPECT_EQ(run({"refine", path("octahedron.obj"), "-o", path("o.obj"), "--level", "1", "--positions", "x"}), 1);
     write("bowtie.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv -1 0 0\nv -1 -1 0\nf 1 2 3\nf 1 4 5\n");
     EXPECT_EQ(run({"info", path("bowtie.obj")}), 0);  // repaired, with a warning
+    EXPECT_EQ(run({"info", path("bowtie.obj"), "--strict"}), 2);
     EXPECT_EQ(run({"info", path("missing.obj")}), 3);
     EXPECT_EQ(run({"refine", path("octahedron.obj"), "-o", path("octahedron.obj/x.obj"), "--level", "1"}), 3);
     write("script.txt", "level 2\nlevel 3 sphere 1 0 0 0.5\nbogus\n");
     EXPECT_EQ(run({"apply", path("octahedron.obj"), path("script.txt"), "-o", path("o.obj")}), 2);
     EXPECT_FALSE(fs::exists(path("o.obj")));
     EXPECT_EQ(run({"apply", path("octahedron.obj"), path("missing.txt"), "-o", path("o.obj")}), 3);
+}
+
+// Every command that reads a mesh refuses a non-manifold one with --strict (before any rendering or
+// window), and repairs it without.
+TEST_F(CliCommands, StrictRefusesNonManifoldInputInEveryCommand) {
+    write("bowtie.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv -1 0 0\nv -1 -1 0\nf 1 2 3\nf 1 4 5\n");
+    write("script.txt", "level 1\n");
+    EXPECT_EQ(run({"refine", path("bowtie.obj"), "-o", path("o.obj"), "--level", "1", "--strict"}), 2);
+    EXPECT_EQ(run({"apply", path("bowtie.obj"), path("script.txt"), "-o", path("o.obj"), "--strict"}), 2);
+    EXPECT_FALSE(fs::exists(path("o.obj")));
+    EXPECT_EQ(run({"render", path("bowtie.obj"), "-o", path("o.png"), "--strict"}), 2);
+    EXPECT_EQ(run({"edit", path("bowtie.obj"), "--screenshot", path("o.png"), "--strict"}), 2);
+    EXPECT_FALSE(fs::exists(path("o.png")));
+    ASSERT_EQ(run({"refine", path("bowtie.obj"), "-o", path("o.obj"), "--level", "1"}), 0);
+    // The split vertex stays split in the saved file: two separate triangles of 6 vertices each.
+    const LoadedMesh saved = read_obj_file(path("o.obj"));
+    EXPECT_EQ(saved.triangles.size(), 8u);
+    EXPECT_EQ(saved.positions.size(), 12u);
+    EXPECT_TRUE(saved.warnings.empty());
 }
 
 TEST_F(CliCommands, RefineThenLevelZeroGivesBackTheInput) {
