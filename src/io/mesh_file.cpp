@@ -9,6 +9,7 @@
 #include "io/obj_error.h"
 #include "io/obj_reader.h"
 #include "io/state_format.h"
+#include "io/truncation_check.h"
 #include "rgb/loop_geometry.h"
 
 namespace rgbio {
@@ -74,7 +75,9 @@ std::string format_obj(const rgb::Mesh& mesh, const SaveOptions& options, SaveRe
     }
 
     std::string out = "# rgbsub mesh: " + std::to_string(positions.size()) + " vertices, " + std::to_string(triangles.size()) +
-                      " triangles; positions: " + (options.positions == SavedPositions::Limit ? "limit" : "displayed") + "\n";
+                      " triangles; positions: " + (options.positions == SavedPositions::Limit ? "limit" : "displayed") +
+                      // Lets the reader tell a file cut before its state from one saved without it.
+                      (options.state ? std::string(kSavedStateNote) : std::string()) + "\n";
     out.reserve(out.size() + 40 * positions.size() + 30 * triangles.size());
     for (const glm::dvec3& p : positions) {
         out += 'v';

@@ -50,22 +50,27 @@ std::optional<SavedFileHeader> read_saved_file_header(std::string_view text) {
     text.remove_prefix(kHeaderStart.size());
     SavedFileHeader header;
     if (!read_count(text, " vertices, ", header.vertices) || !read_count(text, " triangles", header.triangles)) return std::nullopt;
+    header.state = text.substr(0, text.find_first_of("\r\n")).find(kSavedStateNote) != std::string_view::npos;
     return header;
 }
 
 void check_saved_file_complete(const SavedFileHeader& header, const ObjRecords& records, std::string_view text,
                                const std::string& file) {
     const std::size_t vertices = records.positions.size(), faces = records.polygons.size();
-    const bool state_cut = !records.state.empty() && records.state.back().text != "end";
-    if (vertices >= header.vertices && faces >= header.triangles && !state_cut) return;
+    // The state's end line marks a complete file; without state, the newline after the last face.
+    const bool state_cut = (header.state && records.state.empty()) || (!records.state.empty() && records.state.back().text != "end");
+    const bool last_line_cut = records.state.empty() && !text.ends_with('\n') && !text.ends_with('\r');
+    if (vertices >= header.vertices && faces >= header.triangles && !state_cut && !last_line_cut) return;
     throw truncated(header, vertices, faces, count_body(text).last_line, file,
-                    state_cut ? "; its adaptive state (#rgb lines) stops before its end line" : "");
+                    state_cut       ? "; its adaptive state (#rgb lines) is missing or stops before its end line"
+                    : last_line_cut ? ", and its last line stops without a newline"
+                                    : "");
 }
 
 ObjError truncation_or(const ObjError& error, const SavedFileHeader& header, std::string_view text, const std::string& file) {
     if (error.problem() == ObjProblem::Unreadable) return error;
     const BodyCounts counts = count_body(text);
-    const bool cut_mid_line = !text.ends_with('\n');
+    const bool cut_mid_line = !text.ends_with('\n') && !text.ends_with('\r');
     if (!cut_mid_line && counts.vertices >= header.vertices && counts.faces >= header.triangles) return error;
     return truncated(header, counts.vertices, counts.faces, counts.last_line, file,
                      std::string(cut_mid_line ? ", and its last line stops without a newline" : "") +

@@ -58,5 +58,46 @@ TEST(PolygonTriangulation, DegenerateCollinearPolygonStillGivesAllTriangles) {
     EXPECT_EQ(triangulate_polygon(line, polygon).size(), 3u);
 }
 
+TEST(PolygonTriangulation, QuadIsCutAtItsFirstEarInCornerOrder) {
+    const std::vector<glm::dvec3> square = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    const std::vector<std::uint32_t> quad = {0, 1, 2, 3};
+    EXPECT_EQ(triangulate_polygon_corners(square, quad), (std::vector<std::array<std::uint32_t, 3>>{{3, 0, 1}, {1, 2, 3}}));
+    // A dart whose corner 0 is reflex: corner 1 is the first ear.
+    const std::vector<glm::dvec3> dart = {{0.5, 0.4, 0}, {0, 0, 0}, {0.5, 1, 0}, {1, 0, 0}};
+    EXPECT_EQ(triangulate_polygon_corners(dart, quad), (std::vector<std::array<std::uint32_t, 3>>{{0, 1, 2}, {0, 2, 3}}));
+}
+
+// Every triangle turns the polygon's way and the areas add up to the polygon's.
+void expect_full_triangulation(const std::vector<glm::dvec3>& p, double area, const glm::dvec3& axis) {
+    std::vector<std::uint32_t> polygon(p.size());
+    for (std::uint32_t i = 0; i < polygon.size(); ++i) polygon[i] = i;
+    const auto triangles = triangulate_polygon(p, polygon);
+    ASSERT_EQ(triangles.size(), p.size() - 2);
+    double sum = 0;
+    std::size_t flipped = 0;
+    for (const auto& t : triangles) {
+        const double signed_area = 0.5 * glm::dot(triangle_normal(p, t), axis);
+        flipped += signed_area <= 0;
+        sum += signed_area;
+    }
+    EXPECT_EQ(flipped, 0u);
+    EXPECT_NEAR(sum, area, 1e-9 * area);
+}
+
+TEST(PolygonTriangulation, LargeConcavePolygonsAreTriangulatedCompletely) {
+    glm::dvec3 axis;
+    const std::vector<glm::dvec3> star = tilted_star(20000, axis);
+    expect_full_triangulation(star, 2 * 20000 * 0.5 * 1.0 * 0.3 * std::sin(3.141592653589793 / 20000), axis);
+    // A comb: 5000 teeth of 1 x 10 on a bar of 10000 x 1, which forces a fan along the bar.
+    std::vector<glm::dvec3> comb;
+    constexpr int kTeeth = 5000;
+    for (int k = 0; k < kTeeth; ++k)
+        for (const auto& [dx, y] : {std::pair{0, 0}, std::pair{0, 10}, std::pair{1, 10}, std::pair{1, 0}})
+            comb.push_back({2.0 * k + dx, double(y), 0});
+    comb.push_back({2.0 * kTeeth, -1, 0});
+    comb.push_back({0, -1, 0});
+    expect_full_triangulation(comb, kTeeth * 10.0 + 2.0 * kTeeth * 1.0 - 0.5, glm::dvec3(0, 0, -1));
+}
+
 }  // namespace
 }  // namespace rgbio
