@@ -2,7 +2,6 @@
 // `--level 0` gives back the input mesh exactly.
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <set>
 
 #include <gtest/gtest.h>
@@ -10,26 +9,20 @@
 #include "cli/dispatch.h"
 #include "io/obj_reader.h"
 #include "obj_test_support.h"
+#include "temp_folder.h"
 
 namespace rgbio {
 namespace {
 
 namespace fs = std::filesystem;
 
-class CliCommands : public ::testing::Test {
+class CliCommands : public test::TempFolderTest {
 protected:
     void SetUp() override {
-        folder_ = fs::temp_directory_path() / ("rgbsub_cli_" + std::to_string(::getpid()) + "_" +
-                                               ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(folder_);
-        fs::create_directories(folder_);
+        TempFolderTest::SetUp();
         write("octahedron.obj", test::kOctahedron);
     }
-    void TearDown() override { fs::remove_all(folder_); }
-    std::string path(const std::string& name) const { return (folder_ / name).string(); }
-    void write(const std::string& name, const std::string& text) const { std::ofstream(folder_ / name, std::ios::binary) << text; }
     static int run(std::vector<std::string> args) { return cli::dispatch(args); }
-    fs::path folder_;
 };
 
 // Triangles as triples of positions, rotated to start at the smallest, so that meshes can be

@@ -1,12 +1,11 @@
 // Material libraries next to an OBJ file: names, diffuse colours and textures as the .mtl says,
 // paths resolved against the right folder, and every missing piece a warning, never an error.
 #include <filesystem>
-#include <fstream>
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include "obj_test_support.h"
+#include "temp_folder.h"
 
 namespace rgbio {
 namespace {
@@ -14,20 +13,13 @@ namespace {
 namespace fs = std::filesystem;
 using test::has_warning;
 
-class MaterialLibrary : public ::testing::Test {
+class MaterialLibrary : public test::TempFolderTest {
 protected:
     void SetUp() override {
-        folder_ = fs::temp_directory_path() / ("rgbsub_mtl_" + std::to_string(::getpid()) + "_" +
-                                               ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(folder_);
+        TempFolderTest::SetUp();
         fs::create_directories(folder_ / "materials" / "textures");
     }
-    void TearDown() override { fs::remove_all(folder_); }
-    void write(const fs::path& name, const std::string& text) const { std::ofstream(folder_ / name, std::ios::binary) << text; }
-    std::string path(const fs::path& name) const { return (folder_ / name).string(); }
-
     static constexpr const char* kTriangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
-    fs::path folder_;
 };
 
 TEST_F(MaterialLibrary, ReadsNamesColoursAndTexturesRelativeToTheirFiles) {
