@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "io/polygon_triangulation.h"
+#include "polygon_shapes.h"
 
 namespace rgbio {
 namespace {
@@ -86,17 +87,16 @@ void expect_full_triangulation(const std::vector<glm::dvec3>& p, double area, co
 
 TEST(PolygonTriangulation, LargeConcavePolygonsAreTriangulatedCompletely) {
     glm::dvec3 axis;
-    const std::vector<glm::dvec3> star = tilted_star(20000, axis);
-    expect_full_triangulation(star, 2 * 20000 * 0.5 * 1.0 * 0.3 * std::sin(3.141592653589793 / 20000), axis);
-    // A comb: 5000 teeth of 1 x 10 on a bar of 10000 x 1, which forces a fan along the bar.
-    std::vector<glm::dvec3> comb;
-    constexpr int kTeeth = 5000;
-    for (int k = 0; k < kTeeth; ++k)
-        for (const auto& [dx, y] : {std::pair{0, 0}, std::pair{0, 10}, std::pair{1, 10}, std::pair{1, 0}})
-            comb.push_back({2.0 * k + dx, double(y), 0});
-    comb.push_back({2.0 * kTeeth, -1, 0});
-    comb.push_back({0, -1, 0});
-    expect_full_triangulation(comb, kTeeth * 10.0 + 2.0 * kTeeth * 1.0 - 0.5, glm::dvec3(0, 0, -1));
+    expect_full_triangulation(tilted_star(20000, axis), 2 * 20000 * 0.5 * 1.0 * 0.3 * std::sin(3.141592653589793 / 20000), axis);
+    expect_full_triangulation(test::comb_polygon(5000), test::comb_area(5000), glm::dvec3(0, 0, -1));
+    // A winding strip, its area by the shoelace formula.
+    const std::vector<glm::dvec3> spiral = test::spiral_polygon(20000);
+    double twice_area = 0;
+    for (std::size_t i = 0; i < spiral.size(); ++i) {
+        const glm::dvec3 &a = spiral[i], &b = spiral[(i + 1) % spiral.size()];
+        twice_area += a.x * b.y - b.x * a.y;
+    }
+    expect_full_triangulation(spiral, std::abs(twice_area) / 2, glm::dvec3(0, 0, twice_area > 0 ? 1 : -1));
 }
 
 }  // namespace
