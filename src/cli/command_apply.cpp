@@ -13,15 +13,16 @@ namespace cli {
 
 int run_apply(std::span<const std::string> args) {
     const std::vector<std::string> words = with_long_output_option(args);
-    const Arguments arguments(words, {"--timings", "--normals", kStrictSwitch}, {"--output", "--positions"});
+    const Arguments arguments(words, {"--timings", "--normals", "--plain", kStrictSwitch}, {"--output", "--positions"});
     if (arguments.has("--help")) {
         std::cout << "usage: rgbsub apply IN.obj SCRIPT -o OUT.obj [--timings] [--positions display|limit] [--normals]\n"
-                     "                    [--strict]\n"
+                     "                    [--plain] [--strict]\n"
                      "Runs SCRIPT, one edit per line, then saves the adaptive mesh:\n"
                      "  level N sphere X Y Z R   set the level of detail to N inside the sphere\n"
                      "  level N                  set it everywhere\n"
                      "  budget TRIANGLES         refine/coarsen towards a triangle count\n"
                      "Blank lines and lines starting with # are skipped. --timings prints the engine time per line.\n"
+                     "--plain writes an OBJ without the adaptive state (#rgb lines), for tools that dislike them.\n"
                   << kStrictHelp;
         return exit_ok;
     }
@@ -31,6 +32,7 @@ int run_apply(std::span<const std::string> args) {
     rgbio::SaveOptions save;
     save.positions = parse_positions(arguments.value("--positions").value_or("display"));
     save.normals = arguments.has("--normals");
+    save.state = !arguments.has("--plain");
     const std::string& input = arguments.positional()[0];
     const std::string& script_file = arguments.positional()[1];
 

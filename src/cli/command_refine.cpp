@@ -34,14 +34,15 @@ rgb::Region parse_sphere(const std::string& text) {
 
 int run_refine(std::span<const std::string> args) {
     const std::vector<std::string> words = with_long_output_option(args);
-    const Arguments arguments(words, {"--normals", kStrictSwitch}, {"--output", "--level", "--sphere", "--positions"});
+    const Arguments arguments(words, {"--normals", "--plain", kStrictSwitch}, {"--output", "--level", "--sphere", "--positions"});
     if (arguments.has("--help")) {
         std::cout << "usage: rgbsub refine IN.obj -o OUT.obj --level N [--sphere X,Y,Z,R] [--positions display|limit]\n"
-                     "                     [--normals] [--strict]\n"
+                     "                     [--normals] [--plain] [--strict]\n"
                      "Sets the level of detail to N inside the sphere (everywhere without --sphere): faces below N\n"
                      "are refined, vertices above N removed where removable. OUT.obj keeps the adaptive state, so\n"
                      "it can be refined further; '--level 0' on it returns the base mesh. --positions limit writes\n"
                      "Loop limit positions where the mesh holds a vertex's ring (displayed ones elsewhere).\n"
+                     "--plain writes an OBJ without the adaptive state (#rgb lines), for tools that dislike them.\n"
                   << kStrictHelp;
         return exit_ok;
     }
@@ -54,6 +55,7 @@ int run_refine(std::span<const std::string> args) {
     rgbio::SaveOptions save;
     save.positions = parse_positions(arguments.value("--positions").value_or("display"));
     save.normals = arguments.has("--normals");
+    save.state = !arguments.has("--plain");
     const std::string& input = arguments.positional()[0];
 
     return report_io_errors("refine", [&] {

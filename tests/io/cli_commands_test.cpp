@@ -79,6 +79,22 @@ TEST_F(CliCommands, StrictRefusesNonManifoldInputInEveryCommand) {
     EXPECT_TRUE(saved.warnings.empty());
 }
 
+// --plain leaves out the #rgb lines: the file loads as a plain mesh of the same triangles.
+TEST_F(CliCommands, PlainOutputHasNoStateLines) {
+    write("script.txt", "level 2\n");
+    ASSERT_EQ(run({"refine", path("octahedron.obj"), "-o", path("plain.obj"), "--level", "2", "--plain"}), 0);
+    ASSERT_EQ(run({"apply", path("octahedron.obj"), path("script.txt"), "-o", path("applied.obj"), "--plain"}), 0);
+    ASSERT_EQ(run({"refine", path("octahedron.obj"), "-o", path("full.obj"), "--level", "2"}), 0);
+    for (const char* name : {"plain.obj", "applied.obj"}) {
+        const std::string text = read_text_file(path(name));
+        EXPECT_EQ(text.find("#rgb"), std::string::npos) << name;
+        const LoadedMesh plain = read_obj_file(path(name));
+        EXPECT_FALSE(plain.state) << name;
+        EXPECT_EQ(plain.triangles.size(), 8u * 16u) << name;
+        EXPECT_EQ(triangles_by_position(plain), triangles_by_position(read_obj_file(path("full.obj")))) << name;
+    }
+}
+
 TEST_F(CliCommands, RefineThenLevelZeroGivesBackTheInput) {
     ASSERT_EQ(run({"refine", path("octahedron.obj"), "-o", path("fine.obj"), "--level", "3", "--sphere", "1,0,0,0.8"}), 0);
     const LoadedMesh fine = read_obj_file(path("fine.obj"));
