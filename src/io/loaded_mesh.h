@@ -39,12 +39,12 @@ struct FaceLabels {
 
 // One material of a `.mtl` library named by `mtllib` (read with tinyobjloader).
 struct Material {
-    std::string name;                    // newmtl, trimmed
+    std::string name{};                  // newmtl, trimmed
     glm::dvec3 diffuse{0.0};             // Kd as tinyobjloader reads it (not always correctly rounded;
                                          // its default where absent: 0, or 0.6 with map_Kd)
-    std::string diffuse_texture;         // map_Kd as a path: relative ones resolved against the .mtl's
+    std::string diffuse_texture{};       // map_Kd as a path: relative ones resolved against the .mtl's
                                          // folder, '\' read as '/'; empty without map_Kd
-    std::string library;                 // the .mtl file it came from (resolved path)
+    std::string library{};               // the .mtl file it came from (resolved path)
 };
 
 struct LoadedMesh {
