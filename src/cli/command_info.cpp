@@ -9,6 +9,22 @@
 
 namespace cli {
 
+namespace {
+
+// What rides on the mesh besides positions, one line each, only what the file has.
+void print_attributes(std::ostream& out, const rgbio::LoadedMesh& loaded) {
+    if (!loaded.triangle_texcoords.empty())
+        out << "texture coordinates: " << loaded.texcoords.size() << " (per corner)\n";
+    if (!loaded.colours.empty()) out << "vertex colours: yes\n";
+    if (!loaded.face_materials.empty())
+        out << "materials: " << loaded.face_materials.names.size() << " used, " << loaded.materials.size()
+            << " defined in the material libraries\n";
+    if (!loaded.face_groups.empty()) out << "groups: " << loaded.face_groups.names.size() << '\n';
+    if (!loaded.face_objects.empty()) out << "objects: " << loaded.face_objects.names.size() << '\n';
+}
+
+}  // namespace
+
 int run_info(std::span<const std::string> args) {
     const Arguments arguments(args, {kStrictSwitch}, {});
     if (arguments.has("--help")) {
@@ -27,6 +43,7 @@ int run_info(std::span<const std::string> args) {
         std::cout << file << ": valid" << (loaded.warnings.empty() ? "" : " after fixes") << '\n';
         for (const std::string& warning : loaded.warnings) std::cout << "warning: " << warning << '\n';
         std::cout << "adaptive state: " << (loaded.state ? "restored from the file's #rgb lines" : "none (base mesh)") << '\n';
+        print_attributes(std::cout, loaded);
         print_summary(std::cout, summarize(mesh));
         return exit_ok;
     });

@@ -79,6 +79,18 @@ TEST_F(CliCommands, StrictRefusesNonManifoldInputInEveryCommand) {
     EXPECT_TRUE(saved.warnings.empty());
 }
 
+TEST_F(CliCommands, InfoListsWhatRidesOnTheMesh) {
+    write("textured.obj", "mtllib none.mtl\nv 0 0 0 1 0 0\nv 1 0 0 0 1 0\nv 0 1 0 0 0 1\nvt 0 0\nvt 1 0\nvt 0 1\n"
+                          "g a\nusemtl m\nf 1/1 2/2 3/3\n");
+    ::testing::internal::CaptureStdout();
+    ASSERT_EQ(run({"info", path("textured.obj")}), 0);
+    const std::string out = ::testing::internal::GetCapturedStdout();
+    EXPECT_NE(out.find("texture coordinates: 3 (per corner)\nvertex colours: yes\nmaterials: 1 used, 0 defined in the material "
+                       "libraries\ngroups: 1\n"),
+              std::string::npos)
+        << out;
+}
+
 // --plain leaves out the #rgb lines: the file loads as a plain mesh of the same triangles.
 TEST_F(CliCommands, PlainOutputHasNoStateLines) {
     write("script.txt", "level 2\n");
