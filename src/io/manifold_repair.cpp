@@ -19,14 +19,14 @@ public:
     ManifoldRepair(TriangleSoup& soup, const std::vector<std::size_t>& position_lines, const std::string& file)
         : soup_(soup), tris_(soup.triangles), position_lines_(position_lines), file_(file) {}
 
-    void run(bool strict, std::vector<std::string>& warnings) {
+    std::vector<EdgeUse> run(bool strict, std::vector<std::string>& warnings) {
         std::vector<EdgeUse> uses = edge_uses(tris_);
         std::size_t first_cut_line = SIZE_MAX;
         const std::size_t cut_edges = count_cut_edges(uses, &first_cut_line);
         if (strict && cut_edges > 0) throw_edge_error(uses);
         const BowTies bow_ties = find_bow_ties(uses);
         if (strict && bow_ties.vertices > 0) throw_bow_tie_error(bow_ties);
-        if (cut_edges == 0 && bow_ties.vertices == 0) return;
+        if (cut_edges == 0 && bow_ties.vertices == 0) return uses;
 
         const std::size_t vertices_before = soup_.vertex_origin.size();
         split_fans(uses);
@@ -47,6 +47,7 @@ public:
                                " (bow-ties: fans of faces that touch only at the vertex) into one vertex per fan (" +
                                count_of(bow_ties.copies, "vertex", "vertices") + " added), the first is vertex " +
                                obj_index(bow_ties.first) + " on line " + std::to_string(position_lines_[soup_.vertex_origin[bow_ties.first]]));
+        return uses;
     }
 
 private:
@@ -201,9 +202,9 @@ private:
 
 }  // namespace
 
-void make_manifold(TriangleSoup& soup, const std::vector<std::size_t>& position_lines, const std::string& file, bool strict,
-                   std::vector<std::string>& warnings) {
-    ManifoldRepair(soup, position_lines, file).run(strict, warnings);
+std::vector<EdgeUse> make_manifold(TriangleSoup& soup, const std::vector<std::size_t>& position_lines, const std::string& file,
+                                   bool strict, std::vector<std::string>& warnings) {
+    return ManifoldRepair(soup, position_lines, file).run(strict, warnings);
 }
 
 }  // namespace rgbio

@@ -19,8 +19,9 @@
 namespace rgbio {
 
 // Throws ObjError(NonManifoldEdge, NonManifoldVertex) when strict; otherwise repairs as described
-// and appends a warning per kind of repair (counts and the first line).
-void make_manifold(TriangleSoup& soup, const std::vector<std::size_t>& position_lines, const std::string& file, bool strict,
-                   std::vector<std::string>& warnings);
+// and appends a warning per kind of repair (counts and the first line). Returns the edge uses of
+// the resulting triangles (computed once when nothing needed repair).
+std::vector<EdgeUse> make_manifold(TriangleSoup& soup, const std::vector<std::size_t>& position_lines, const std::string& file,
+                                   bool strict, std::vector<std::string>& warnings);
 
 }  // namespace rgbio

@@ -97,9 +97,8 @@ void check_duplicates(const TriangleSoup& soup, const std::string& file) {
 // Flips triangles so that every interior edge is traversed in opposite directions by its two faces.
 // Each connected component keeps the orientation of the majority of its faces (on a tie, that of
 // its first face in file order).
-void orient(TriangleSoup& soup, const std::string& file, std::vector<std::string>& warnings) {
+void orient(TriangleSoup& soup, const std::vector<EdgeUse>& uses, const std::string& file, std::vector<std::string>& warnings) {
     const auto& tris = soup.triangles;
-    const std::vector<EdgeUse> uses = edge_uses(tris);
     const std::size_t n = tris.size();
     // For each triangle, its neighbours across interior edges and whether they agree in direction.
     std::vector<std::vector<std::pair<std::uint32_t, bool>>> neighbours(n);
@@ -156,8 +155,8 @@ LoadedMesh validate_mesh(const ObjRecords& records, const std::string& file, con
     std::vector<std::string> warnings;
     TriangleSoup soup = triangulate(records, file, warnings);
     check_duplicates(soup, file);
-    make_manifold(soup, records.position_lines, file, options.strict, warnings);
-    orient(soup, file, warnings);
+    const std::vector<EdgeUse> uses = make_manifold(soup, records.position_lines, file, options.strict, warnings);
+    orient(soup, uses, file, warnings);
     return assemble_loaded_mesh(records, std::move(soup), std::move(warnings));
 }
 
