@@ -3,7 +3,7 @@
 # Everything the CMake configure step finds (tests and benchmarks are part of the project).
 RGBSUB_BUILD_PACKAGES=(
   build-essential cmake pkg-config python3-glad
-  libglfw3-dev libglm-dev libimgui-dev libstb-dev libtinyobjloader-dev libosmesa6-dev libgl-dev
+  libglfw3-dev libglm-dev libimgui-dev libstb-dev libtinyobjloader-dev libtinygltf-dev libosmesa6-dev libgl-dev
   libgtest-dev libbenchmark-dev libopenmesh-dev
 )
 # Only the test suite uses these: a virtual display, input injection, reference meshes, sanitizers,

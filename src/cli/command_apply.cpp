@@ -25,11 +25,11 @@ double percentile(std::vector<double> values, double p) {
 }  // namespace
 
 int run_apply(std::span<const std::string> args) {
-    const Arguments arguments(args, {"--timings", "--normals"}, {"--output", "--positions", "--max-triangles"},
-                              {{"-o", "--output"}});
+    const Arguments arguments(args, {"--timings", "--normals", "--plain", kStrictSwitch},
+                              {"--output", "--positions", "--max-triangles"}, {{"-o", "--output"}});
     if (arguments.has("--help")) {
         std::cout << "usage: rgbsub apply IN.obj SCRIPT -o OUT.obj [--timings] [--positions display|limit] [--normals]\n"
-                     "                    [--max-triangles N]\n"
+                     "                    [--max-triangles N] [--plain] [--strict]\n"
                      "Runs SCRIPT, one edit per line, then saves the adaptive mesh. Coordinates are those of IN.obj's\n"
                      "base mesh.\n"
                      "  level N [sphere X Y Z R]     set the level of detail to N in the sphere (everywhere without one)\n"
@@ -39,7 +39,9 @@ int run_apply(std::span<const std::string> args) {
                      "  brush refine|coarsen|set LEVEL RADIUS [FALLOFF]   the brush for the dab lines that follow\n"
                      "  dab X Y Z [VX VY VZ]         one dab (with a view direction: facing, connected faces only)\n"
                      "Blank lines and lines starting with # are skipped. --timings prints the engine time per line,\n"
-                     "and for the dabs their count and the engine time per dab (p50, p95).\n";
+                     "and for the dabs their count and the engine time per dab (p50, p95).\n"
+                     "--plain writes an OBJ without the adaptive state (#rgb lines), for tools that dislike them.\n"
+                  << kStrictHelp;
         return exit_ok;
     }
     if (arguments.positional().size() != 2) throw UsageError("expects IN.obj and SCRIPT");
@@ -50,13 +52,14 @@ int run_apply(std::span<const std::string> args) {
     save.normals = arguments.has("--normals");
     const auto limit = static_cast<std::size_t>(
         arguments.integer("--max-triangles", static_cast<long>(rgbio::default_triangle_limit()), 1, 4'000'000'000l));
+    save.state = !arguments.has("--plain");
     const std::string& input = arguments.positional()[0];
     const std::string& script_file = arguments.positional()[1];
 
     // The whole script is checked before the (possibly long) load and edits.
     const std::vector<rgbio::ScriptLine> script = rgbio::read_lod_script(script_file);
     std::vector<std::string> warnings;
-    rgb::Mesh mesh = rgbio::load_mesh(input, &warnings);
+    rgb::Mesh mesh = rgbio::load_mesh(input, &warnings, read_options(arguments));
     print_warnings("apply", input, warnings);
     Progress progress("applying " + script_file);
     rgbio::ScriptRunner runner;

@@ -8,6 +8,8 @@
 #include "cli/arguments.h"
 #include "cli/commands.h"
 #include "io/atomic_file.h"
+#include "cli/mesh_io_support.h"
+#include "io/obj_reader.h"
 
 namespace cli {
 namespace {
@@ -32,19 +34,22 @@ int write_screenshot(const std::string& file, const std::string& output, const s
 }  // namespace
 
 int run_edit(std::span<const std::string> args) {
-    const Arguments arguments(args, {}, {"--frames", "--screenshot", "--mode"});
+    const Arguments arguments(args, {kStrictSwitch}, {"--frames", "--screenshot", "--mode"});
     if (arguments.has("--help")) {
-        std::cout << "usage: rgbsub edit [FILE.obj] [--frames N] [--screenshot OUT.png [--mode MODE]]\n"
+        std::cout << "usage: rgbsub edit [FILE.obj] [--frames N] [--screenshot OUT.png [--mode MODE]] [--strict]\n"
                      "Opens the editor window (needs a display) on FILE.obj, or on the default mesh.\n"
                      "  --frames N          quit after N frames and print the time to the first frame\n"
                      "  --screenshot PATH   write one editor frame, panels included, as a PNG and exit\n"
                      "                      (headless through OSMesa: no display needed)\n"
-                     "  --mode MODE         for the screenshot: shaded, wire, rgb or level\n";
+                     "  --mode MODE         for the screenshot: shaded, wire, rgb or level\n"
+                  << kStrictHelp;
         return exit_ok;
     }
     if (arguments.positional().size() > 1) throw UsageError("expects at most one FILE.obj");
     app::WindowLaunch launch;
     launch.file = arguments.positional().empty() ? app::default_mesh_path() : arguments.positional().front();
+    // The editor repairs what it opens; --strict first makes sure FILE.obj needs no repair.
+    if (arguments.has(kStrictSwitch) && launch.file) rgbio::read_obj_file(*launch.file, read_options(arguments));
     if (arguments.has("--frames")) launch.frames = static_cast<int>(arguments.integer("--frames", 1, 1, 1000000));
     if (const auto output = arguments.value("--screenshot")) {
         if (!launch.file) throw UsageError("--screenshot needs a FILE.obj");

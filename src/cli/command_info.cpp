@@ -3,28 +3,47 @@
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
+#include "cli/mesh_io_support.h"
 #include "cli/mesh_summary.h"
 #include "io/mesh_file.h"
 #include "io/obj_reader.h"
 
 namespace cli {
 
+namespace {
+
+// What rides on the mesh besides positions, one line each, only what the file has.
+void print_attributes(std::ostream& out, const rgbio::LoadedMesh& loaded) {
+    if (!loaded.triangle_texcoords.empty())
+        out << "texture coordinates: " << loaded.texcoords.size() << " (per corner)\n";
+    if (!loaded.colours.empty()) out << "vertex colours: yes\n";
+    if (!loaded.face_materials.empty())
+        out << "materials: " << loaded.face_materials.names.size() << " used, " << loaded.materials.size()
+            << " defined in the material libraries\n";
+    if (!loaded.face_groups.empty()) out << "groups: " << loaded.face_groups.names.size() << '\n';
+    if (!loaded.face_objects.empty()) out << "objects: " << loaded.face_objects.names.size() << '\n';
+}
+
+}  // namespace
+
 int run_info(std::span<const std::string> args) {
-    const Arguments arguments(args, {}, {});
+    const Arguments arguments(args, {kStrictSwitch}, {});
     if (arguments.has("--help")) {
-        std::cout << "usage: rgbsub info FILE.obj\n"
+        std::cout << "usage: rgbsub info FILE.obj [--strict]\n"
                      "Validates FILE.obj as rgbsub loads it (fixes are reported as warnings, problems as errors\n"
                      "naming the line) and prints V, E, F, boundary loops, Euler characteristic, and the\n"
-                     "triangles per colour and per level.\n";
+                     "triangles per colour and per level.\n"
+                  << kStrictHelp;
         return exit_ok;
     }
     if (arguments.positional().size() != 1) throw UsageError("expects exactly one FILE.obj");
     const std::string& file = arguments.positional()[0];
-    const rgbio::LoadedMesh loaded = rgbio::read_obj_file(file);
+    const rgbio::LoadedMesh loaded = rgbio::read_obj_file(file, read_options(arguments));
     const rgb::Mesh mesh = rgbio::build_mesh(loaded);
     std::cout << file << ": valid" << (loaded.warnings.empty() ? "" : " after fixes") << '\n';
     for (const std::string& warning : loaded.warnings) std::cout << "warning: " << warning << '\n';
     std::cout << "adaptive state: " << (loaded.adaptive ? "restored from the file's #rgb lines" : "none (base mesh)") << '\n';
+    print_attributes(std::cout, loaded);
     print_summary(std::cout, summarize(mesh));
     return exit_ok;
 }

@@ -10,6 +10,7 @@
 #include "cli/arguments.h"
 #include "cli/commands.h"
 #include "io/atomic_file.h"
+#include "cli/mesh_io_support.h"
 #include "io/mesh_file.h"
 #include "render/headless.h"
 #include "rgb/loop_geometry.h"
@@ -20,7 +21,7 @@ namespace {
 
 constexpr std::string_view kUsage =
     "usage: rgbsub render IN.obj -o OUT.png [--size WxH] [--mode shaded|flat|rgb|level] [--wire]\n"
-    "                     [--view AZIMUTH,ELEVATION] [--limit] [--base]\n"
+    "                     [--view AZIMUTH,ELEVATION] [--limit] [--base] [--strict]\n"
     "Renders the mesh headless (OSMesa, no display needed), framed automatically.\n"
     "  -o, --output PATH   the PNG to write (saved like OBJ files: see the README)\n"
     "  --size WxH          image size in pixels (default 1024x768)\n"
@@ -31,6 +32,7 @@ constexpr std::string_view kUsage =
     "  --limit             limit-surface positions where the mesh holds a vertex's ring,\n"
     "                      displayed positions elsewhere (the count is reported)\n"
     "  --base              overlay the base mesh's edges\n"
+    "  --strict            refuse a non-manifold input instead of cutting it apart\n"
     "The same input gives the same bytes.\n";
 
 constexpr int kMaxImageSide = 8192;
@@ -84,7 +86,8 @@ void apply_mode(const std::string& mode, render::RenderOptions& options) {
 }  // namespace
 
 int run_render(std::span<const std::string> args) {
-    const Arguments arguments(args, {"--wire", "--limit", "--base"}, {"--output", "--size", "--mode", "--view"}, {{"-o", "--output"}});
+    const Arguments arguments(args, {"--wire", "--limit", "--base", kStrictSwitch}, {"--output", "--size", "--mode", "--view"},
+                              {{"-o", "--output"}});
     if (arguments.has("--help")) {
         std::cout << kUsage;
         return exit_ok;
@@ -105,7 +108,7 @@ int run_render(std::span<const std::string> args) {
 
     const std::string& input = arguments.positional().front();
     std::vector<std::string> warnings;
-    rgb::Mesh mesh = rgbio::load_mesh(input, &warnings);
+    rgb::Mesh mesh = rgbio::load_mesh(input, &warnings, read_options(arguments));
     for (const std::string& warning : warnings) std::cerr << "rgbsub render: " << input << ": " << warning << '\n';
     render::Image image;
     try {

@@ -10,6 +10,8 @@ void print_warnings(const char* command, const std::string& file, const std::vec
     for (const std::string& warning : warnings) std::cerr << "rgbsub " << command << ": " << file << ": warning: " << warning << '\n';
 }
 
+rgbio::ReadOptions read_options(const Arguments& arguments) { return {.strict = arguments.has(kStrictSwitch)}; }
+
 rgbio::SavedPositions parse_positions(const std::string& value) {
     if (value == "display") return rgbio::SavedPositions::Displayed;
     if (value == "limit") return rgbio::SavedPositions::Limit;

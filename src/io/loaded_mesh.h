@@ -1,17 +1,51 @@
 #pragma once
 // The result of reading an OBJ file: a clean, consistently oriented manifold triangle mesh without
-// unreferenced vertices, plus what was fixed along the way, and the adaptive mesh when the file holds
-// an rgbsub state that reproduces it exactly.
+// unreferenced vertices, the data that rides on it (texture coordinates, vertex colours, materials,
+// groups, objects, smoothing groups), plus what was fixed along the way, and the adaptive mesh when
+// the file holds an rgbsub state that reproduces it exactly.
+//
+// Every per-triangle and per-corner array below is either empty (the file has no such data) or has
+// exactly one entry per triangle, in the order of `triangles`; corner k of an entry belongs to
+// corner k of the triangle, also after the loader flipped a triangle to orient it.
+#include <array>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "rgb/mesh.h"
 
 namespace rgbio {
+
+// How strictly to read a file.
+struct ReadOptions {
+    // Refuse non-manifold edges and vertices (ObjError) instead of cutting them apart.
+    bool strict = false;
+};
+
+// "No entry": a corner without a texture coordinate, a face before any usemtl/g/o line.
+inline constexpr std::uint32_t kNoIndex = UINT32_MAX;
+
+// Face labels from usemtl, g or o lines: each triangle carries the label of its OBJ face.
+struct FaceLabels {
+    std::vector<std::string> names;         // as written (trimmed), in order of first use by a face
+    std::vector<std::uint32_t> of_triangle;  // empty, or per triangle: index into names, or kNoIndex
+    bool empty() const { return of_triangle.empty(); }
+};
+
+// One material of a `.mtl` library named by `mtllib` (read with tinyobjloader).
+struct Material {
+    std::string name{};                  // newmtl, trimmed
+    glm::dvec3 diffuse{0.0};             // Kd as tinyobjloader reads it (not always correctly rounded;
+                                         // its default where absent: 0, or 0.6 with map_Kd)
+    std::string diffuse_texture{};       // map_Kd as a path: relative ones resolved against the .mtl's
+                                         // folder, '\' read as '/'; empty without map_Kd
+    std::string library{};               // the .mtl file it came from (resolved path)
+};
 
 struct LoadedMesh {
     std::vector<glm::dvec3> positions;
@@ -21,6 +55,24 @@ struct LoadedMesh {
     // file's v and f lines exactly: the adaptive mesh. positions/triangles then are the file's plain
     // OBJ content (what other programs see).
     std::shared_ptr<rgb::Mesh> adaptive;
+
+    // Vertex colours (`v x y z r g b`), values as written: empty, or one per position. Kept only
+    // when every vertex used by a face has one; otherwise all are dropped with a warning.
+    std::vector<glm::dvec3> colours;
+
+    // Texture coordinates, face-varying: the `vt` table (u, v; used entries only, in file order)
+    // and, per triangle, the table index of each corner or kNoIndex (a corner written without vt).
+    // triangle_texcoords is empty when no face corner names a vt.
+    std::vector<glm::dvec2> texcoords;
+    std::vector<std::array<std::uint32_t, 3>> triangle_texcoords;
+
+    FaceLabels face_materials;  // usemtl; a name refers to the entry of `materials` with that name
+    FaceLabels face_groups;     // g (all names of one g line, as written, form one label)
+    FaceLabels face_objects;    // o
+    std::vector<std::uint32_t> face_smoothing_groups;  // s: empty, or per triangle (0 = off)
+
+    std::vector<std::string> material_libraries;  // mtllib file names as written, in order
+    std::vector<Material> materials;              // what read_obj_file found in them, in order
 };
 
 }  // namespace rgbio

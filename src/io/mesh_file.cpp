@@ -10,6 +10,7 @@
 #include "io/obj_error.h"
 #include "io/obj_reader.h"
 #include "io/state_format.h"
+#include "io/truncation_check.h"
 #include "rgb/loop_geometry.h"
 
 namespace rgbio {
@@ -50,8 +51,8 @@ rgb::Mesh build_mesh(const LoadedMesh& loaded) {
     return rgb::Mesh(loaded.positions, loaded.triangles);
 }
 
-rgb::Mesh load_mesh(const std::string& path, std::vector<std::string>* warnings) {
-    LoadedMesh loaded = read_obj_file(path);
+rgb::Mesh load_mesh(const std::string& path, std::vector<std::string>* warnings, const ReadOptions& options) {
+    LoadedMesh loaded = read_obj_file(path, options);
     if (warnings) warnings->insert(warnings->end(), loaded.warnings.begin(), loaded.warnings.end());
     if (loaded.adaptive) return std::move(*loaded.adaptive);
     return build_mesh(loaded);
@@ -81,7 +82,9 @@ void write_obj(const rgb::Mesh& mesh, const SaveOptions& options, Output& output
 
     std::string& out = output.buffer();
     out += "# rgbsub mesh: " + std::to_string(positions.size()) + " vertices, " + std::to_string(triangles.size()) +
-           " triangles; positions: " + (options.positions == SavedPositions::Limit ? "limit" : "displayed") + "\n";
+           " triangles; positions: " + (options.positions == SavedPositions::Limit ? "limit" : "displayed") +
+           // Lets the reader tell a file cut before its state from one saved without it.
+           (options.state ? std::string(kSavedStateNote) : std::string()) + "\n";
     for (const glm::dvec3& p : positions) {
         out += 'v';
         for (int i = 0; i < 3; ++i) append_double(out, p[i]);

@@ -17,7 +17,7 @@ namespace rgbio {
 rgb::Mesh build_mesh(const LoadedMesh& loaded);
 
 // read_obj_file + build_mesh. Warnings (fixes, ignored content) are appended to *warnings if given.
-rgb::Mesh load_mesh(const std::string& path, std::vector<std::string>* warnings = nullptr);
+rgb::Mesh load_mesh(const std::string& path, std::vector<std::string>* warnings = nullptr, const ReadOptions& options = {});
 
 enum class SavedPositions {
     Displayed,  // what the viewer shows: p^k at each vertex's display level

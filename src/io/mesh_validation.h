@@ -1,7 +1,8 @@
 #pragma once
 // Second stage of loading: OBJ polygons -> a triangle mesh that rgb::Mesh accepts (an oriented
-// 2-manifold, possibly with boundary). Fixable problems are fixed and reported as warnings;
-// the others throw ObjError naming the OBJ line. See src/io/README.md for the table.
+// 2-manifold, possibly with boundary), with the data that rides on its corners, faces and vertices.
+// Fixable problems are fixed and reported as warnings; the others throw ObjError naming the OBJ
+// line. See the README's table.
 #include <string>
 
 #include "io/loaded_mesh.h"
@@ -9,8 +10,11 @@
 
 namespace rgbio {
 
-// Throws ObjError (NoFaces, DegenerateFace, DuplicateFace, NonManifoldEdge, NonManifoldVertex,
-// NonOrientable).
-LoadedMesh validate_mesh(const ObjRecords& records, const std::string& file);
+// Throws ObjError (NoFaces, DegenerateFace, DuplicateFace, NonOrientable, ComplexPolygon; and
+// NonManifoldEdge, NonManifoldVertex when options.strict).
+LoadedMesh validate_mesh(const ObjRecords& records, const std::string& file, const ReadOptions& options = {});
+
+// The faces of a file saved by rgbsub (all triangles, already clean) with their data, unchanged.
+LoadedMesh saved_mesh_content(const ObjRecords& records);
 
 }  // namespace rgbio

@@ -28,6 +28,8 @@ const char* problem_name(ObjProblem p) {
         case ObjProblem::NonManifoldVertex: return "non-manifold vertex";
         case ObjProblem::NonOrientable: return "non-orientable surface";
         case ObjProblem::BadState: return "bad rgbsub state";
+        case ObjProblem::ComplexPolygon: return "polygon too complex";
+        case ObjProblem::Truncated: return "truncated file";
     }
     return "unknown problem";
 }

@@ -21,10 +21,12 @@ enum class ObjProblem {
     NoFaces,              // nothing to build a surface from
     DegenerateFace,       // a face uses one vertex twice
     DuplicateFace,        // two faces over the same vertices
-    NonManifoldEdge,      // an edge with more than two faces
-    NonManifoldVertex,    // a bow-tie: the faces around a vertex form several fans
+    NonManifoldEdge,      // an edge with more than two faces (only when reading strictly)
+    NonManifoldVertex,    // a bow-tie: the faces around a vertex form several fans (strictly)
     NonOrientable,        // no choice of face flips makes neighbours agree (Moebius strip)
     BadState,             // the rgbsub state comments are malformed or not a valid RGB mesh
+    ComplexPolygon,       // a polygon too tangled to triangulate within the work budget
+    Truncated,            // a file rgbsub wrote (its header says so) that was cut short
 };
 
 const char* problem_name(ObjProblem p);

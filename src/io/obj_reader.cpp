@@ -1,17 +1,19 @@
 #include "io/obj_reader.h"
 
-#include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "io/material_library.h"
 #include "io/mesh_validation.h"
 #include "io/obj_error.h"
 #include "io/obj_parser.h"
 #include "io/state_format.h"
+#include "io/truncation_check.h"
 #include "rgb/loop_geometry.h"
 #include "rgb/mesh.h"
 #include "rgb/state.h"
@@ -20,7 +22,8 @@ namespace rgbio {
 
 std::string read_text_file(const std::string& path) {
     auto unreadable = [&](const std::string& why) { return ObjError(ObjProblem::Unreadable, path, 0, "cannot read the file: " + why); };
-    const int fd = ::open(path.c_str(), O_RDONLY);
+    // O_NONBLOCK: opening a FIFO must not wait for a writer; the check below refuses it anyway.
+    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
     if (fd < 0) throw unreadable(std::strerror(errno));
     struct stat info {};
     if (::fstat(fd, &info) != 0 || !S_ISREG(info.st_mode)) {
@@ -84,10 +87,8 @@ std::shared_ptr<rgb::Mesh> adaptive_mesh(SavedState saved, const ObjRecords& rec
     return mesh;
 }
 
-}  // namespace
-
-LoadedMesh read_obj_text(std::string_view text, const std::string& name) {
-    const ObjRecords records = parse_obj(text, name);
+// A state's mesh, or the plain mesh with a warning saying why the state was not used.
+LoadedMesh read_records(const ObjRecords& records, const std::string& name, const ReadOptions& options) {
     std::vector<std::string> warnings;
     if (!records.state.empty()) {
         std::optional<SavedState> saved = parse_state(records.state, name);
@@ -97,9 +98,7 @@ LoadedMesh read_obj_text(std::string_view text, const std::string& name) {
                                " comment lines starting with #rgb (the first on line " + std::to_string(records.state.front().line) +
                                "): they are not an rgbsub state, which starts with '#rgb state'");
         } else if (std::shared_ptr<rgb::Mesh> mesh = adaptive_mesh(std::move(*saved), records, reason)) {
-            LoadedMesh loaded;
-            loaded.positions = records.positions;
-            for (const ObjPolygon& p : records.polygons) loaded.triangles.push_back({p.vertices[0], p.vertices[1], p.vertices[2]});
+            LoadedMesh loaded = saved_mesh_content(records);
             loaded.adaptive = std::move(mesh);
             return loaded;
         } else {
@@ -107,11 +106,30 @@ LoadedMesh read_obj_text(std::string_view text, const std::string& name) {
                                "program: " + reason + "; it is loaded as a plain mesh");
         }
     }
-    LoadedMesh loaded = validate_mesh(records, name);
+    LoadedMesh loaded = validate_mesh(records, name, options);
     loaded.warnings.insert(loaded.warnings.begin(), warnings.begin(), warnings.end());
     return loaded;
 }
 
-LoadedMesh read_obj_file(const std::string& path) { return read_obj_text(read_text_file(path), path); }
+}  // namespace
+
+LoadedMesh read_obj_text(std::string_view text, const std::string& name, const ReadOptions& options) {
+    const std::optional<SavedFileHeader> header = read_saved_file_header(text);
+    if (!header) return read_records(parse_obj(text, name), name, options);
+    try {
+        const ObjRecords records = parse_obj(text, name);
+        check_saved_file_complete(*header, records, text, name);
+        return read_records(records, name, options);
+    } catch (const ObjError& error) {
+        throw truncation_or(error, *header, text, name);
+    }
+}
+
+LoadedMesh read_obj_file(const std::string& path, const ReadOptions& options) {
+    LoadedMesh loaded = read_obj_text(read_text_file(path), path, options);
+    loaded.materials = read_material_libraries(loaded.material_libraries, std::filesystem::path(path).parent_path(),
+                                               loaded.face_materials, loaded.warnings);
+    return loaded;
+}
 
 }  // namespace rgbio

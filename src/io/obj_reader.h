@@ -11,13 +11,16 @@ namespace rgbio {
 // a directory, no permission, read error).
 std::string read_text_file(const std::string& path);
 
-// Throws ObjError; ObjProblem::Unreadable when the file cannot be opened or read.
-LoadedMesh read_obj_file(const std::string& path);
+// Throws ObjError; ObjProblem::Unreadable when the file cannot be opened or read. Also reads the
+// material libraries the file names (material_library.h), relative to its folder.
+LoadedMesh read_obj_file(const std::string& path, const ReadOptions& options = {});
 
-// The same for text already in memory; `name` is used in messages.
+// The same for text already in memory, without touching any other file (materials stays empty);
+// `name` is used in messages.
 // If the text carries an rgbsub state (#rgb lines) that matches its faces, the state is returned
 // and the plain content is not re-validated (it is the state's own live mesh). A state that does
-// not match the faces (the file was edited elsewhere) is dropped with a warning.
-LoadedMesh read_obj_text(std::string_view text, const std::string& name);
+// not match the faces (the file was edited elsewhere) is dropped with a warning. A file rgbsub wrote
+// that was cut short is an ObjError(Truncated) (truncation_check.h).
+LoadedMesh read_obj_text(std::string_view text, const std::string& name, const ReadOptions& options = {});
 
 }  // namespace rgbio

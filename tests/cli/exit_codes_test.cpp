@@ -48,11 +48,12 @@ TEST_F(ExitCodes, EveryCommandFollowsTheReadmeTable) {
         << "the README's table changed: update this test's cases with it";
 
     write("mesh.obj", rgbio::test::kOctahedron);
-    write("bowtie.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv -1 0 0\nv -1 -1 0\nf 1 2 3\nf 1 4 5\n");
+    // A face naming a vertex the file does not have: no repair can make a mesh of it.
+    write("broken.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 9\n");
     write("script.txt", "level 2\n");
     write("bad_script.txt", "level 2\nbogus\n");
     ::mkdir(path("folder").c_str(), 0755);
-    const std::string mesh = path("mesh.obj"), bowtie = path("bowtie.obj"), missing = path("missing.obj"), folder = path("folder");
+    const std::string mesh = path("mesh.obj"), broken = path("broken.obj"), missing = path("missing.obj"), folder = path("folder");
     const std::string obj = path("out.obj"), png = path("out.png");
     const std::string tiny_disk = "ulimit -f 1;";  // a file-size limit of 512 bytes acts as a full disk
 
@@ -60,7 +61,7 @@ TEST_F(ExitCodes, EveryCommandFollowsTheReadmeTable) {
         {{"edit", mesh, "--screenshot", png}, "ok"},
         {{"edit", "-x"}, "usage error"},
         {{"edit", mesh, "--screenshot", png, "--screenshot", png}, "usage error"},
-        {{"edit", bowtie, "--screenshot", png}, "bad input"},
+        {{"edit", broken, "--screenshot", png}, "bad input"},
         {{"edit", missing, "--screenshot", png}, "I/O or resource failure"},
         {{"edit", mesh, "--screenshot", folder}, "I/O or resource failure"},
         {{"edit", mesh, "--screenshot", png}, "I/O or resource failure", tiny_disk},
@@ -69,7 +70,7 @@ TEST_F(ExitCodes, EveryCommandFollowsTheReadmeTable) {
         {{"render", mesh, "-o", png, "-x"}, "usage error"},
         {{"render", mesh, "-o", "-o"}, "usage error"},
         {{"render", mesh, "-o", png, "--view", "nan,0"}, "usage error"},
-        {{"render", bowtie, "-o", png}, "bad input"},
+        {{"render", broken, "-o", png}, "bad input"},
         {{"render", missing, "-o", png}, "I/O or resource failure"},
         {{"render", mesh, "-o", folder}, "I/O or resource failure"},
         {{"render", mesh, "-o", ""}, "I/O or resource failure"},
@@ -78,14 +79,14 @@ TEST_F(ExitCodes, EveryCommandFollowsTheReadmeTable) {
         {{"info", mesh}, "ok"},
         {{"info", "-x", mesh}, "usage error"},
         {{"info", mesh, mesh}, "usage error"},
-        {{"info", bowtie}, "bad input"},
+        {{"info", broken}, "bad input"},
         {{"info", missing}, "I/O or resource failure"},
         {{"info", folder}, "I/O or resource failure"},
 
         {{"refine", mesh, "-o", obj, "--level", "2"}, "ok"},
         {{"refine", mesh, "-o", obj, "--level", "2", "-x"}, "usage error"},
         {{"refine", mesh, "-o", obj, "-o", obj, "--level", "2"}, "usage error"},
-        {{"refine", bowtie, "-o", obj, "--level", "2"}, "bad input"},
+        {{"refine", broken, "-o", obj, "--level", "2"}, "bad input"},
         {{"refine", missing, "-o", obj, "--level", "2"}, "I/O or resource failure"},
         {{"refine", mesh, "-o", folder, "--level", "2"}, "I/O or resource failure"},
         {{"refine", mesh, "-o", obj, "--level", "2"}, "I/O or resource failure", tiny_disk},
@@ -93,7 +94,7 @@ TEST_F(ExitCodes, EveryCommandFollowsTheReadmeTable) {
         {{"apply", mesh, path("script.txt"), "-o", obj}, "ok"},
         {{"apply", mesh, path("script.txt"), "-o", obj, "-x"}, "usage error"},
         {{"apply", mesh, "-o", obj}, "usage error"},
-        {{"apply", bowtie, path("script.txt"), "-o", obj}, "bad input"},
+        {{"apply", broken, path("script.txt"), "-o", obj}, "bad input"},
         {{"apply", mesh, path("bad_script.txt"), "-o", obj}, "bad input"},
         {{"apply", mesh, path("missing.txt"), "-o", obj}, "I/O or resource failure"},
         {{"apply", mesh, path("script.txt"), "-o", folder}, "I/O or resource failure"},

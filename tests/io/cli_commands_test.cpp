@@ -2,7 +2,6 @@
 // `--level 0` gives back the input mesh exactly.
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <set>
 
 #include <sys/resource.h>
@@ -20,20 +19,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class CliCommands : public ::testing::Test {
+class CliCommands : public test::ScratchFolder {
 protected:
     void SetUp() override {
-        folder_ = fs::temp_directory_path() / ("rgbsub_cli_" + std::to_string(::getpid()) + "_" +
-                                               ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(folder_);
-        fs::create_directories(folder_);
+        ScratchFolder::SetUp();
         write("octahedron.obj", test::kOctahedron);
     }
-    void TearDown() override { fs::remove_all(folder_); }
-    std::string path(const std::string& name) const { return (folder_ / name).string(); }
-    void write(const std::string& name, const std::string& text) const { std::ofstream(folder_ / name, std::ios::binary) << text; }
     static int run(std::vector<std::string> args) { return cli::dispatch(args); }
-    fs::path folder_;
 };
 
 // Triangles as triples of positions, rotated to start at the smallest, so that meshes can be
@@ -61,13 +53,61 @@ TEST_F(CliCommands, ExitCodes) {
     EXPECT_EQ(run({"refine", path("octahedron.obj"), "-o", path("o.obj"), "--level", "1", "--sphere", "1,2"}), 1);
     EXPECT_EQ(run({"refine", path("octahedron.obj"), "-o", path("o.obj"), "--level", "1", "--positions", "x"}), 1);
     write("bowtie.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv -1 0 0\nv -1 -1 0\nf 1 2 3\nf 1 4 5\n");
-    EXPECT_EQ(run({"info", path("bowtie.obj")}), 2);
+    EXPECT_EQ(run({"info", path("bowtie.obj")}), 0);  // repaired, with a warning
+    EXPECT_EQ(run({"info", path("bowtie.obj"), "--strict"}), 2);
     EXPECT_EQ(run({"info", path("missing.obj")}), 3);
     EXPECT_EQ(run({"refine", path("octahedron.obj"), "-o", path("octahedron.obj/x.obj"), "--level", "1"}), 3);
     write("script.txt", "level 2\nlevel 3 sphere 1 0 0 0.5\nbogus\n");
     EXPECT_EQ(run({"apply", path("octahedron.obj"), path("script.txt"), "-o", path("o.obj")}), 2);
     EXPECT_FALSE(fs::exists(path("o.obj")));
     EXPECT_EQ(run({"apply", path("octahedron.obj"), path("missing.txt"), "-o", path("o.obj")}), 3);
+}
+
+// Every command that reads a mesh refuses a non-manifold one with --strict (before any rendering or
+// window), and repairs it without.
+TEST_F(CliCommands, StrictRefusesNonManifoldInputInEveryCommand) {
+    write("bowtie.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv -1 0 0\nv -1 -1 0\nf 1 2 3\nf 1 4 5\n");
+    write("script.txt", "level 1\n");
+    EXPECT_EQ(run({"refine", path("bowtie.obj"), "-o", path("o.obj"), "--level", "1", "--strict"}), 2);
+    EXPECT_EQ(run({"apply", path("bowtie.obj"), path("script.txt"), "-o", path("o.obj"), "--strict"}), 2);
+    EXPECT_FALSE(fs::exists(path("o.obj")));
+    EXPECT_EQ(run({"render", path("bowtie.obj"), "-o", path("o.png"), "--strict"}), 2);
+    EXPECT_EQ(run({"edit", path("bowtie.obj"), "--screenshot", path("o.png"), "--strict"}), 2);
+    EXPECT_FALSE(fs::exists(path("o.png")));
+    ASSERT_EQ(run({"refine", path("bowtie.obj"), "-o", path("o.obj"), "--level", "1"}), 0);
+    // The split vertex stays split in the saved file: two separate triangles of 6 vertices each.
+    const LoadedMesh saved = read_obj_file(path("o.obj"));
+    EXPECT_EQ(saved.triangles.size(), 8u);
+    EXPECT_EQ(saved.positions.size(), 12u);
+    EXPECT_TRUE(saved.warnings.empty());
+}
+
+TEST_F(CliCommands, InfoListsWhatRidesOnTheMesh) {
+    write("textured.obj", "mtllib none.mtl\nv 0 0 0 1 0 0\nv 1 0 0 0 1 0\nv 0 1 0 0 0 1\nvt 0 0\nvt 1 0\nvt 0 1\n"
+                          "g a\nusemtl m\nf 1/1 2/2 3/3\n");
+    ::testing::internal::CaptureStdout();
+    ASSERT_EQ(run({"info", path("textured.obj")}), 0);
+    const std::string out = ::testing::internal::GetCapturedStdout();
+    EXPECT_NE(out.find("texture coordinates: 3 (per corner)\nvertex colours: yes\nmaterials: 1 used, 0 defined in the material "
+                       "libraries\ngroups: 1\n"),
+              std::string::npos)
+        << out;
+}
+
+// --plain leaves out the #rgb lines: the file loads as a plain mesh of the same triangles.
+TEST_F(CliCommands, PlainOutputHasNoStateLines) {
+    write("script.txt", "level 2\n");
+    ASSERT_EQ(run({"refine", path("octahedron.obj"), "-o", path("plain.obj"), "--level", "2", "--plain"}), 0);
+    ASSERT_EQ(run({"apply", path("octahedron.obj"), path("script.txt"), "-o", path("applied.obj"), "--plain"}), 0);
+    ASSERT_EQ(run({"refine", path("octahedron.obj"), "-o", path("full.obj"), "--level", "2"}), 0);
+    for (const char* name : {"plain.obj", "applied.obj"}) {
+        const std::string text = read_text_file(path(name));
+        EXPECT_EQ(text.find("#rgb"), std::string::npos) << name;
+        const LoadedMesh plain = read_obj_file(path(name));
+        EXPECT_FALSE(plain.adaptive) << name;
+        EXPECT_EQ(plain.triangles.size(), 8u * 16u) << name;
+        EXPECT_EQ(triangles_by_position(plain), triangles_by_position(read_obj_file(path("full.obj")))) << name;
+    }
 }
 
 TEST_F(CliCommands, RefineThenLevelZeroGivesBackTheInput) {

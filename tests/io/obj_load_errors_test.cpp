@@ -10,8 +10,11 @@ namespace {
 
 using test::load_error;
 
-void expect_error(const std::string& text, ObjProblem problem, std::size_t line, const std::string& reason_part) {
-    const ObjError e = load_error(text);
+constexpr ReadOptions kStrict{.strict = true};
+
+void expect_error(const std::string& text, ObjProblem problem, std::size_t line, const std::string& reason_part,
+                  const ReadOptions& options = {}) {
+    const ObjError e = load_error(text, options);
     EXPECT_EQ(e.problem(), problem) << e.what();
     EXPECT_EQ(e.line(), line) << e.what();
     EXPECT_NE(e.reason().find(reason_part), std::string::npos) << e.what();
@@ -106,15 +109,16 @@ TEST(ObjLoadErrors, DuplicateFaceNamesBothLines) {
                  "triangle 1 2 3 also appears in the face on line 4");
 }
 
-TEST(ObjLoadErrors, NonManifoldEdgeListsEdgesAndLines) {
+TEST(ObjLoadErrors, NonManifoldEdgeListsEdgesAndLinesWhenStrict) {
     // Three triangles on edge 1-2, and a second such edge 3-4 elsewhere.
     const std::string text =
         "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\n"
         "f 1 2 3\nf 2 1 4\nf 1 2 5\n";
-    expect_error(text, ObjProblem::NonManifoldEdge, 6, "1 non-manifold edge (more than two faces): edge 1-2 has 3 faces (lines 6 7 8)");
+    expect_error(text, ObjProblem::NonManifoldEdge, 6, "1 non-manifold edge (more than two faces): edge 1-2 has 3 faces (lines 6 7 8)",
+                 kStrict);
 }
 
-TEST(ObjLoadErrors, NonManifoldEdgeListIsCappedAtFive) {
+TEST(ObjLoadErrors, NonManifoldEdgeListIsCappedAtFiveWhenStrict) {
     // A fan of 3 triangles on each of 7 separate edges.
     std::string text;
     for (int e = 0; e < 7; ++e) {
@@ -128,7 +132,7 @@ TEST(ObjLoadErrors, NonManifoldEdgeListIsCappedAtFive) {
         text += "f " + std::to_string(b + 1) + " " + std::to_string(b) + " " + std::to_string(b + 3) + "\n";
         text += "f " + std::to_string(b) + " " + std::to_string(b + 1) + " " + std::to_string(b + 4) + "\n";
     }
-    const ObjError e = load_error(text);
+    const ObjError e = load_error(text, kStrict);
     EXPECT_EQ(e.problem(), ObjProblem::NonManifoldEdge);
     EXPECT_NE(e.reason().find("7 non-manifold edges"), std::string::npos) << e.what();
     EXPECT_NE(e.reason().find("edge 21-22"), std::string::npos) << e.what();
@@ -136,10 +140,12 @@ TEST(ObjLoadErrors, NonManifoldEdgeListIsCappedAtFive) {
     EXPECT_NE(e.reason().find("; ..."), std::string::npos) << e.what();
 }
 
-TEST(ObjLoadErrors, BowTieVertex) {
+TEST(ObjLoadErrors, BowTieVertexWhenStrictNamesTwoDifferentFaces) {
     // Two triangles touching only at vertex 1 (defined on line 1).
     expect_error("v 0 0 0\nv 1 0 0\nv 1 1 0\nv -1 0 0\nv -1 -1 0\nf 1 2 3\nf 1 4 5\n", ObjProblem::NonManifoldVertex, 1,
-                 "non-manifold vertex 1 (bow-tie)");
+                 "non-manifold vertex 1 (bow-tie): its faces form separate fans that touch only at this vertex (the faces on "
+                 "lines 6 and 7 are in different fans)",
+                 kStrict);
 }
 
 TEST(ObjLoadErrors, MoebiusStripCannotBeOriented) {

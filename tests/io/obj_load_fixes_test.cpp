@@ -12,12 +12,6 @@
 namespace rgbio {
 namespace {
 
-bool contains(const std::vector<std::string>& warnings, const std::string& part) {
-    for (const std::string& w : warnings)
-        if (w.find(part) != std::string::npos) return true;
-    return false;
-}
-
 // Every directed edge is used at most once: the orientation is consistent.
 void expect_consistently_oriented(const LoadedMesh& mesh) {
     std::set<std::pair<std::uint32_t, std::uint32_t>> directed;
@@ -54,7 +48,8 @@ TEST(ObjLoadFixes, CoordinatesAreExactAtSeventeenDigits) {
 
 TEST(ObjLoadFixes, DialectsFromTheWild) {
     // UTF-8 BOM, CRLF, tabs, a leading '+', w and colour values, v/vt/vn forms, negative
-    // indices, other keywords, and no newline at the end.
+    // indices, other keywords, and no newline at the end. The normal and the one vertex colour are
+    // dropped (with warnings).
     const std::string text =
         "\xef\xbb\xbfmtllib x.mtl\r\no thing\r\nv\t+1 0 0 1\r\nv 0 1 0 0.5 0.5 0.5\r\nv 0 0 1\r\nv 1. 1e0 .5\r\n"
         "vt 0 0\r\nvn 0 0 1\r\ng part\r\nusemtl m\r\ns off\r\nf 1/1/1 2//1 3\r\nf -1/1 -2/1 -3/1";
@@ -64,7 +59,22 @@ TEST(ObjLoadFixes, DialectsFromTheWild) {
     EXPECT_EQ(mesh.positions[3], glm::dvec3(1, 1, 0.5));
     ASSERT_EQ(mesh.triangles.size(), 2u);
     EXPECT_EQ(mesh.triangles[1], (rgb::Triangle{3, 2, 1}));
-    EXPECT_TRUE(mesh.warnings.empty());
+    ASSERT_EQ(mesh.warnings.size(), 2u);
+    EXPECT_EQ(mesh.warnings[0], "dropped 1 vertex normals (vn, the first on line 8): normals of the input surface do not fit the "
+                                "subdivided one; rgbsub can write new ones when saving");
+    EXPECT_EQ(mesh.warnings[1], "dropped the vertex colours: 3 of the 4 vertices used by faces have none (the first on line 3), "
+                                "and colours are kept only when every vertex has one");
+    EXPECT_TRUE(mesh.colours.empty());
+    // vt 1 at corner 1 of the first face; every corner of the second.
+    EXPECT_EQ(mesh.texcoords, (std::vector<glm::dvec2>{{0, 0}}));
+    EXPECT_EQ(mesh.triangle_texcoords,
+              (std::vector<std::array<std::uint32_t, 3>>{{0, kNoIndex, kNoIndex}, {0, 0, 0}}));
+    EXPECT_EQ(mesh.face_materials.names, (std::vector<std::string>{"m"}));
+    EXPECT_EQ(mesh.face_materials.of_triangle, (std::vector<std::uint32_t>{0, 0}));
+    EXPECT_EQ(mesh.face_groups.names, (std::vector<std::string>{"part"}));
+    EXPECT_EQ(mesh.face_objects.names, (std::vector<std::string>{"thing"}));
+    EXPECT_TRUE(mesh.face_smoothing_groups.empty());  // "s off" everywhere
+    EXPECT_EQ(mesh.material_libraries, (std::vector<std::string>{"x.mtl"}));
 }
 
 TEST(ObjLoadFixes, FlippedFacesAreReorientedToTheMajority) {
@@ -73,7 +83,7 @@ TEST(ObjLoadFixes, FlippedFacesAreReorientedToTheMajority) {
     text.replace(text.find("f 4 2 6"), 7, "f 2 4 6");
     const LoadedMesh mesh = read_obj_text(text, "flipped.obj");
     expect_consistently_oriented(mesh);
-    EXPECT_TRUE(contains(mesh.warnings, "re-oriented 2 of 8 faces")) << mesh.warnings.size();
+    EXPECT_TRUE(test::has_warning(mesh.warnings, "re-oriented 2 of 8 faces")) << mesh.warnings.size();
     EXPECT_EQ(mesh.triangles[1], (rgb::Triangle{1, 4, 2}));  // 2 3 5 flipped back to outward (0-based)
     EXPECT_EQ(mesh.triangles[0], (rgb::Triangle{0, 2, 4}));  // majority faces untouched
 }
@@ -85,7 +95,7 @@ TEST(ObjLoadFixes, UnreferencedVerticesAreRemovedAndTheRestRenumbered) {
     EXPECT_EQ(mesh.positions[0], glm::dvec3(0, 0, 0));
     EXPECT_EQ(mesh.positions[2], glm::dvec3(0, 1, 0));
     EXPECT_EQ(mesh.triangles[0], (rgb::Triangle{0, 1, 2}));
-    EXPECT_TRUE(contains(mesh.warnings, "removed 3 vertices used by no face (the first on line 1)"));
+    EXPECT_TRUE(test::has_warning(mesh.warnings, "removed 3 vertices used by no face (the first on line 1)"));
 }
 
 TEST(ObjLoadFixes, QuadsAndPolygonsAreTriangulatedAndCounted) {
@@ -96,14 +106,14 @@ TEST(ObjLoadFixes, QuadsAndPolygonsAreTriangulatedAndCounted) {
         "v 5 0 0\nv 6 0 0\nv 6.5 1 0\nv 6 2 0\nv 5 2 0\nv 4.5 1 0\nf -6 -5 -4 -3 -2 -1\n";
     const LoadedMesh mesh = read_obj_text(text, "polygons.obj");
     EXPECT_EQ(mesh.triangles.size(), 12u + 4u);
-    EXPECT_TRUE(contains(mesh.warnings, "triangulated 6 quads and 1 polygons with more than 4 vertices into 16 triangles"));
+    EXPECT_TRUE(test::has_warning(mesh.warnings, "triangulated 6 quads and 1 polygons with more than 4 vertices into 16 triangles"));
     expect_consistently_oriented(mesh);
 }
 
 TEST(ObjLoadFixes, LinesAndPointsAreIgnoredWithANotice) {
     const LoadedMesh mesh = read_obj_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2\nl 2 3\np 1\nf 1 2 3\n", "mixed.obj");
     EXPECT_EQ(mesh.triangles.size(), 1u);
-    EXPECT_TRUE(contains(mesh.warnings, "ignored 2 line elements (l) and 1 point elements (p)"));
+    EXPECT_TRUE(test::has_warning(mesh.warnings, "ignored 2 line elements (l) and 1 point elements (p)"));
 }
 
 }  // namespace

@@ -10,14 +10,21 @@
 namespace rgbio::test {
 
 // The ObjError read_obj_text throws for `text` (named "test.obj"); fails the test if none.
-inline ObjError load_error(const std::string& text) {
+inline ObjError load_error(const std::string& text, const ReadOptions& options = {}) {
     try {
-        read_obj_text(text, "test.obj");
+        read_obj_text(text, "test.obj", options);
     } catch (const ObjError& e) {
         return e;
     }
     ADD_FAILURE() << "expected an ObjError for:\n" << text;
     return ObjError(ObjProblem::Unreadable, "", 0, "no error");
+}
+
+// Whether some warning contains `part`.
+inline bool has_warning(const std::vector<std::string>& warnings, const std::string& part) {
+    for (const std::string& w : warnings)
+        if (w.find(part) != std::string::npos) return true;
+    return false;
 }
 
 // A closed octahedron (8 triangles, consistently oriented outwards).

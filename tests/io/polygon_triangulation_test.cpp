@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "io/polygon_triangulation.h"
+#include "polygon_shapes.h"
 
 namespace rgbio {
 namespace {
@@ -56,6 +57,46 @@ TEST(PolygonTriangulation, DegenerateCollinearPolygonStillGivesAllTriangles) {
     const std::vector<glm::dvec3> line = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}, {4, 0, 0}};
     const std::vector<std::uint32_t> polygon = {0, 1, 2, 3, 4};
     EXPECT_EQ(triangulate_polygon(line, polygon).size(), 3u);
+}
+
+TEST(PolygonTriangulation, QuadIsCutAtItsFirstEarInCornerOrder) {
+    const std::vector<glm::dvec3> square = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    const std::vector<std::uint32_t> quad = {0, 1, 2, 3};
+    EXPECT_EQ(triangulate_polygon_corners(square, quad), (std::vector<std::array<std::uint32_t, 3>>{{3, 0, 1}, {1, 2, 3}}));
+    // A dart whose corner 0 is reflex: corner 1 is the first ear.
+    const std::vector<glm::dvec3> dart = {{0.5, 0.4, 0}, {0, 0, 0}, {0.5, 1, 0}, {1, 0, 0}};
+    EXPECT_EQ(triangulate_polygon_corners(dart, quad), (std::vector<std::array<std::uint32_t, 3>>{{0, 1, 2}, {0, 2, 3}}));
+}
+
+// Every triangle turns the polygon's way and the areas add up to the polygon's.
+void expect_full_triangulation(const std::vector<glm::dvec3>& p, double area, const glm::dvec3& axis) {
+    std::vector<std::uint32_t> polygon(p.size());
+    for (std::uint32_t i = 0; i < polygon.size(); ++i) polygon[i] = i;
+    const auto triangles = triangulate_polygon(p, polygon);
+    ASSERT_EQ(triangles.size(), p.size() - 2);
+    double sum = 0;
+    std::size_t flipped = 0;
+    for (const auto& t : triangles) {
+        const double signed_area = 0.5 * glm::dot(triangle_normal(p, t), axis);
+        flipped += signed_area <= 0;
+        sum += signed_area;
+    }
+    EXPECT_EQ(flipped, 0u);
+    EXPECT_NEAR(sum, area, 1e-9 * area);
+}
+
+TEST(PolygonTriangulation, LargeConcavePolygonsAreTriangulatedCompletely) {
+    glm::dvec3 axis;
+    expect_full_triangulation(tilted_star(20000, axis), 2 * 20000 * 0.5 * 1.0 * 0.3 * std::sin(3.141592653589793 / 20000), axis);
+    expect_full_triangulation(test::comb_polygon(5000), test::comb_area(5000), glm::dvec3(0, 0, -1));
+    // A winding strip, its area by the shoelace formula.
+    const std::vector<glm::dvec3> spiral = test::spiral_polygon(20000);
+    double twice_area = 0;
+    for (std::size_t i = 0; i < spiral.size(); ++i) {
+        const glm::dvec3 &a = spiral[i], &b = spiral[(i + 1) % spiral.size()];
+        twice_area += a.x * b.y - b.x * a.y;
+    }
+    expect_full_triangulation(spiral, std::abs(twice_area) / 2, glm::dvec3(0, 0, twice_area > 0 ? 1 : -1));
 }
 
 }  // namespace

@@ -1,0 +1,69 @@
+// Material libraries next to an OBJ file: names, diffuse colours and textures as the .mtl says,
+// paths resolved against the right folder, and every missing piece a warning, never an error.
+#include <filesystem>
+
+#include <gtest/gtest.h>
+
+#include "obj_test_support.h"
+#include "scratch_folder.h"
+
+namespace rgbio {
+namespace {
+
+namespace fs = std::filesystem;
+using test::has_warning;
+
+class MaterialLibrary : public test::ScratchFolder {
+protected:
+    void SetUp() override {
+        ScratchFolder::SetUp();
+        fs::create_directories(folder_ / "materials" / "textures");
+    }
+    static constexpr const char* kTriangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+};
+
+TEST_F(MaterialLibrary, ReadsNamesColoursAndTexturesRelativeToTheirFiles) {
+    // The library sits in a subfolder; its texture path is relative to it, written Windows-style.
+    write("materials/paint.mtl",
+          "newmtl Skin\nKd 0.25 0.5 0.75\nmap_Kd textures\\skin.png\n\nnewmtl  Plain \nKd 1 0 0\n");
+    write("materials/textures/skin.png", "not really a png");
+    write("model.obj", std::string("mtllib materials/paint.mtl\n") + kTriangle + "usemtl Skin\nf 1 2 3\n");
+    const LoadedMesh mesh = read_obj_file(path("model.obj"));
+    ASSERT_EQ(mesh.materials.size(), 2u);
+    EXPECT_EQ(mesh.materials[0].name, "Skin");
+    // tinyobjloader's number parser is not correctly rounded (0.75 comes back 1 ulp high).
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(mesh.materials[0].diffuse[i], 0.25 * (i + 1), 1e-15);
+    EXPECT_EQ(mesh.materials[0].diffuse_texture, path("materials/textures/skin.png"));
+    EXPECT_EQ(mesh.materials[0].library, path("materials/paint.mtl"));
+    EXPECT_EQ(mesh.materials[1].name, "Plain");
+    EXPECT_EQ(mesh.materials[1].diffuse, glm::dvec3(1, 0, 0));
+    EXPECT_EQ(mesh.materials[1].diffuse_texture, "");
+    EXPECT_TRUE(mesh.warnings.empty()) << mesh.warnings.front();
+}
+
+TEST_F(MaterialLibrary, MissingPiecesAreWarnings) {
+    write("lib.mtl", "newmtl A\nKd 0 1 0\nmap_Kd gone.jpg\n");
+    write("model.obj", std::string("mtllib lib.mtl missing.mtl\n") + kTriangle + "usemtl B\nf 1 2 3\n");
+    const LoadedMesh mesh = read_obj_file(path("model.obj"));
+    ASSERT_EQ(mesh.materials.size(), 1u);
+    EXPECT_EQ(mesh.triangles.size(), 1u);
+    EXPECT_TRUE(has_warning(mesh.warnings, "material library '" + path("missing.mtl") +
+                                               "' was not read (cannot read the file: No such file or directory)"));
+    EXPECT_TRUE(has_warning(mesh.warnings, "1 diffuse textures (map_Kd) are not there, the first '" + path("gone.jpg") + "' of material 'A'"));
+    // B is undefined, but a library was not read, which says enough.
+    EXPECT_FALSE(has_warning(mesh.warnings, "defined in no material library"));
+
+    write("model2.obj", std::string("mtllib lib.mtl\n") + kTriangle + "usemtl B\nf 1 2 3\n");
+    EXPECT_TRUE(has_warning(read_obj_file(path("model2.obj")).warnings,
+                            "1 materials used by faces are defined in no material library (the first 'B')"));
+}
+
+TEST_F(MaterialLibrary, ALibraryThatIsNotAFileIsNotRead) {
+    fs::create_directories(folder_ / "dir.mtl");
+    write("model.obj", std::string("mtllib dir.mtl\n") + kTriangle + "f 1 2 3\n");
+    const LoadedMesh mesh = read_obj_file(path("model.obj"));
+    EXPECT_TRUE(has_warning(mesh.warnings, "was not read (cannot read the file: it is a directory)"));
+}
+
+}  // namespace
+}  // namespace rgbio
