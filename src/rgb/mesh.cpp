@@ -207,7 +207,8 @@ VertexId Mesh::allocate_vertex(const NewVertex& added) {
         throw std::length_error("vertex level " + std::to_string(added.level) + " is beyond the supported maximum " +
                                 std::to_string(kMaxLevel));
     // Stored in the canonical of its addresses, so equal points have equal records whatever history made them.
-    const SurfacePoint m = canonical(*base_, midpoint(*base_, address(added.a), address(added.b)));
+    const SurfacePoint m = added.address ? canonical(*base_, *added.address)
+                                         : canonical(*base_, midpoint(*base_, address(added.a), address(added.b)));
     const VertexId v(take_slot(free_vertices_, vertex_info_.size()));
     if (v.idx == vertex_info_.size()) {
         insertion_position_.emplace_back();

@@ -159,6 +159,8 @@ public:
         glm::dvec3 insertion_position;
         bool boundary;
         VertexId a, b;
+        // Where it is, when known (an undo putting back a removed vertex); else the midpoint of a and b.
+        std::optional<SurfacePoint> address = std::nullopt;
     };
     // The slot the next added vertex will take, so that new faces can name it before it exists.
     VertexId next_vertex_slot() const;
