@@ -39,6 +39,11 @@ std::int64_t orientation(const std::array<std::uint32_t, 3>& p, const std::array
 
 std::uint32_t base_face_of(const Mesh& mesh, FaceId f) {
     const BaseMesh& base = mesh.base();
+    // A corner inside a base face (not on its edges) names it; most faces have one.
+    for (VertexId v : mesh.face_vertices(f)) {
+        const SurfacePoint p = mesh.address(v);
+        if (p.a[0] != 0 && p.a[1] != 0 && p.a[2] != 0) return p.face;
+    }
     int level = 0;
     for (VertexId v : mesh.face_vertices(f)) level = std::max(level, mesh.level(v));
     // Candidates: each corner's own face and, for a corner on a base edge, the face across it.

@@ -28,12 +28,21 @@ std::optional<glm::dvec3> limit_from_ring(const Mesh& mesh, VertexId v) {
 
 }  // namespace
 
+glm::dvec3 limit_position_uncached(const Mesh& mesh, VertexId v) {
+    if (auto known = mesh.cached_limit(v)) return *known;
+    if (auto limit = limit_from_ring(mesh, v)) return *limit;
+    return HierarchyEvaluator(mesh.base()).limit_position(mesh.address(v));
+}
+
 glm::dvec3 limit_position(const Mesh& mesh, VertexId v) {
     if (auto known = mesh.cached_limit(v)) return *known;
-    std::optional<glm::dvec3> limit = limit_from_ring(mesh, v);
-    if (!limit) limit = HierarchyEvaluator(mesh.base()).limit_position(mesh.address(v));
-    mesh.cache_limit(v, *limit);
-    return *limit;
+    const glm::dvec3 limit = limit_position_uncached(mesh, v);
+    mesh.cache_limit(v, limit);
+    return limit;
+}
+
+void limit_position_where_uniform(const Mesh& mesh, VertexId v) {
+    if (!mesh.cached_limit(v) && ring_is_direct(mesh, v)) limit_position(mesh, v);
 }
 
 glm::dvec3 control_point(const Mesh& mesh, VertexId v, int k) {
@@ -54,6 +63,11 @@ int display_level(const Mesh& mesh, VertexId v) {
     return std::max(mesh.level(v), lowest);
 }
 
-glm::dvec3 displayed_position(const Mesh& mesh, VertexId v) { return control_point(mesh, v, display_level(mesh, v)); }
+glm::dvec3 displayed_position(const Mesh& mesh, VertexId v) {
+    const int k = display_level(mesh, v), l = mesh.level(v);
+    if (k <= l) return mesh.insertion_position(v);
+    return closed_form(mesh.insertion_position(v), limit_position_uncached(mesh, v),
+                       loop_gamma(mesh.uniform_valence(v), mesh.is_boundary(v)), k - l);
+}
 
 }  // namespace rgb

@@ -11,8 +11,13 @@ namespace rgb {
 
 class Mesh;
 
-// p^inf(v).
+// p^inf(v), cached in the mesh once computed (a coarser vertex is a stencil point of many splits).
 glm::dvec3 limit_position(const Mesh& mesh, VertexId v);
+// Caches p^inf(v) if that is cheap now: where v's ring at its own level is its neighbours.
+void limit_position_where_uniform(const Mesh& mesh, VertexId v);
+// The same without storing it: for one-off uses such as display and saving, so that the cache holds
+// only the limits the operators need.
+glm::dvec3 limit_position_uncached(const Mesh& mesh, VertexId v);
 
 // Control point p^k(v) of v in the uniform mesh of level k >= level(v), by the closed form
 // gamma^j Pl + (1 - gamma^j) Pinf.

@@ -87,19 +87,6 @@ void Mesh::init_base_state() {
     face_count_ = nf;
 }
 
-std::uint8_t Mesh::pack(const FaceType& t) {
-    const int kind = t.colour == Colour::Green ? 0 : (t.colour == Colour::Red ? 1 : 4) + t.red_edge;
-    return static_cast<std::uint8_t>(kind | (t.level << 3));
-}
-
-FaceType Mesh::unpack(std::uint8_t code) {
-    const int kind = code & 7;
-    const auto level = static_cast<std::uint8_t>(code >> 3);
-    if (kind == 0) return {Colour::Green, level, 0};
-    if (kind <= 3) return {Colour::Red, level, static_cast<std::uint8_t>(kind - 1)};
-    return {Colour::Blue, level, static_cast<std::uint8_t>(kind - 4)};
-}
-
 int Mesh::max_vertex_level() const {
     int m = 0;
     for (VertexId v : vertices()) m = std::max(m, level(v));

@@ -120,7 +120,7 @@ public:
     const std::array<VertexId, 3>& face_vertices(FaceId f) const { return face_vertices_[f.idx]; }
     FaceType type(FaceId f) const { return unpack(face_code_[f.idx]); }
     int level(FaceId f) const { return face_code_[f.idx] >> 3; }
-    Colour colour(FaceId f) const { return unpack(face_code_[f.idx]).colour; }
+    Colour colour(FaceId f) const { return colour_of(face_code_[f.idx]); }
     int corner_of(FaceId f, VertexId v) const;  // -1 if v is not a corner of f
     // Colour and level of the edge of h (spec §1.4), derived from its face.
     EdgeType edge_type(HalfedgeId h) const;
@@ -188,8 +188,19 @@ private:
     static constexpr std::uint8_t kBoundaryBit = 0x40;
     // A face's type in one byte: bits 0-2 are 0 for green, 1 + red edge for red, 4 + red edge for blue;
     // bits 3-7 the level. 0xff marks a dead slot.
-    static std::uint8_t pack(const FaceType& t);
-    static FaceType unpack(std::uint8_t code);
+    static std::uint8_t pack(const FaceType& t) {
+        const int kind = t.colour == Colour::Green ? 0 : (t.colour == Colour::Red ? 1 : 4) + t.red_edge;
+        return static_cast<std::uint8_t>(kind | (t.level << 3));
+    }
+    static Colour colour_of(std::uint8_t code) {
+        const int kind = code & 7;
+        return kind == 0 ? Colour::Green : (kind <= 3 ? Colour::Red : Colour::Blue);
+    }
+    static FaceType unpack(std::uint8_t code) {
+        const int kind = code & 7;
+        return {colour_of(code), static_cast<std::uint8_t>(code >> 3),
+                static_cast<std::uint8_t>(kind == 0 ? 0 : (kind <= 3 ? kind - 1 : kind - 4))};
+    }
     struct PackedAddress {
         std::uint32_t face, a1, a2;  // a0 = 2^level - a1 - a2
     };

@@ -66,11 +66,46 @@ bool star_reaches_level(const Mesh& mesh, VertexId v) {
 }
 }  // namespace
 
+bool ring_is_direct(const Mesh& mesh, VertexId v) {
+    const HalfedgeId start = mesh.vertex_halfedge(v);
+    HalfedgeId h = start;
+    do {
+        const FaceId f = Mesh::face(h);
+        if (mesh.colour(f) != Colour::Green || mesh.level(f) != mesh.level(v)) return false;
+        h = mesh.ccw_rotated(h);
+    } while (h.valid() && h != start);
+    return true;
+}
+
+namespace {
+// When every face around v is a green triangle of v's own level, the ring is just v's neighbours.
+bool direct_ring(const Mesh& mesh, VertexId v, std::vector<VertexId>& ring) {
+    const int l = mesh.level(v);
+    const HalfedgeId start = mesh.vertex_halfedge(v);
+    HalfedgeId h = start, last = start;
+    do {
+        const FaceId f = Mesh::face(h);
+        if (mesh.colour(f) != Colour::Green || mesh.level(f) != l) return false;
+        ring.push_back(mesh.to_vertex(h));
+        last = h;
+        h = mesh.ccw_rotated(h);
+    } while (h.valid() && h != start);
+    if (!h.valid()) {
+        // Boundary: its ring is the two boundary neighbours.
+        const VertexId far = mesh.from_vertex(Mesh::prev(last));
+        ring = {ring.front(), far};
+    }
+    return true;
+}
+}  // namespace
+
 std::vector<VertexId> uniform_ring(const Mesh& mesh, VertexId v) {
     const int l = mesh.level(v);
+    std::vector<VertexId> ring;
+    if (direct_ring(mesh, v, ring)) return ring;
+    ring.clear();
     if (!star_reaches_level(mesh, v)) return {};
     const HalfedgeId start = canonical_outgoing(mesh, v);
-    std::vector<VertexId> ring;
     if (mesh.is_boundary(v)) {
         HalfedgeId last = start;
         for (HalfedgeId h = mesh.ccw_rotated(start); h.valid(); h = mesh.ccw_rotated(h)) last = h;

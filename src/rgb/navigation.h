@@ -26,6 +26,10 @@ std::optional<VertexId> turn_cw(const Mesh& mesh, VertexId c, VertexId from, int
 // > max_level; returns the first vertex of level <= max_level, or nullopt at the boundary.
 std::optional<VertexId> walk_straight(const Mesh& mesh, VertexId from, VertexId to, int max_level);
 
+// Whether every face around v is a green triangle of v's own level, so that v's ring at its level
+// is simply its neighbours.
+bool ring_is_direct(const Mesh& mesh, VertexId v);
+
 // The ring of v in the uniform mesh of its own level: the base neighbours for base vertices, 6 for
 // interior vertices of level >= 1, the two boundary neighbours for boundary vertices (in that case
 // exactly 2 entries). Empty if part of that ring is not in the current mesh.

@@ -33,21 +33,22 @@ bool refine_halfedge(Mesh& mesh, HalfedgeId h) {
     const EdgeType e = mesh.edge_type(h);
     if (e.colour != Colour::Green) return false;
     // Bring every incident triangle up to the edge's level first. Each call works on a coarser level,
-    // so the recursion ends; it may split this very edge, hence the re-lookups. This adds exactly the
-    // vertices the RGB topology needs; geometry needs none (loop_geometry.h).
+    // so the recursion ends; it may split this very edge, hence the re-lookups after it. This adds
+    // exactly the vertices the RGB topology needs; geometry needs none (loop_geometry.h).
+    bool edited = false;
     for (int side = 0; side < 2; ++side) {
-        h = mesh.find_edge(a, b);
-        if (!h.valid()) return false;
+        if (edited && !(h = mesh.find_edge(a, b)).valid()) return false;
         const HalfedgeId s = side == 0 ? h : mesh.opposite(h);
         if (!s.valid()) continue;
         const FaceId f = Mesh::face(s);
         if (mesh.level(f) >= e.level) continue;
         const HalfedgeId coarse = edge_refining_face(mesh, f);
         if (!coarse.valid()) throw std::logic_error("refine_edge: a coarser neighbour has no edge to refine (invalid RGB mesh)");
-        refine_vertices(mesh, mesh.from_vertex(coarse), mesh.to_vertex(coarse));
+        refine_halfedge(mesh, coarse);
+        edited = true;
     }
-    h = mesh.find_edge(a, b);
-    if (!h.valid() || !can_split_edge(mesh, h)) return false;
+    if (edited && !(h = mesh.find_edge(a, b)).valid()) return false;
+    if (!can_split_edge(mesh, h)) return false;
     split_edge(mesh, h);
     return true;
 }
@@ -66,6 +67,8 @@ HalfedgeId edge_refining_face(const Mesh& mesh, FaceId f) {
 }
 
 bool refine_edge(Mesh& mesh, VertexId a, VertexId b) { return refine_vertices(mesh, a, b); }
+
+bool refine_edge(Mesh& mesh, HalfedgeId h) { return refine_halfedge(mesh, h); }
 
 namespace {
 // A neighbour of v finer than v, if there is one.

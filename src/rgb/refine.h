@@ -9,6 +9,7 @@ class Mesh;
 // Refines the edge {a, b} if it is a green edge: first whatever coarser neighbours the RGB topology
 // requires, then the split. Returns false if nothing was split (no such edge, or red).
 bool refine_edge(Mesh& mesh, VertexId a, VertexId b);
+bool refine_edge(Mesh& mesh, HalfedgeId h);
 // The edge whose refinement moves face f one step towards a finer level: a green edge of f's level
 // for green and red faces, and for a blue face the coarse edge of the red beyond its red edge.
 HalfedgeId edge_refining_face(const Mesh& mesh, FaceId f);

@@ -11,6 +11,7 @@
 
 #include "rgb/base_face_index.h"
 #include "rgb/face_location.h"
+#include "rgb/loop_geometry.h"
 #include "rgb/mesh.h"
 #include "rgb/operators.h"
 #include "rgb/refine.h"
@@ -28,11 +29,15 @@ public:
     RequestLog(const RequestLog&) = delete;
     RequestLog& operator=(const RequestLog&) = delete;
 
-    void vertex_added(const Mesh&, VertexId, VertexId, VertexId) override { ++stats.splits; }
+    void vertex_added(const Mesh&, VertexId v, VertexId, VertexId) override {
+        ++stats.splits;
+        new_vertices.push_back(v);
+    }
     void vertex_removed(const Mesh&, VertexId) override { ++stats.removals; }
     void face_added(const Mesh&, FaceId f) override { added.push_back(f); }
 
     std::vector<FaceId> added;
+    std::vector<VertexId> new_vertices;
     RequestStats stats;
 
 private:
@@ -81,6 +86,8 @@ std::array<glm::dvec3, 3> base_triangle(const BaseMesh& base, std::uint32_t f) {
 // vertex asks.
 class RegionTest {
 public:
+    enum class Coverage { None, Partial, Full };
+
     // `allowed` (sorted base faces, empty for all) must outlive the test.
     RegionTest(const Mesh& mesh, const std::optional<Sphere>& sphere, const std::vector<std::uint32_t>& allowed_faces, double dilation)
         : base_(mesh.base()), allowed_(allowed_faces) {
@@ -100,21 +107,31 @@ public:
     const std::vector<std::uint32_t>& base_faces_meeting() const { return meeting_; }
     bool whole() const { return whole_; }
 
-    bool base_face_meets(std::uint32_t f) const { return whole_ ? allowed(f) : position(f) != meeting_.size(); }
+    Coverage coverage(std::uint32_t f) const {
+        if (whole_) return allowed(f) ? Coverage::Full : Coverage::None;
+        // Work runs face by face through a region, so the same base face is asked about in a row.
+        if (f != last_face_) {
+            last_face_ = f;
+            const auto it = std::lower_bound(meeting_.begin(), meeting_.end(), f);
+            const std::size_t i = static_cast<std::size_t>(it - meeting_.begin());
+            last_coverage_ = it == meeting_.end() || *it != f ? Coverage::None : contained_[i] ? Coverage::Full : Coverage::Partial;
+        }
+        return last_coverage_;
+    }
 
-    bool meets(std::uint32_t base_face, const std::array<SurfacePoint, 3>& triangle) const {
-        if (whole_) return allowed(base_face);
-        const std::size_t i = position(base_face);
-        if (i == meeting_.size()) return false;
-        return contained_[i] || triangle_meets_sphere(base_space(base_, triangle), sphere_.centre, sphere_.radius);
+    // Whether the triangle (given by `triangle()`, computed only if needed) of base face f meets the region.
+    template <class Triangle>
+    bool meets(std::uint32_t f, Triangle&& triangle) const {
+        switch (coverage(f)) {
+            case Coverage::None: return false;
+            case Coverage::Full: return true;
+            case Coverage::Partial: break;
+        }
+        return triangle_meets_sphere(base_space(base_, triangle()), sphere_.centre, sphere_.radius);
     }
 
 private:
     bool allowed(std::uint32_t f) const { return allowed_.empty() || std::binary_search(allowed_.begin(), allowed_.end(), f); }
-    std::size_t position(std::uint32_t f) const {
-        const auto it = std::lower_bound(meeting_.begin(), meeting_.end(), f);
-        return it != meeting_.end() && *it == f ? static_cast<std::size_t>(it - meeting_.begin()) : meeting_.size();
-    }
 
     const BaseMesh& base_;
     const std::vector<std::uint32_t>& allowed_;
@@ -122,6 +139,8 @@ private:
     Sphere sphere_;
     std::vector<std::uint32_t> meeting_;  // sorted
     std::vector<bool> contained_;
+    mutable std::uint32_t last_face_ = BaseMesh::kNone;
+    mutable Coverage last_coverage_ = Coverage::None;
 };
 
 // Barycentric coordinates of the point of triangle (a, b, c) nearest to p (Ericson §5.1.5).
@@ -199,7 +218,7 @@ void for_each_region_face(Mesh& mesh, const RegionTest& test, std::vector<FaceId
         stack.pop_back();
         if (!mesh.is_live(f) || !face_marks.mark(f.idx)) continue;
         const std::uint32_t b = base_face_of(mesh, f);
-        if (!test.base_face_meets(b) || !test.meets(b, parent_triangle(mesh, f, b))) continue;
+        if (!test.meets(b, [&] { return parent_triangle(mesh, f, b); })) continue;
         for (int i = 0; i < 3; ++i) {
             const HalfedgeId o = mesh.opposite(Mesh::halfedge(f, i));
             if (o.valid() && !face_marks.marked(Mesh::face(o).idx)) stack.push_back(Mesh::face(o));
@@ -242,12 +261,18 @@ public:
     // The region all bands lie in (dilated as asked).
     const RegionTest& outer() const { return outer_; }
     int coarsest() const { return *std::min_element(levels_.begin(), levels_.end()); }
-    // The finest (refine) or coarsest (coarsen) level the bands that meet the triangle ask for.
-    std::optional<int> level(std::uint32_t base_face, const std::array<SurfacePoint, 3>& triangle, bool finest) const {
+    // The finest (refine) or coarsest (coarsen) level the bands that meet the triangle ask for; the
+    // triangle is computed only if a band needs an exact test.
+    template <class Triangle>
+    std::optional<int> level(std::uint32_t base_face, Triangle&& triangle, bool finest) const {
+        std::optional<std::array<SurfacePoint, 3>> computed;
+        auto exact = [&]() -> const std::array<SurfacePoint, 3>& {
+            if (!computed) computed = triangle();
+            return *computed;
+        };
         std::optional<int> best;
         for (std::size_t i = 0; i < tests_.size(); ++i)
-            if ((!best || (finest ? levels_[i] > *best : levels_[i] < *best)) && tests_[i].base_face_meets(base_face) &&
-                tests_[i].meets(base_face, triangle))
+            if ((!best || (finest ? levels_[i] > *best : levels_[i] < *best)) && tests_[i].meets(base_face, exact))
                 best = levels_[i];
         return best;
     }
@@ -263,15 +288,24 @@ private:
     std::deque<RegionTest> tests_;
 };
 
+// Level by level, like uniform refinement: a request for level N is the requests for levels 1..N in
+// turn (each holds the last's vertices), and this way every split finds the limits of its coarser
+// stencil points already known, computed cheaply while their rings were their neighbours.
 void refine_region(Mesh& mesh, const LevelRequest& request, RequestLog& log) {
     const Bands bands(mesh, request, 0.0);
-    for_each_region_face(mesh, bands.outer(), starting_faces(mesh, bands.outer(), request), log, [&](FaceId f) {
-        const std::uint32_t b = base_face_of(mesh, f);
-        const auto target = bands.level(b, parent_triangle(mesh, f, b), true);
-        if (!target || mesh.level(f) >= *target) return;
-        const HalfedgeId h = edge_refining_face(mesh, f);
-        refine_edge(mesh, mesh.from_vertex(h), mesh.to_vertex(h));
-    });
+    int finest = request.level;
+    for (const LevelBand& band : request.taper) finest = std::max(finest, band.level);
+    for (int pass = 1; pass <= finest; ++pass) {
+        for (VertexId v : log.new_vertices)
+            if (mesh.is_live(v)) limit_position_where_uniform(mesh, v);
+        log.new_vertices.clear();
+        for_each_region_face(mesh, bands.outer(), starting_faces(mesh, bands.outer(), request), log, [&](FaceId f) {
+            if (mesh.level(f) >= pass) return;
+            const std::uint32_t b = base_face_of(mesh, f);
+            const auto target = bands.level(b, [&] { return parent_triangle(mesh, f, b); }, true);
+            if (target && mesh.level(f) < std::min(*target, pass)) refine_edge(mesh, edge_refining_face(mesh, f));
+        });
+    }
 }
 
 // Whether v lies on an edge of a triangle of level >= the level some band meeting that triangle asks
@@ -279,7 +313,7 @@ void refine_region(Mesh& mesh, const LevelRequest& request, RequestLog& log) {
 bool above_its_level(const Mesh& mesh, const Bands& bands, VertexId v) {
     const PointStencil s = parent_stencil(mesh.base(), mesh.address(v));
     for (const SurfacePoint& o : s.opposite) {
-        const auto level = bands.level(o.face, {s.ends[0], s.ends[1], o}, false);
+        const auto level = bands.level(o.face, [&] { return std::array<SurfacePoint, 3>{s.ends[0], s.ends[1], o}; }, false);
         if (level && mesh.level(v) > *level) return true;
     }
     return false;
@@ -304,16 +338,21 @@ void coarsen_region(Mesh& mesh, const LevelRequest& request, RequestLog& log) {
         if (mesh.is_live(v)) remove_with_dependents(mesh, v);
 }
 
-// Everything above level N goes, finest first: each is then removable.
-void coarsen_everywhere(Mesh& mesh, int level) {
+// Everything above level N goes, finest first: each is then removable. Returns the removals.
+std::size_t coarsen_everywhere(Mesh& mesh, int level) {
     std::vector<std::vector<VertexId>> by_level;
     for (VertexId v : mesh.vertices())
         if (mesh.level(v) > level) {
             by_level.resize(std::max<std::size_t>(by_level.size(), static_cast<std::size_t>(mesh.level(v)) + 1));
             by_level[static_cast<std::size_t>(mesh.level(v))].push_back(v);
         }
+    std::size_t removed = 0;
     for (auto it = by_level.rbegin(); it != by_level.rend(); ++it)
-        for (VertexId v : *it) remove_vertex(mesh, v);
+        for (VertexId v : *it) {
+            remove_vertex(mesh, v);
+            ++removed;
+        }
+    return removed;
 }
 
 void check_level(int level) {
@@ -338,16 +377,18 @@ void check(const LevelRequest& request) {
 
 RequestStats apply_request(Mesh& mesh, const LevelRequest& request) {
     check(request);
+    if (!request.sphere && request.base_faces.empty()) {
+        // The whole surface needs no bookkeeping of new faces: the counts tell what happened.
+        RequestStats stats;
+        if (request.kind != RequestKind::Refine) stats.removals = coarsen_everywhere(mesh, request.level);
+        const std::size_t before = mesh.num_vertices();
+        if (request.kind != RequestKind::Coarsen) refine_uniform(mesh, request.level);
+        stats.splits = mesh.num_vertices() - before;
+        return stats;
+    }
     RequestLog log(mesh);
-    const bool whole = !request.sphere && request.base_faces.empty();
-    if (request.kind != RequestKind::Refine) {
-        if (whole) coarsen_everywhere(mesh, request.level);
-        else coarsen_region(mesh, request, log);
-    }
-    if (request.kind != RequestKind::Coarsen) {
-        if (whole) refine_uniform(mesh, request.level);
-        else refine_region(mesh, request, log);
-    }
+    if (request.kind != RequestKind::Refine) coarsen_region(mesh, request, log);
+    if (request.kind != RequestKind::Coarsen) refine_region(mesh, request, log);
     return log.stats;
 }
 
@@ -387,7 +428,7 @@ double estimated_triangles(const Mesh& mesh, const LevelRequest& request) {
     };
     if (test.whole()) {
         for (std::uint32_t f = 0; f < base.num_faces(); ++f)
-            if (test.base_face_meets(f)) add(f);
+            if (test.coverage(f) != RegionTest::Coverage::None) add(f);
     } else {
         for (std::uint32_t f : test.base_faces_meeting()) add(f);
     }

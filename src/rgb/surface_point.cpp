@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
-#include <vector>
 
 #include "rgb/base_mesh.h"
 
@@ -41,35 +40,30 @@ std::optional<SurfacePoint> across_edge(const BaseMesh& base, const SurfacePoint
     return q;
 }
 
-// The base faces whose closed triangle holds p: its own, the one across its base edge, or every face
-// around its base vertex.
-InlineVector<std::uint32_t, 2> faces_holding(const BaseMesh& base, const SurfacePoint& p, std::vector<std::uint32_t>& around) {
-    InlineVector<std::uint32_t, 2> faces{p.face};
-    if (p.level == 0) {
-        around.clear();
-        const std::uint32_t v = *base_vertex(base, p);
-        std::uint32_t h = base.vertex_halfedge(v);
-        do {
-            around.push_back(h / 3);
-            h = base.ccw_rotated(h);
-        } while (h != BaseMesh::kNone && h != base.vertex_halfedge(v));
-        return faces;
-    }
-    const int z = zero_coordinate(p);
-    int far = 0;
-    if (z >= 0)
-        if (const auto q = across_edge(base, p, z, far)) faces.push_back(q->face);
-    return faces;
-}
-
 // Both points expressed in one base face.
 std::pair<SurfacePoint, SurfacePoint> in_common_face(const BaseMesh& base, const SurfacePoint& p, const SurfacePoint& q) {
-    std::vector<std::uint32_t> around;
-    const auto candidates = faces_holding(base, p, around);
-    for (std::uint32_t g : candidates)
-        if (auto q2 = in_face(base, q, g)) return {*in_face(base, p, g), *q2};
-    for (std::uint32_t g : around)
-        if (auto q2 = in_face(base, q, g)) return {*in_face(base, p, g), *q2};
+    // Most edges of the hierarchy lie inside one base face, or one address names the other's face.
+    if (p.face == q.face) return {p, q};
+    if (auto q2 = in_face(base, q, p.face)) return {p, *q2};
+    if (auto p2 = in_face(base, p, q.face)) return {*p2, q};
+    // An edge point's other face, or any face around a base vertex.
+    for (const SurfacePoint* x : {&p, &q}) {
+        if (x->level == 0) {
+            const std::uint32_t v = *base_vertex(base, *x);
+            std::uint32_t h = base.vertex_halfedge(v);
+            do {
+                const auto p2 = in_face(base, p, h / 3), q2 = in_face(base, q, h / 3);
+                if (p2 && q2) return {*p2, *q2};
+                h = base.ccw_rotated(h);
+            } while (h != BaseMesh::kNone && h != base.vertex_halfedge(v));
+        } else if (const int z = zero_coordinate(*x); z >= 0) {
+            int far = 0;
+            if (const auto other = across_edge(base, *x, z, far)) {
+                const auto p2 = in_face(base, p, other->face), q2 = in_face(base, q, other->face);
+                if (p2 && q2) return {*p2, *q2};
+            }
+        }
+    }
     throw std::logic_error("midpoint: the points share no base face");
 }
 

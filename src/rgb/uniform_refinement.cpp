@@ -5,6 +5,7 @@
 
 #include "rgb/mesh.h"
 #include "rgb/operators.h"
+#include "rgb/loop_geometry.h"
 #include "rgb/refine.h"
 
 namespace rgb {
@@ -23,15 +24,21 @@ void refine_uniform(Mesh& mesh, int level) {
     mesh.reserve(mesh.face_capacity() + new_faces, mesh.vertex_capacity() + new_faces / 2 + new_boundary_vertices);
     std::vector<FaceId> front;
     for (int l = 0; l < level; ++l) {
-        // Only a G_l or R_l triangle can have a green edge of level l.
+        // The vertices of level l are stencil points of the splits of every later pass, and right now,
+        // where the mesh is uniform around them, their ring at their own level is their neighbours:
+        // their limits cost least now.
+        if (l + 1 < level)
+            for (VertexId v : mesh.vertices())
+                if (mesh.level(v) == l) limit_position_where_uniform(mesh, v);
+        // Only a G_l or R_l triangle has a green edge of level l: any edge of the green one, the edge
+        // opposite the top (the vertex of level l+1) of the red one.
         auto splittable_edge = [&](FaceId f) {
-            const FaceType& t = mesh.type(f);
-            if (!mesh.is_live(f) || t.level != l || t.colour == Colour::Blue) return HalfedgeId();
-            for (int c = 0; c < 3; ++c) {
-                const HalfedgeId h = Mesh::halfedge(f, c);
-                const EdgeType e = mesh.edge_type(h);
-                if (e.colour == Colour::Green && e.level == l) return h;
-            }
+            if (!mesh.is_live(f) || mesh.level(f) != l) return HalfedgeId();
+            const Colour colour = mesh.colour(f);
+            if (colour == Colour::Green) return Mesh::halfedge(f, 0);
+            if (colour == Colour::Blue) return HalfedgeId();
+            for (int c = 0; c < 3; ++c)
+                if (mesh.level(mesh.face_vertices(f)[c]) > l) return Mesh::halfedge(f, (c + 1) % 3);
             return HalfedgeId();
         };
         // Every face a split creates contains the new vertex; the new R_l ones (the only ones with an
