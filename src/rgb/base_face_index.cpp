@@ -30,37 +30,38 @@ double box_distance_squared(const glm::dvec3& p, const glm::dvec3& lo, const glm
 BaseFaceIndex::BaseFaceIndex(const BaseMesh& base) : base_(base), faces_(base.num_faces()) {
     std::iota(faces_.begin(), faces_.end(), 0u);
     if (faces_.empty()) return;
+    // Each face's box and centroid once, rather than from its corners at every level of the build.
+    std::vector<FaceBox> boxes(faces_.size());
+    for (std::uint32_t f = 0; f < faces_.size(); ++f) {
+        const auto c = corners(base_, f);
+        boxes[f] = {glm::min(glm::min(c[0], c[1]), c[2]), glm::max(glm::max(c[0], c[1]), c[2]), c[0] + c[1] + c[2]};
+    }
     nodes_.reserve(2 * faces_.size() / kLeafSize + 2);
     nodes_.push_back({});
-    build(0, 0, static_cast<std::uint32_t>(faces_.size()));
+    build(boxes, 0, 0, static_cast<std::uint32_t>(faces_.size()));
 }
 
-void BaseFaceIndex::build(std::uint32_t node, std::uint32_t begin, std::uint32_t end) {
+void BaseFaceIndex::build(const std::vector<FaceBox>& boxes, std::uint32_t node, std::uint32_t begin, std::uint32_t end) {
     glm::dvec3 lo(1e300), hi(-1e300);
-    for (std::uint32_t i = begin; i < end; ++i)
-        for (const glm::dvec3& p : corners(base_, faces_[i])) {
-            lo = glm::min(lo, p);
-            hi = glm::max(hi, p);
-        }
+    for (std::uint32_t i = begin; i < end; ++i) {
+        lo = glm::min(lo, boxes[faces_[i]].lo);
+        hi = glm::max(hi, boxes[faces_[i]].hi);
+    }
     nodes_[node] = {lo, hi, begin, end - begin};
     if (end - begin <= kLeafSize) return;
     // Split at the median of the centroids along the longest axis.
     const glm::dvec3 extent = hi - lo;
     const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
-    auto centroid = [&](std::uint32_t f) {
-        const auto c = corners(base_, f);
-        return c[0][axis] + c[1][axis] + c[2][axis];
-    };
     const std::uint32_t mid = begin + (end - begin) / 2;
     std::nth_element(faces_.begin() + begin, faces_.begin() + mid, faces_.begin() + end,
-                     [&](std::uint32_t a, std::uint32_t b) { return centroid(a) < centroid(b); });
+                     [&](std::uint32_t a, std::uint32_t b) { return boxes[a].centroid[axis] < boxes[b].centroid[axis]; });
     const auto left = static_cast<std::uint32_t>(nodes_.size());
     nodes_.push_back({});
     nodes_.push_back({});
     nodes_[node].first = left;
     nodes_[node].count = 0;
-    build(left, begin, mid);
-    build(left + 1, mid, end);
+    build(boxes, left, begin, mid);
+    build(boxes, left + 1, mid, end);
 }
 
 std::vector<std::uint32_t> BaseFaceIndex::faces_meeting_sphere(const glm::dvec3& centre, double radius) const {

@@ -25,7 +25,10 @@ private:
         glm::dvec3 lo, hi;
         std::uint32_t first, count;  // leaf: faces_[first, first+count); inner: count == 0, children first, first+1
     };
-    void build(std::uint32_t node, std::uint32_t begin, std::uint32_t end);
+    struct FaceBox {
+        glm::dvec3 lo, hi, centroid;  // centroid times three
+    };
+    void build(const std::vector<FaceBox>& boxes, std::uint32_t node, std::uint32_t begin, std::uint32_t end);
 
     const BaseMesh& base_;
     std::vector<std::uint32_t> faces_;

@@ -46,7 +46,18 @@ std::uint32_t base_face_of(const Mesh& mesh, FaceId f) {
     }
     int level = 0;
     for (VertexId v : mesh.face_vertices(f)) level = std::max(level, mesh.level(v));
-    // Candidates: each corner's own face and, for a corner on a base edge, the face across it.
+    // A corner inside a base edge leaves two candidates, the faces on either side of that edge.
+    for (VertexId v : mesh.face_vertices(f)) {
+        const SurfacePoint p = mesh.address(v);
+        const int zeros = (p.a[0] == 0) + (p.a[1] == 0) + (p.a[2] == 0);
+        if (zeros != 1) continue;
+        const int z = p.a[0] == 0 ? 0 : (p.a[1] == 0 ? 1 : 2);
+        if (corners_in(mesh, f, p.face, level)) return p.face;
+        const std::uint32_t o = base.opposite(3 * p.face + static_cast<std::uint32_t>((z + 1) % 3));
+        if (o != BaseMesh::kNone && corners_in(mesh, f, o / 3, level)) return o / 3;
+        break;
+    }
+    // Each corner's own face and, for a corner on a base edge, the faces across its edges.
     for (VertexId v : mesh.face_vertices(f)) {
         const SurfacePoint p = mesh.address(v);
         if (corners_in(mesh, f, p.face, level)) return p.face;

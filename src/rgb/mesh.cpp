@@ -136,15 +136,6 @@ int Mesh::angle(FaceId f, int c) const {
     return (!on_red && high) ? 4 : 1;
 }
 
-SurfacePoint Mesh::address(VertexId v) const {
-    const PackedAddress& p = address_[v.idx];
-    SurfacePoint s;
-    s.face = p.face;
-    s.level = level(v);
-    s.a = {(std::uint32_t(1) << s.level) - p.a1 - p.a2, p.a1, p.a2};
-    return s;
-}
-
 int Mesh::uniform_valence(VertexId v) const {
     if (is_base_vertex(v)) return base_->valence(v.idx);
     return is_boundary(v) ? 4 : 6;

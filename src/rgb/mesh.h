@@ -136,7 +136,14 @@ public:
     const glm::dvec3& insertion_position(VertexId v) const { return insertion_position_[v.idx]; }
     // The vertex's address in the uniform hierarchy (surface_point.h): its identity, from which its
     // base-space position, parent edge and stencil follow.
-    SurfacePoint address(VertexId v) const;
+    SurfacePoint address(VertexId v) const {
+        const PackedAddress& p = address_[v.idx];
+        SurfacePoint s;
+        s.face = p.face;
+        s.level = level(v);
+        s.a = {(std::uint32_t(1) << s.level) - p.a1 - p.a2, p.a1, p.a2};
+        return s;
+    }
     // Spec §3.5: the vertex under midpoint subdivision of the base mesh; it never moves.
     glm::dvec3 base_space_position(VertexId v) const { return rgb::base_space_position(*base_, address(v)); }
     // p^inf(v) if it has been computed (see loop_geometry.h, which computes it on demand).

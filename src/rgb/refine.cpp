@@ -48,7 +48,7 @@ bool refine_halfedge(Mesh& mesh, HalfedgeId h) {
         edited = true;
     }
     if (edited && !(h = mesh.find_edge(a, b)).valid()) return false;
-    if (!can_split_edge(mesh, h)) return false;
+    // A green edge between triangles of its level is splittable (split_edge checks it).
     split_edge(mesh, h);
     return true;
 }

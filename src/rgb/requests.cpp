@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <deque>
 #include <stdexcept>
 #include <string>
 
@@ -29,15 +28,13 @@ public:
     RequestLog(const RequestLog&) = delete;
     RequestLog& operator=(const RequestLog&) = delete;
 
-    void vertex_added(const Mesh&, VertexId v, VertexId, VertexId) override {
+    void vertex_added(const Mesh&, VertexId, VertexId, VertexId) override {
         ++stats.splits;
-        new_vertices.push_back(v);
     }
     void vertex_removed(const Mesh&, VertexId) override { ++stats.removals; }
     void face_added(const Mesh&, FaceId f) override { added.push_back(f); }
 
     std::vector<FaceId> added;
-    std::vector<VertexId> new_vertices;
     RequestStats stats;
 
 private:
@@ -207,11 +204,9 @@ std::vector<FaceId> seed_faces(const Mesh& mesh, std::span<const std::uint32_t> 
 thread_local Marks face_marks;
 thread_local Marks vertex_marks;
 
-// Visits every live face whose parent triangle meets the region (breadth over face adjacency from the
-// seeds), calling visit(f) once per face; visit may edit the mesh, and faces the edits create are
-// visited too.
-template <class Visit>
-void for_each_region_face(Mesh& mesh, const RegionTest& test, std::vector<FaceId> stack, RequestLog& log, Visit&& visit) {
+// The live faces whose parent triangles meet the region: breadth over face adjacency from the seeds.
+std::vector<FaceId> region_faces(const Mesh& mesh, const RegionTest& test, std::vector<FaceId> stack) {
+    std::vector<FaceId> region;
     face_marks.start(mesh.face_capacity());
     while (!stack.empty()) {
         const FaceId f = stack.back();
@@ -219,18 +214,13 @@ void for_each_region_face(Mesh& mesh, const RegionTest& test, std::vector<FaceId
         if (!mesh.is_live(f) || !face_marks.mark(f.idx)) continue;
         const std::uint32_t b = base_face_of(mesh, f);
         if (!test.meets(b, [&] { return parent_triangle(mesh, f, b); })) continue;
+        region.push_back(f);
         for (int i = 0; i < 3; ++i) {
             const HalfedgeId o = mesh.opposite(Mesh::halfedge(f, i));
             if (o.valid() && !face_marks.marked(Mesh::face(o).idx)) stack.push_back(Mesh::face(o));
         }
-        log.added.clear();
-        visit(f);
-        // New faces may reuse slots visited before: they are new faces, so they get visited.
-        for (FaceId g : log.added) {
-            face_marks.unmark(g.idx);
-            stack.push_back(g);
-        }
     }
+    return region;
 }
 
 std::vector<FaceId> all_faces(const Mesh& mesh) {
@@ -252,6 +242,7 @@ public:
     Bands(const Mesh& mesh, const LevelRequest& request, double dilation)
         : outer_(mesh, outermost(request), request.base_faces, dilation) {
         levels_.push_back(request.level);
+        tests_.reserve(1 + request.taper.size());  // no moves: each test refers to the request's faces
         tests_.emplace_back(mesh, request.sphere, request.base_faces, 0.0);
         for (const LevelBand& band : request.taper) {
             levels_.push_back(band.level);
@@ -285,26 +276,52 @@ private:
     }
     RegionTest outer_;
     std::vector<int> levels_;
-    std::deque<RegionTest> tests_;
+    std::vector<RegionTest> tests_;
 };
 
 // Level by level, like uniform refinement: a request for level N is the requests for levels 1..N in
 // turn (each holds the last's vertices), and this way every split finds the limits of its coarser
-// stencil points already known, computed cheaply while their rings were their neighbours.
-void refine_region(Mesh& mesh, const LevelRequest& request, RequestLog& log) {
+// stencil points already known, computed cheaply while their rings were their neighbours. The region
+// is searched once; after that, each pass works off the faces still short of their level and the
+// faces the splits create.
+// `known` holds the region's faces (or more) if a search just found them.
+void refine_region(Mesh& mesh, const LevelRequest& request, RequestLog& log, std::optional<std::vector<FaceId>> known) {
     const Bands bands(mesh, request, 0.0);
     int finest = request.level;
     for (const LevelBand& band : request.taper) finest = std::max(finest, band.level);
-    for (int pass = 1; pass <= finest; ++pass) {
-        for (VertexId v : log.new_vertices)
-            if (mesh.is_live(v)) limit_position_where_uniform(mesh, v);
-        log.new_vertices.clear();
-        for_each_region_face(mesh, bands.outer(), starting_faces(mesh, bands.outer(), request), log, [&](FaceId f) {
-            if (mesh.level(f) >= pass) return;
+    std::vector<FaceId> pending =
+        known ? std::move(*known) : region_faces(mesh, bands.outer(), starting_faces(mesh, bands.outer(), request));
+    std::vector<FaceId> stack, next;
+    for (int pass = 1; pass <= finest && !pending.empty(); ++pass) {
+        if (pass < finest) {
+            vertex_marks.start(mesh.vertex_capacity());
+            for (FaceId f : pending)
+                for (VertexId v : mesh.face_vertices(f))
+                    if (mesh.level(v) == pass - 1 && vertex_marks.mark(v.idx)) limit_position_where_uniform(mesh, v);
+        }
+        face_marks.start(mesh.face_capacity());
+        stack.swap(pending);
+        next.clear();
+        while (!stack.empty()) {
+            const FaceId f = stack.back();
+            stack.pop_back();
+            if (!mesh.is_live(f) || !face_marks.mark(f.idx)) continue;
             const std::uint32_t b = base_face_of(mesh, f);
             const auto target = bands.level(b, [&] { return parent_triangle(mesh, f, b); }, true);
-            if (target && mesh.level(f) < std::min(*target, pass)) refine_edge(mesh, edge_refining_face(mesh, f));
-        });
+            if (!target || *target <= mesh.level(f)) continue;
+            if (mesh.level(f) >= pass) {
+                next.push_back(f);
+                continue;
+            }
+            log.added.clear();
+            refine_edge(mesh, edge_refining_face(mesh, f));
+            // New faces may reuse slots visited before: they are new faces, so they get visited.
+            for (auto it = log.added.rbegin(); it != log.added.rend(); ++it) {
+                face_marks.unmark(it->idx);
+                stack.push_back(*it);
+            }
+        }
+        pending.swap(next);
     }
 }
 
@@ -319,23 +336,26 @@ bool above_its_level(const Mesh& mesh, const Bands& bands, VertexId v) {
     return false;
 }
 
-void coarsen_region(Mesh& mesh, const LevelRequest& request, RequestLog& log) {
+// Returns the faces it searched (a superset of the region) if it removed nothing.
+std::optional<std::vector<FaceId>> coarsen_region(Mesh& mesh, const LevelRequest& request) {
     // Every vertex to remove lies on a triangle of level >= N that meets a ball, so within one such
     // triangle's size of it.
     const Bands probe(mesh, request, 0.0);
     const Bands bands(mesh, request, std::ldexp(mesh.base().longest_edge(), -probe.coarsest()));
     std::vector<VertexId> doomed;
     vertex_marks.start(mesh.vertex_capacity());
-    for_each_region_face(mesh, bands.outer(), starting_faces(mesh, bands.outer(), request), log, [&](FaceId f) {
+    std::vector<FaceId> searched = region_faces(mesh, bands.outer(), starting_faces(mesh, bands.outer(), request));
+    for (FaceId f : searched)
         for (VertexId v : mesh.face_vertices(f))
             if (mesh.level(v) > bands.coarsest() && vertex_marks.mark(v.idx) && above_its_level(mesh, probe, v))
                 doomed.push_back(v);
-    });
+    if (doomed.empty()) return searched;
     // Finest first; a vertex may already be gone as the dependent of another. Removals add no
     // vertices, so a slot that is live again is the same vertex.
     std::stable_sort(doomed.begin(), doomed.end(), [&](VertexId a, VertexId b) { return mesh.level(a) > mesh.level(b); });
     for (VertexId v : doomed)
         if (mesh.is_live(v)) remove_with_dependents(mesh, v);
+    return std::nullopt;
 }
 
 // Everything above level N goes, finest first: each is then removable. Returns the removals.
@@ -387,8 +407,9 @@ RequestStats apply_request(Mesh& mesh, const LevelRequest& request) {
         return stats;
     }
     RequestLog log(mesh);
-    if (request.kind != RequestKind::Refine) coarsen_region(mesh, request, log);
-    if (request.kind != RequestKind::Coarsen) refine_region(mesh, request, log);
+    std::optional<std::vector<FaceId>> searched;
+    if (request.kind != RequestKind::Refine) searched = coarsen_region(mesh, request);
+    if (request.kind != RequestKind::Coarsen) refine_region(mesh, request, log, std::move(searched));
     return log.stats;
 }
 
