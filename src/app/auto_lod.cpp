@@ -1,34 +1,32 @@
 #include "app/auto_lod.h"
 
 #include <algorithm>
+#include <cstdint>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include "rgb/lod_driver.h"
-#include "rgb/loop_geometry.h"
 #include "rgb/mesh.h"
 
 namespace app {
 
 namespace {
 
-double bounding_box_diagonal(const rgb::Mesh& mesh) {
+// Of the base mesh, so that the wanted length (and the result) does not depend on the current detail.
+double bounding_box_diagonal(const rgb::BaseMesh& base) {
     glm::dvec3 lo(1e300), hi(-1e300);
-    for (rgb::VertexId v : mesh.vertices()) {
-        const glm::dvec3 p = rgb::displayed_position(mesh, v);
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
+    for (std::uint32_t v = 0; v < base.num_vertices(); ++v) {
+        lo = glm::min(lo, base.position(v));
+        hi = glm::max(hi, base.position(v));
     }
     return glm::distance(lo, hi);
 }
 
 rgb::LodSettings driver_settings(const rgb::Mesh& mesh, const AutoLodSettings& s) {
-    const double wanted = s.max_edge_fraction * bounding_box_diagonal(mesh);
     rgb::LodSettings out;
-    out.excess = rgb::edge_length_excess([wanted](const glm::dvec3&) { return wanted; });
+    out.threshold = s.max_edge_fraction * bounding_box_diagonal(mesh.base());
     out.max_triangles = s.triangle_budget;
-    out.max_level = s.max_level;
     return out;
 }
 
@@ -65,6 +63,9 @@ float AutoLodJob::progress() const {
     return static_cast<float>(std::clamp(done, 0.0, 1.0));
 }
 
-bool AutoLodJob::changed() const { return state_->driver.steps() > 0; }
+bool AutoLodJob::changed() const {
+    const rgb::LodReport& r = state_->driver.report();
+    return r.splits + r.removals > 0;
+}
 
 }  // namespace app

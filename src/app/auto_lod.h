@@ -1,6 +1,7 @@
 #pragma once
-// Budget-driven automatic level of detail (spec §3.3): the core's LodDriver with an edge-length
-// criterion, run a slice at a time so the window stays responsive and the job can be cancelled.
+// Budget-driven automatic level of detail (spec §3.3): the core's LodDriver splitting edges longer
+// than a share of the base mesh's size, longest first, run a slice at a time so the window stays
+// responsive and the job can be cancelled.
 #include <cstddef>
 #include <memory>
 
@@ -16,7 +17,6 @@ struct AutoLodSettings {
     std::size_t triangle_budget = 100000;
     // Criterion: edges longer than this fraction of the mesh's bounding-box diagonal get refined.
     double max_edge_fraction = 0.01;
-    int max_level = 8;
 };
 
 class AutoLodJob : public MeshJob {

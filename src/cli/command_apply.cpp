@@ -71,9 +71,13 @@ int run_apply(std::span<const std::string> args) {
         if (const auto* request = std::get_if<rgb::LevelRequest>(&line.edit)) rgbio::check_request_size(mesh, *request, limit);
         const auto* dab = std::get_if<rgbio::DabEdit>(&line.edit);
         if (dab) rgbio::check_request_size(mesh, rgb::dab_request(mesh, runner.dab(*dab)), limit);
+        if (const auto* budget = std::get_if<rgbio::BudgetEdit>(&line.edit)) rgbio::check_budget_size(budget->triangles, limit);
         const auto start = std::chrono::steady_clock::now();
         const rgb::RequestStats stats = runner.run(mesh, line);
         const std::chrono::duration<double, std::milli> elapsed = std::chrono::steady_clock::now() - start;
+        if (stats.level_cap_bound)
+            std::cerr << "rgbsub apply: " << script_file << ':' << line.line << ": wanted detail stops at the maximum level "
+                      << rgb::kMaxLevel << '\n';
         if (dab) {
             dab_ms.push_back(elapsed.count());
             dab_stats += stats;

@@ -147,13 +147,6 @@ std::vector<ScriptLine> parse_lod_script(const std::string& text, const std::str
 
 std::vector<ScriptLine> read_lod_script(const std::string& file) { return parse_lod_script(read_text_file(file), file); }
 
-namespace {
-struct OperationCounter : rgb::MeshObserver {
-    rgb::RequestStats stats;
-    void vertex_added(const rgb::Mesh&, rgb::VertexId, rgb::VertexId, rgb::VertexId) override { ++stats.splits; }
-    void vertex_removed(const rgb::Mesh&, rgb::VertexId) override { ++stats.removals; }
-};
-}  // namespace
 
 rgb::Dab ScriptRunner::dab(const DabEdit& edit) const {
     rgb::Dab dab;
@@ -175,13 +168,10 @@ rgb::RequestStats ScriptRunner::run(rgb::Mesh& mesh, const ScriptLine& line) {
     if (const auto* dab_line = std::get_if<DabEdit>(&line.edit)) return rgb::apply_dab(mesh, dab(*dab_line));
     const auto& budget = std::get<BudgetEdit>(line.edit);
     rgb::LodSettings settings;
-    settings.excess = rgb::edge_length_excess([](const glm::dvec3&) { return 0.0; });
     settings.max_triangles = budget.triangles;
-    OperationCounter counter;
-    mesh.add_observer(&counter);
-    rgb::LodDriver(mesh, settings).run();
-    mesh.remove_observer(&counter);
-    return counter.stats;
+    rgb::LodDriver driver(mesh, settings);
+    driver.run();
+    return {driver.report().splits, driver.report().removals, driver.report().level_cap_bound};
 }
 
 std::string format_brush_line(const BrushEdit& brush) {

@@ -27,5 +27,7 @@ public:
 
 // Throws TooLarge naming the estimate and the limit when the request would exceed it.
 void check_request_size(const rgb::Mesh& mesh, const rgb::LevelRequest& request, std::size_t limit);
+// The same for a triangle budget, which is its own estimate.
+void check_budget_size(std::size_t budget, std::size_t limit);
 
 }  // namespace rgbio

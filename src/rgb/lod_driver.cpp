@@ -1,134 +1,180 @@
 #include "rgb/lod_driver.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
+#include <tuple>
+
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
-#include "rgb/loop_geometry.h"
-#include "rgb/mesh.h"
 #include "rgb/operators.h"
 #include "rgb/refine.h"
 
 namespace rgb {
 
-EdgeExcess edge_length_excess(std::function<double(const glm::dvec3&)> wanted_length) {
-    return [wanted = std::move(wanted_length)](const Mesh& mesh, HalfedgeId h) {
-        const glm::dvec3 a = displayed_position(mesh, mesh.from_vertex(h));
-        const glm::dvec3 b = displayed_position(mesh, mesh.to_vertex(h));
-        return glm::length(b - a) - wanted(0.5 * (a + b));
-    };
+namespace {
+
+constexpr std::uint64_t kBaseKey = std::numeric_limits<std::uint64_t>::max();
+constexpr int kBandsPerOctave = 2;
+constexpr int kMortonBits = 16;  // per axis
+
+// Bits of x spread to every third position.
+std::uint64_t spread(std::uint64_t x) {
+    x &= 0xffff;
+    x = (x | (x << 32)) & 0x0000ffff0000ffffull;
+    x = (x | (x << 16)) & 0x00ff0000ff0000ffull;
+    x = (x | (x << 8)) & 0xf00f00f00f00f00full;
+    x = (x | (x << 4)) & 0x30c30c30c30c30c3ull;
+    x = (x | (x << 2)) & 0x9249249249249249ull;
+    return x;
 }
 
-EdgeExcess level_excess(std::function<int(const glm::dvec3&)> target_level) {
-    return [target = std::move(target_level)](const Mesh& mesh, HalfedgeId h) {
-        const glm::dvec3 mid = 0.5 * (displayed_position(mesh, mesh.from_vertex(h)) + displayed_position(mesh, mesh.to_vertex(h)));
-        return static_cast<double>(target(mid) - mesh.edge_type(h).level);
-    };
+// The criterion's band: half octaves of the value, biased to 1..65535 (0 means "not wanted").
+std::uint64_t band(double value) {
+    const double b = std::floor(std::log2(value) * kBandsPerOctave);
+    return static_cast<std::uint64_t>(std::clamp(b, -32767.0, 32767.0) + 32768.0);
 }
 
-LodDriver::LodDriver(Mesh& mesh, LodSettings settings) : mesh_(mesh), settings_(std::move(settings)) {
-    for (FaceId f : mesh_.faces())
-        for (int i = 0; i < 3; ++i) {
-            const HalfedgeId h = Mesh::halfedge(f, i);
-            const HalfedgeId o = mesh_.opposite(h);
-            if (!o.valid() || h < o) push_edge(h);  // each edge once
-        }
+
+}  // namespace
+
+double insertion_length(const Mesh& mesh, VertexId a, VertexId b, int) {
+    return glm::distance(mesh.insertion_position(a), mesh.insertion_position(b));
+}
+
+LodDriver::LodDriver(Mesh& mesh, LodSettings settings)
+    : mesh_(mesh), settings_(std::move(settings)), queue_(Lower{this}) {
+    const BaseMesh& base = mesh_.base();
+    glm::dvec3 lo(std::numeric_limits<double>::max()), hi(std::numeric_limits<double>::lowest());
+    for (std::uint32_t v = 0; v < base.num_vertices(); ++v) {
+        lo = glm::min(lo, base.position(v));
+        hi = glm::max(hi, base.position(v));
+    }
+    box_lo_ = lo;
+    box_scale_ = double((1 << kMortonBits) - 1) / glm::max(hi - lo, glm::dvec3(1e-300));
+    // The old detail goes finest first, so that each vertex is removable when its turn comes.
+    std::vector<std::vector<VertexId>> by_level(kMaxLevel + 1);
     for (VertexId v : mesh_.vertices())
-        if (mesh_.level(v) > 0) coarsen_queue_.push({vertex_priority(v), v});
+        if (mesh_.level(v) > 0) by_level[static_cast<std::size_t>(mesh_.level(v))].push_back(v);
+    for (const auto& level : by_level) doomed_.insert(doomed_.end(), level.begin(), level.end());
+    vertex_key_.assign(mesh_.vertex_capacity(), 0);
+    std::fill(vertex_key_.begin(), vertex_key_.begin() + base.num_vertices(), kBaseKey);
     mesh_.add_observer(this);
 }
 
 LodDriver::~LodDriver() { mesh_.remove_observer(this); }
 
-void LodDriver::face_added(const Mesh&, FaceId f) { added_.push_back(f); }
-
-void LodDriver::push_edge(HalfedgeId h) {
-    const EdgeType t = mesh_.edge_type(h);
-    if (t.colour != Colour::Green || t.level >= settings_.max_level) return;
-    const double p = settings_.excess(mesh_, h);
-    if (p > 0) refine_queue_.push({p, mesh_.from_vertex(h), mesh_.to_vertex(h)});
+bool LodDriver::outranks(const Candidate& x, const Candidate& y) const {
+    if (x.key != y.key) return x.key > y.key;
+    // Equal keys (an edge whose value is above its endpoints' keys inherits them): the base-space
+    // point the split would insert decides, which no storage or history changes.
+    const glm::dvec3 px = 0.5 * (mesh_.base_space_position(x.a) + mesh_.base_space_position(x.b));
+    const glm::dvec3 py = 0.5 * (mesh_.base_space_position(y.a) + mesh_.base_space_position(y.b));
+    return std::tie(px.x, px.y, px.z) > std::tie(py.x, py.y, py.z);
 }
 
-void LodDriver::push_face(FaceId f) {
-    // A new face moves its corners (their display level may change), which changes the length of
-    // every edge at those corners: re-queue them all, not only the face's own edges.
-    for (VertexId v : mesh_.face_vertices(f)) {
-        const HalfedgeId start = mesh_.vertex_halfedge(v);
-        HalfedgeId h = start;
-        do {
-            push_edge(h);
-            push_edge(Mesh::prev(h));
-            h = mesh_.ccw_rotated(h);
-        } while (h.valid() && h != start);
-        if (mesh_.level(v) > 0) coarsen_queue_.push({vertex_priority(v), v});
+std::uint64_t LodDriver::edge_key(VertexId a, VertexId b, int level) {
+    const std::uint64_t inherited = std::min(key_of(a), key_of(b));
+    if (inherited == 0) return 0;
+    const double value = settings_.value(mesh_, a, b, level);
+    if (!(value > settings_.threshold)) return 0;
+    if (level >= settings_.max_level) {
+        report_.level_cap_bound = true;
+        return 0;
+    }
+    const glm::dvec3 mid = (0.5 * (mesh_.base_space_position(a) + mesh_.base_space_position(b)) - box_lo_) * box_scale_;
+    std::uint64_t morton = 0;
+    for (int i = 0; i < 3; ++i) morton |= spread(static_cast<std::uint64_t>(std::clamp(mid[i], 0.0, 65535.0))) << (2 - i);
+    return std::min((band(value) << 48) | morton, inherited);
+}
+
+void LodDriver::vertex_added(const Mesh&, VertexId v, VertexId a, VertexId b) {
+    ++report_.splits;
+    added_vertices_.push_back(v);
+    const bool wanted = splitting_ && ((splitting_->a == a && splitting_->b == b) || (splitting_->a == b && splitting_->b == a));
+    const std::uint64_t key = wanted ? splitting_->key : edge_key(a, b, mesh_.level(v) - 1);
+    if (v.idx >= vertex_key_.size()) vertex_key_.resize(std::max<std::size_t>(v.idx + 1, 2 * vertex_key_.size()), 0);
+    vertex_key_[v.idx] = key;
+}
+
+void LodDriver::start_refining() {
+    for (FaceId f : mesh_.faces())
+        for (int i = 0; i < 3; ++i) {
+            const HalfedgeId h = Mesh::halfedge(f, i);
+            const HalfedgeId o = mesh_.opposite(h);
+            if (o.valid() && o < h) continue;  // each edge once
+            const VertexId a = mesh_.from_vertex(h), b = mesh_.to_vertex(h);
+            if (const std::uint64_t key = edge_key(a, b, 0)) queue_.push({key, a, b, 0});
+        }
+}
+
+// The green edges a step created: those inside the faces it added (both sides new) and new boundary
+// edges. An edge on the border of the added faces was there before, and queued then.
+void LodDriver::push_new_edges() {
+    std::sort(added_faces_.begin(), added_faces_.end());
+    added_faces_.erase(std::unique(added_faces_.begin(), added_faces_.end()), added_faces_.end());
+    auto added = [&](FaceId f) { return std::binary_search(added_faces_.begin(), added_faces_.end(), f); };
+    for (FaceId f : added_faces_) {
+        if (!mesh_.is_live(f)) continue;
+        for (int i = 0; i < 3; ++i) {
+            const HalfedgeId h = Mesh::halfedge(f, i);
+            const HalfedgeId o = mesh_.opposite(h);
+            if (o.valid() && (!added(Mesh::face(o)) || o < h)) continue;
+            const EdgeType t = mesh_.edge_type(h);
+            if (t.colour != Colour::Green) continue;
+            const VertexId a = mesh_.from_vertex(h), b = mesh_.to_vertex(h);
+            if (const std::uint64_t key = edge_key(a, b, t.level)) queue_.push({key, a, b, t.level});
+        }
     }
 }
 
-double LodDriver::vertex_priority(VertexId v) const {
-    double worst = -1e300;
-    const HalfedgeId start = mesh_.vertex_halfedge(v);
-    HalfedgeId h = start;
-    do {
-        worst = std::max({worst, settings_.excess(mesh_, h), settings_.excess(mesh_, Mesh::prev(h))});
-        h = mesh_.ccw_rotated(h);
-    } while (h.valid() && h != start);
-    return worst;
-}
-
-bool LodDriver::try_coarsen() {
-    const bool trimming = phase_ == Phase::Trim;
-    while (!coarsen_queue_.empty()) {
-        const VertexEntry top = coarsen_queue_.top();
-        if (trimming ? mesh_.num_faces() <= settings_.max_triangles : top.priority > 0) return false;
-        coarsen_queue_.pop();
-        if (!mesh_.is_live(top.v) || !can_remove_vertex(mesh_, top.v)) continue;
-        // Entries are not updated in place: re-check what the neighbourhood says now.
-        if (!trimming && vertex_priority(top.v) > 0) continue;
-        remove_vertex(mesh_, top.v);
-        return true;
-    }
-    return false;
-}
-
-bool LodDriver::try_refine() {
-    while (!refine_queue_.empty() && mesh_.num_faces() < settings_.max_triangles) {
-        const EdgeEntry top = refine_queue_.top();
-        refine_queue_.pop();
+bool LodDriver::split_next() {
+    while (!queue_.empty()) {
+        const Candidate top = queue_.top();
+        queue_.pop();
+        // Stale entries: the edge was split as another's dependency.
         const HalfedgeId h = mesh_.find_edge(top.a, top.b);
-        if (!h.valid() || mesh_.edge_type(h).colour != Colour::Green) continue;
-        if (settings_.excess(mesh_, h) <= 0) continue;
-        refine_edge(mesh_, top.a, top.b);
+        if (!h.valid()) continue;
+        const EdgeType t = mesh_.edge_type(h);
+        if (t.colour != Colour::Green || t.level != top.level) continue;
+        added_faces_.clear();
+        added_vertices_.clear();
+        splitting_ = &top;
+        refine_edge(mesh_, h);
+        splitting_ = nullptr;
+        if (mesh_.num_faces() > settings_.max_triangles) {
+            // Over budget: the split and what it needed go again, which leaves the mesh of the
+            // previous key (removal normalises, so it is that mesh exactly).
+            for (auto it = added_vertices_.rbegin(); it != added_vertices_.rend(); ++it)
+                if (mesh_.is_live(*it)) remove_with_dependents(mesh_, *it);
+            report_.budget_bound = true;
+            queue_ = decltype(queue_)(Lower{this});
+            return false;
+        }
+        push_new_edges();
+        ++steps_;
         return true;
     }
     return false;
 }
 
 bool LodDriver::step() {
-    added_.clear();
-    bool changed = false;
-    while (!changed && phase_ != Phase::Done) {
-        switch (phase_) {
-            case Phase::Coarsen: changed = try_coarsen(); break;
-            case Phase::Refine: changed = try_refine(); break;
-            case Phase::Trim: changed = try_coarsen(); break;
-            case Phase::Done: break;
+    if (done_) return false;
+    if (!refining_) {
+        if (!doomed_.empty()) {
+            const VertexId v = doomed_.back();
+            doomed_.pop_back();
+            added_faces_.clear();
+            remove_vertex(mesh_, v);
+            return true;
         }
-        if (changed) break;
-        if (phase_ == Phase::Trim) {
-            phase_ = Phase::Done;
-        } else {
-            phase_ = phase_ == Phase::Coarsen ? Phase::Refine : Phase::Trim;
-            if (phase_ == Phase::Trim) {
-                // Over budget: every removable vertex is a candidate, finest-criterion first.
-                coarsen_queue_ = {};
-                for (VertexId v : mesh_.vertices())
-                    if (mesh_.level(v) > 0) coarsen_queue_.push({vertex_priority(v), v});
-            }
-        }
+        refining_ = true;
+        start_refining();
     }
-    for (FaceId f : added_)
-        if (mesh_.is_live(f)) push_face(f);
-    if (changed) ++steps_;
-    return changed;
+    if (split_next()) return true;
+    done_ = true;
+    return false;
 }
 
 std::size_t LodDriver::run(std::size_t max_steps) {

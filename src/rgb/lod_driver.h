@@ -1,13 +1,19 @@
 #pragma once
-// The level-of-detail driver of spec §3.3: two priority queues (edges too coarse for the criterion,
-// vertices finer than needed) and a triangle budget. It runs one operation per step, so a caller can
-// interleave it with drawing, show progress, or cancel between steps.
+// Level of detail by a criterion under a triangle budget (spec §3.3), with a canonical result.
 //
-// Unlike the plugin's interleaved loop, the work runs in three phases: remove what the criterion
-// finds too fine, then refine what it finds too coarse (until the budget), then remove the finest
-// vertices while over budget. A removal makes edges longer, so interleaving can split and remove the
-// same vertex forever; phases always end.
+// Every potential split (a green edge of the hierarchy, named by the vertex it would insert) gets a
+// key from the hierarchy alone: the band of its criterion value (half octaves), then the Morton order
+// of its base-space midpoint; a key never exceeds the keys of the edge's endpoints, so no vertex
+// outranks a vertex it needs. A run means: the minimal RGB mesh holding every wanted vertex whose key
+// is above a threshold, with the lowest threshold that keeps the mesh within the budget. So the result
+// depends on neither the mesh's history nor its storage, and a budget stops at a whole band or at a
+// spatially coherent part of one, never a lace of isolated triangles.
+//
+// A run starts by removing what the mesh holds above the base (finest first), then splits from the
+// highest key down, one split (with the splits it depends on) per step, O(log n) each, so a caller can
+// interleave steps with drawing or cancel between them.
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <queue>
 #include <vector>
@@ -15,70 +21,84 @@
 #include <glm/vec3.hpp>
 
 #include "rgb/handles.h"
+#include "rgb/mesh.h"
 #include "rgb/observer.h"
 
 namespace rgb {
 
-class Mesh;
+// What orders the splits: a value of the hierarchy edge (a, b) of the uniform level `level`. It must
+// depend on the edge alone (the hierarchy's positions, never the current mesh around it).
+using SplitValue = std::function<double(const Mesh&, VertexId a, VertexId b, int level)>;
 
-// How much an edge is coarser than wanted: positive means "split it", zero or negative means it is
-// fine enough. Edges are given by their endpoints (displayed positions available through the mesh).
-using EdgeExcess = std::function<double(const Mesh&, HalfedgeId)>;
-
-// Edge length minus the length wanted at the edge's midpoint.
-EdgeExcess edge_length_excess(std::function<double(const glm::dvec3&)> wanted_length);
-// Target level at the edge's midpoint minus the edge's level.
-EdgeExcess level_excess(std::function<int(const glm::dvec3&)> target_level);
+// The edge's length between its endpoints' insertion positions (each vertex where it entered the
+// hierarchy).
+double insertion_length(const Mesh& mesh, VertexId a, VertexId b, int level);
 
 struct LodSettings {
-    EdgeExcess excess;
+    SplitValue value = insertion_length;
+    double threshold = 0.0;  // splits whose value is not above it are not wanted
     std::size_t max_triangles = 1'000'000;
-    int max_level = 8;  // edges of this level are never split
+    int max_level = kMaxLevel;  // edges of this level are never split
+};
+
+struct LodReport {
+    std::size_t splits = 0, removals = 0;
+    bool budget_bound = false;     // a wanted split was left out to stay within the budget
+    bool level_cap_bound = false;  // a wanted split was left out at max_level
 };
 
 class LodDriver : private MeshObserver {
-    enum class Phase { Coarsen, Refine, Trim, Done };
-
 public:
     LodDriver(Mesh& mesh, LodSettings settings);
     ~LodDriver() override;
     LodDriver(const LodDriver&) = delete;
     LodDriver& operator=(const LodDriver&) = delete;
 
-    // One split or removal (with what it entails). Returns false once nothing is left to do.
+    // One removal of the old detail, or one wanted split with what it depends on. Returns false once
+    // nothing is left to do.
     bool step();
     // Steps until done or `max_steps` steps were made; returns the number made.
     std::size_t run(std::size_t max_steps = static_cast<std::size_t>(-1));
-    bool done() const { return phase_ == Phase::Done; }
+    bool done() const { return done_; }
+    // Splits made for wanted vertices (their dependencies included in the report's counts).
     std::size_t steps() const { return steps_; }
-    // Queue sizes, including stale entries (for progress display).
-    std::size_t pending() const { return refine_queue_.size() + coarsen_queue_.size(); }
+    const LodReport& report() const { return report_; }
+    // Candidate splits still queued, stale ones included (for progress display).
+    std::size_t pending() const { return queue_.size() + doomed_.size(); }
 
 private:
-    struct EdgeEntry {
-        double priority;
+    struct Candidate {
+        std::uint64_t key;
         VertexId a, b;
-        bool operator<(const EdgeEntry& o) const { return priority < o.priority; }  // max-heap
+        int level;
     };
-    struct VertexEntry {
-        double priority;
-        VertexId v;
-        bool operator<(const VertexEntry& o) const { return priority > o.priority; }  // min-heap
+    struct Lower {
+        const LodDriver* driver;
+        bool operator()(const Candidate& x, const Candidate& y) const { return driver->outranks(y, x); }
     };
-    void face_added(const Mesh&, FaceId f) override;
-    void push_edge(HalfedgeId h);
-    void push_face(FaceId f);
-    double vertex_priority(VertexId v) const;
-    bool try_coarsen();
-    bool try_refine();
+    void vertex_added(const Mesh&, VertexId v, VertexId a, VertexId b) override;
+    void vertex_removed(const Mesh&, VertexId) override { ++report_.removals; }
+    void face_added(const Mesh&, FaceId f) override { added_faces_.push_back(f); }
+
+    bool outranks(const Candidate& x, const Candidate& y) const;
+    std::uint64_t edge_key(VertexId a, VertexId b, int level);
+    std::uint64_t key_of(VertexId v) const { return v.idx < vertex_key_.size() ? vertex_key_[v.idx] : 0; }
+    void push_new_edges();
+    void start_refining();
+    bool split_next();
 
     Mesh& mesh_;
     LodSettings settings_;
-    std::priority_queue<EdgeEntry> refine_queue_;
-    std::priority_queue<VertexEntry> coarsen_queue_;
-    std::vector<FaceId> added_;
-    Phase phase_ = Phase::Coarsen;
+    glm::dvec3 box_lo_, box_scale_;  // base-space box, for Morton codes
+    std::vector<VertexId> doomed_;   // old detail, coarsest first (removed from the back)
+    std::vector<std::uint64_t> vertex_key_;
+    std::priority_queue<Candidate, std::vector<Candidate>, Lower> queue_;
+    const Candidate* splitting_ = nullptr;
+    std::vector<FaceId> added_faces_;
+    std::vector<VertexId> added_vertices_;
+    LodReport report_;
     std::size_t steps_ = 0;
+    bool refining_ = false, done_ = false;
 };
 
 }  // namespace rgb

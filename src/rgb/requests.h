@@ -52,9 +52,11 @@ struct LevelRequest {
 struct RequestStats {
     std::size_t splits = 0;
     std::size_t removals = 0;
+    bool level_cap_bound = false;  // wanted detail was left out at the maximum level
     RequestStats& operator+=(const RequestStats& o) {
         splits += o.splits;
         removals += o.removals;
+        level_cap_bound = level_cap_bound || o.level_cap_bound;
         return *this;
     }
 };

@@ -3,16 +3,22 @@
 #include <algorithm>
 #include <filesystem>
 #include <set>
+#include <tuple>
 
 #include <sys/resource.h>
 #include <unistd.h>
 
 #include <gtest/gtest.h>
 
+#include <glm/geometric.hpp>
+
 #include "cli/dispatch.h"
 #include "io/obj_reader.h"
 #include "obj_test_support.h"
+#include "rgb/mesh.h"
 #include "scratch_folder.h"
+#include "support/request_oracle.h"
+#include "support/uniform_loop_oracle.h"
 
 namespace rgbio {
 namespace {
@@ -122,27 +128,64 @@ TEST_F(CliCommands, RefineThenLevelZeroGivesBackTheInput) {
     EXPECT_EQ(triangles_by_position(base), triangles_by_position(input));
 }
 
-TEST_F(CliCommands, ApplyRunsTheScriptLikeRefine) {
-    write("script.txt", "# comment\nlevel 2\n\nlevel 4 sphere 1 0 0 0.5\n");
-    ASSERT_EQ(run({"apply", path("octahedron.obj"), path("script.txt"), "-o", path("applied.obj")}), 0);
-    ASSERT_EQ(run({"refine", path("octahedron.obj"), "-o", path("step.obj"), "--level", "2"}), 0);
-    ASSERT_EQ(run({"refine", path("step.obj"), "-o", path("refined.obj"), "--level", "4", "--sphere", "1,0,0,0.5"}), 0);
-    const LoadedMesh applied = read_obj_file(path("applied.obj"));
-    const LoadedMesh refined = read_obj_file(path("refined.obj"));
-    EXPECT_EQ(triangles_by_position(applied), triangles_by_position(refined));
+// Base-space positions of a saved adaptive mesh's vertices (where each sits under midpoint
+// subdivision of the base), sorted.
+std::vector<glm::dvec3> base_space_vertices(const LoadedMesh& mesh) {
+    std::vector<glm::dvec3> out;
+    for (rgb::VertexId v : mesh.adaptive->vertices()) out.push_back(mesh.adaptive->base_space_position(v));
+    std::sort(out.begin(), out.end(), [](const glm::dvec3& a, const glm::dvec3& b) { return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z); });
+    return out;
 }
 
-// Every operation on a closed mesh changes the triangle count by exactly two, and the driver refines
-// until the count reaches the budget and trims back down to it, so an even budget is met exactly.
-TEST_F(CliCommands, ApplyBudgetMeetsTheTriangleCountExactly) {
-    write("script.txt", "budget 500\n");
-    ASSERT_EQ(run({"apply", path("octahedron.obj"), path("script.txt"), "-o", path("budget.obj")}), 0);
-    const LoadedMesh fine = read_obj_file(path("budget.obj"));
-    ASSERT_TRUE(fine.adaptive);
-    EXPECT_EQ(fine.triangles.size(), 500u);
-    write("down.txt", "level 4\nbudget 100\n");
-    ASSERT_EQ(run({"apply", path("octahedron.obj"), path("down.txt"), "-o", path("down.obj")}), 0);
-    EXPECT_EQ(read_obj_file(path("down.obj")).triangles.size(), 100u);
+testing::AssertionResult same_points(std::vector<glm::dvec3> a, std::vector<glm::dvec3> b) {
+    auto less = [](const glm::dvec3& p, const glm::dvec3& q) { return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z); };
+    std::sort(a.begin(), a.end(), less);
+    std::sort(b.begin(), b.end(), less);
+    if (a.size() != b.size()) return testing::AssertionFailure() << a.size() << " vs " << b.size() << " vertices";
+    for (std::size_t i = 0; i < a.size(); ++i)
+        if (glm::distance(a[i], b[i]) > 1e-12) return testing::AssertionFailure() << "vertex " << i << " differs";
+    return testing::AssertionSuccess();
+}
+
+// The script's vertex set is the one the meaning of its requests gives (computed by the independent
+// request model on the uniform Loop oracle), and refine one request at a time gives the same file.
+TEST_F(CliCommands, ApplyRunsTheScriptByItsMeaning) {
+    write("script.txt", "# comment\nlevel 2\n\nlevel 4 sphere 1 0 0 0.5\n");
+    ASSERT_EQ(run({"apply", path("octahedron.obj"), path("script.txt"), "-o", path("applied.obj")}), 0);
+    const LoadedMesh input = read_obj_file(path("octahedron.obj"));
+    const rgbtest::UniformLoopOracle oracle(input.positions, input.triangles, 4);
+    const rgbtest::RequestOracle meaning(oracle);
+    std::set<rgbtest::Identity> expected = meaning.base();
+    expected = meaning.refined(expected, 2, {glm::dvec3(0.0), 1e9});
+    expected = meaning.refined(expected, 4, {glm::dvec3(1, 0, 0), 0.5});
+    std::vector<glm::dvec3> expected_points;
+    for (rgbtest::Identity id : expected) expected_points.push_back(meaning.base_space(id));
+    const LoadedMesh applied = read_obj_file(path("applied.obj"));
+    ASSERT_TRUE(applied.adaptive);
+    EXPECT_TRUE(same_points(base_space_vertices(applied), expected_points));
+    ASSERT_EQ(run({"refine", path("octahedron.obj"), "-o", path("step.obj"), "--level", "2"}), 0);
+    ASSERT_EQ(run({"refine", path("step.obj"), "-o", path("refined.obj"), "--level", "4", "--sphere", "1,0,0,0.5"}), 0);
+    EXPECT_EQ(triangles_by_position(applied), triangles_by_position(read_obj_file(path("refined.obj"))));
+}
+
+// A budget means the largest mesh of the driver's canonical order within it: never more triangles,
+// the same mesh whatever the file held before, and a smaller budget's vertices are among a larger's.
+TEST_F(CliCommands, ApplyBudgetStaysWithinAndIgnoresWhatCameBefore) {
+    write("small.txt", "budget 100\n");
+    write("large.txt", "budget 500\n");
+    write("after.txt", "level 4\nlevel 1 sphere 1 0 0 0.3\nbudget 500\n");
+    ASSERT_EQ(run({"apply", path("octahedron.obj"), path("small.txt"), "-o", path("small.obj")}), 0);
+    ASSERT_EQ(run({"apply", path("octahedron.obj"), path("large.txt"), "-o", path("large.obj")}), 0);
+    ASSERT_EQ(run({"apply", path("octahedron.obj"), path("after.txt"), "-o", path("after.obj")}), 0);
+    const LoadedMesh small = read_obj_file(path("small.obj")), large = read_obj_file(path("large.obj"));
+    ASSERT_TRUE(small.adaptive && large.adaptive);
+    EXPECT_LE(small.triangles.size(), 100u);
+    EXPECT_LE(large.triangles.size(), 500u);
+    EXPECT_GE(large.triangles.size(), 450u);  // a step adds a handful of triangles, not dozens
+    EXPECT_EQ(triangles_by_position(large), triangles_by_position(read_obj_file(path("after.obj"))));
+    const std::vector<glm::dvec3> few = base_space_vertices(small), many = base_space_vertices(large);
+    auto less = [](const glm::dvec3& p, const glm::dvec3& q) { return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z); };
+    EXPECT_TRUE(std::includes(many.begin(), many.end(), few.begin(), few.end(), less));
     write("bad.txt", "budget lots\n");
     EXPECT_EQ(run({"apply", path("octahedron.obj"), path("bad.txt"), "-o", path("bad.obj")}), 2);
 }

@@ -1,64 +1,227 @@
-// The budget/criterion LOD driver (spec §3.3): it terminates, keeps the invariants, meets the
-// criterion where the budget allows, and meets an even budget exactly on a closed mesh (every
-// split and every removal changes the triangle count by two).
+// The criterion/budget LOD driver (spec §3.3) and what a run means (lod_driver.h): a criterion run
+// gives the closure of the wanted vertices, computed independently on the uniform Loop oracle; budget
+// results stay within the budget, are nested as the budget grows, ignore the mesh's history and
+// storage, and stop at the level cap saying so; the finest faces of a budget form a few solid patches.
+#include <algorithm>
+#include <map>
+#include <set>
+
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
 #include "rgb/invariants.h"
 #include "rgb/lod_driver.h"
-#include "rgb/loop_geometry.h"
 #include "rgb/mesh.h"
+#include "rgb/requests.h"
+#include "support/identity_tracker.h"
+#include "support/request_oracle.h"
+#include "support/same_mesh.h"
 #include "support/test_meshes.h"
 
+namespace rgbtest {
 namespace {
 
-using namespace rgb;
+constexpr int kOracleLevels = 4;
 
-// Edges of this level or finer never get split, so they are exempt from the criterion.
-constexpr int kMaxLevel = 5;
+// The vertices a criterion run with `threshold` on insertion lengths wants, by the meaning's own
+// rule on oracle identities: a midpoint is wanted if its edge (between its endpoints' positions at
+// their own levels) is longer than the threshold and both endpoints are wanted (base vertices are);
+// edges of level `cap` and finer are never split.
+std::set<Identity> wanted_vertices(const UniformLoopOracle& oracle, double threshold, int cap) {
+    std::set<Identity> wanted;
+    for (Identity i = 0; i < oracle.num_identities(0); ++i) wanted.insert(i);
+    for (int j = 0; j < cap; ++j)
+        for (const IdentityTriangle& t : oracle.faces(j))
+            for (int i = 0; i < 3; ++i) {
+                const Identity x = t[i], y = t[(i + 1) % 3];
+                const double length = glm::distance(oracle.position(oracle.level(x), x), oracle.position(oracle.level(y), y));
+                if (length > threshold && wanted.count(x) && wanted.count(y)) wanted.insert(*oracle.midpoint(x, y));
+            }
+    return wanted;
+}
 
-LodSettings lengths(double wanted_left, double wanted_right, std::size_t budget) {
-    LodSettings s;
-    s.excess = edge_length_excess([=](const glm::dvec3& p) { return p.x < 0 ? wanted_left : wanted_right; });
-    s.max_triangles = budget;
-    s.max_level = kMaxLevel;
+// A threshold near the given share of the edge lengths that no length comes close to, so that
+// rounding differences between the core and the oracle cannot decide an edge.
+double clear_threshold(const UniformLoopOracle& oracle, int cap, double share) {
+    std::vector<double> lengths;
+    for (int j = 0; j < cap; ++j)
+        for (const IdentityTriangle& t : oracle.faces(j))
+            for (int i = 0; i < 3; ++i) {
+                const Identity x = t[i], y = t[(i + 1) % 3];
+                lengths.push_back(glm::distance(oracle.position(oracle.level(x), x), oracle.position(oracle.level(y), y)));
+            }
+    std::sort(lengths.begin(), lengths.end());
+    std::size_t best = 0;
+    double best_gap = -1.0;
+    const auto target = static_cast<std::size_t>(share * static_cast<double>(lengths.size()));
+    for (std::size_t k = target; k + 1 < lengths.size() && k < target + 200; ++k)
+        if (lengths[k + 1] - lengths[k] > best_gap) {
+            best_gap = lengths[k + 1] - lengths[k];
+            best = k;
+        }
+    const double threshold = 0.5 * (lengths[best] + lengths[best + 1]);
+    EXPECT_GT(best_gap, 1e-9 * threshold);
+    return threshold;
+}
+
+std::set<Identity> vertex_set(const rgb::Mesh& mesh, const IdentityTracker& ids) {
+    std::set<Identity> s;
+    for (rgb::VertexId v : mesh.vertices()) s.insert(ids.identity(v));
     return s;
 }
 
-TEST(LodDriver, MeetsTheCriterionWithinTheBudget) {
-    Mesh mesh = rgbtest::make_rgb_mesh(rgbtest::icosahedron());
-    LodDriver driver(mesh, lengths(0.15, 0.6, 1'000'000));
+rgb::LodReport run_budget(rgb::Mesh& mesh, std::size_t budget, int cap = rgb::kMaxLevel) {
+    rgb::LodSettings settings;
+    settings.max_triangles = budget;
+    settings.max_level = cap;
+    rgb::LodDriver driver(mesh, settings);
     driver.run();
     EXPECT_TRUE(driver.done());
-    EXPECT_TRUE(check_invariants(mesh).ok());
-    for (FaceId f : mesh.faces())
-        for (int i = 0; i < 3; ++i) {
-            const HalfedgeId h = Mesh::halfedge(f, i);
-            const EdgeType t = mesh.edge_type(h);
-            if (t.colour == Colour::Green && t.level < kMaxLevel) {
-                EXPECT_LE(lengths(0.15, 0.6, 0).excess(mesh, h), 0.0) << "edge of level " << t.level;
-            }
-        }
+    return driver.report();
 }
 
-// When every edge of the base mesh is already shorter than wanted, the driver removes everything.
-TEST(LodDriver, CoarsensBackToTheBaseWhenNothingNeedsDetail) {
-    Mesh mesh = rgbtest::make_rgb_mesh(rgbtest::icosahedron());
+class LodDriverMeaning : public testing::TestWithParam<TestMesh> {};
+
+TEST_P(LodDriverMeaning, ACriterionRunIsTheClosureOfTheWantedVertices) {
+    const TestMesh& base = GetParam();
+    const UniformLoopOracle oracle(base.positions, base.triangles, kOracleLevels);
+    const RequestOracle meaning(oracle);
+    for (double share : {0.3, 0.6, 0.85}) {
+        const double threshold = clear_threshold(oracle, kOracleLevels, share);
+        rgb::Mesh mesh = make_rgb_mesh(base);
+        IdentityTracker ids(mesh, oracle);
+        rgb::LodSettings settings;
+        settings.threshold = threshold;
+        settings.max_level = kOracleLevels;
+        rgb::LodDriver driver(mesh, settings);
+        driver.run();
+        EXPECT_FALSE(driver.report().budget_bound);
+        EXPECT_EQ(vertex_set(mesh, ids), meaning.closure(wanted_vertices(oracle, threshold, kOracleLevels))) << "share " << share;
+        EXPECT_TRUE(rgb::check_invariants(mesh).ok());
+        EXPECT_TRUE(rgb::check_normal_form(mesh).ok());
+    }
+}
+
+TEST_P(LodDriverMeaning, BudgetsStayWithinAndGrowByAddingVertices) {
+    const TestMesh& base = GetParam();
+    constexpr int kCap = 5;
+    const UniformLoopOracle oracle(base.positions, base.triangles, kCap);
+    std::set<Identity> previous;
+    for (std::size_t times : {2, 4, 9, 20, 45}) {
+        const std::size_t budget = times * base.triangles.size();
+        rgb::Mesh mesh = make_rgb_mesh(base);
+        IdentityTracker ids(mesh, oracle);
+        const rgb::LodReport report = run_budget(mesh, budget, kCap);
+        EXPECT_LE(mesh.num_faces(), budget);
+        EXPECT_TRUE(report.budget_bound);
+        const std::set<Identity> now = vertex_set(mesh, ids);
+        EXPECT_TRUE(std::includes(now.begin(), now.end(), previous.begin(), previous.end())) << "budget " << budget;
+        EXPECT_GT(now.size(), previous.size());
+        previous = now;
+        EXPECT_TRUE(rgb::check_invariants(mesh).ok());
+        // The result is its own budget's result: nothing else fits in the triangles it has.
+        rgb::Mesh again = make_rgb_mesh(base);
+        run_budget(again, mesh.num_faces(), kCap);
+        EXPECT_TRUE(same_mesh(mesh, again)) << "budget " << budget;
+    }
+}
+
+TEST_P(LodDriverMeaning, BudgetResultsIgnoreHistoryAndStorage) {
+    const TestMesh& base = GetParam();
+    rgb::Mesh fresh = make_rgb_mesh(base);
+    run_budget(fresh, 700);
+    rgb::Mesh refined = make_rgb_mesh(base);
+    rgb::set_level(refined, 3, rgb::Sphere{base.positions[0], 0.7 * bounding_box_diagonal(base.positions)});
+    run_budget(refined, 700);
+    EXPECT_TRUE(same_mesh(fresh, refined));
+    rgb::Mesh coarser = make_rgb_mesh(base);
+    run_budget(coarser, 300);
+    run_budget(coarser, 700);
+    EXPECT_TRUE(same_mesh(fresh, coarser));
+    for (const TestMesh& stored : {with_rotated_corners(base), with_reversed_faces(base)}) {
+        rgb::Mesh other = make_rgb_mesh(stored);
+        run_budget(other, 700);
+        EXPECT_TRUE(same_mesh(fresh, other)) << stored.name;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Meshes, LodDriverMeaning,
+                         testing::Values(icosahedron(), fan(7), grid(3, 2), perforated_slab(7, 7, 3)),
+                         [](const auto& info) { return info.param.name; });
+
+TEST(LodDriver, StopsAtTheLevelCapAndSaysSo) {
+    rgb::Mesh mesh = make_rgb_mesh(icosahedron());
+    const rgb::LodReport capped = run_budget(mesh, 1'000'000, 2);
+    EXPECT_TRUE(capped.level_cap_bound);
+    EXPECT_FALSE(capped.budget_bound);
+    EXPECT_EQ(mesh.num_faces(), 20u * 16u);  // uniform level 2: every edge is wanted
+    EXPECT_EQ(mesh.max_vertex_level(), 2);
+    const rgb::LodReport free = run_budget(mesh, 1000);
+    EXPECT_FALSE(free.level_cap_bound);
+    EXPECT_TRUE(free.budget_bound);
+}
+
+TEST(LodDriver, CoarsensBackToTheBaseWhenNothingIsWanted) {
+    rgb::Mesh mesh = make_rgb_mesh(icosahedron());
     const std::size_t base = mesh.num_faces();
-    LodDriver(mesh, lengths(0.15, 0.3, 1'000'000)).run();
+    run_budget(mesh, 2000);
     EXPECT_GT(mesh.num_faces(), base);
-    LodDriver(mesh, lengths(10.0, 10.0, 1'000'000)).run();
-    EXPECT_TRUE(check_invariants(mesh).ok());
+    rgb::LodSettings settings;
+    settings.threshold = 10.0;  // longer than any edge of the unit icosahedron
+    rgb::LodDriver driver(mesh, settings);
+    driver.run();
+    EXPECT_EQ(driver.steps(), 0u);
+    EXPECT_GT(driver.report().removals, 0u);
     EXPECT_EQ(mesh.num_faces(), base);
     EXPECT_EQ(mesh.max_vertex_level(), 0);
+    EXPECT_TRUE(rgb::check_invariants(mesh).ok());
 }
 
-TEST(LodDriver, MeetsAnEvenBudgetExactly) {
-    Mesh mesh = rgbtest::make_rgb_mesh(rgbtest::icosahedron());
-    LodDriver(mesh, lengths(0.0, 0.0, 1000)).run();
-    EXPECT_EQ(mesh.num_faces(), 1000u);
-    LodDriver(mesh, lengths(0.0, 0.0, 300)).run();
-    EXPECT_EQ(mesh.num_faces(), 300u);
-    EXPECT_TRUE(check_invariants(mesh).ok());
+// The faces of the finest level a budget reaches, grouped by shared edges.
+std::vector<std::size_t> finest_patches(const rgb::Mesh& mesh) {
+    int finest = 0;
+    for (rgb::FaceId f : mesh.faces()) finest = std::max(finest, mesh.level(f));
+    std::map<std::uint32_t, bool> seen;
+    std::vector<std::size_t> sizes;
+    for (rgb::FaceId f : mesh.faces()) {
+        if (mesh.level(f) != finest || seen[f.idx]) continue;
+        std::vector<rgb::FaceId> stack{f};
+        seen[f.idx] = true;
+        std::size_t size = 0;
+        while (!stack.empty()) {
+            const rgb::FaceId g = stack.back();
+            stack.pop_back();
+            ++size;
+            for (int i = 0; i < 3; ++i) {
+                const rgb::HalfedgeId o = mesh.opposite(rgb::Mesh::halfedge(g, i));
+                if (!o.valid()) continue;
+                const rgb::FaceId n = rgb::Mesh::face(o);
+                if (mesh.level(n) == finest && !seen[n.idx]) {
+                    seen[n.idx] = true;
+                    stack.push_back(n);
+                }
+            }
+        }
+        sizes.push_back(size);
+    }
+    return sizes;
+}
+
+// On a regular mesh every edge of a level is about as long as the next: a budget between two levels
+// must still refine solid regions, not a lace of isolated triangles.
+TEST(LodDriver, BudgetsBetweenLevelsRefineSolidPatches) {
+    for (std::size_t budget : {900, 1500, 3000}) {
+        rgb::Mesh mesh = make_rgb_mesh(icosahedron());
+        run_budget(mesh, budget);
+        const std::vector<std::size_t> patches = finest_patches(mesh);
+        std::size_t total = 0;
+        for (std::size_t s : patches) total += s;
+        SCOPED_TRACE("budget " + std::to_string(budget));
+        // A lace would be hundreds of patches of one or two splits each.
+        EXPECT_LE(patches.size(), 4u);
+        EXPECT_GE(total, mesh.num_faces() / 10);
+    }
 }
 
 }  // namespace
+}  // namespace rgbtest

@@ -1,0 +1,81 @@
+#!/usr/bin/env bash
+# Timed CLI benchmark of the selective-refinement engine on the paths users take, against OpenMesh's
+# LoopT where there is a twin. Every pair runs interleaved, REPEAT times, and the medians are compared,
+# so that a busy machine slows both sides alike.
+#
+#   tests/bench/engine_speed.sh [BUILD_DIR] [REPEAT]
+#
+# Prints one line per measure; the README's "Speed" table is copied from it.
+set -euo pipefail
+
+build=${1:-build}
+repeat=${2:-5}
+rgbsub=$build/rgbsub
+make_mesh=$build/tests/bench/make_bench_mesh
+openmesh=$build/tests/bench/openmesh_refine
+work=$(mktemp -d "${TMPDIR:-/tmp}/rgbsub_engine_speed.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+
+for tool in "$rgbsub" "$make_mesh" "$openmesh"; do
+    [[ -x $tool ]] || { echo "engine_speed: $tool is missing (build the project first)" >&2; exit 1; }
+done
+
+now() { date +%s.%N; }
+median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
+# The engine milliseconds and splits of line N of an `apply --timings` report.
+engine_ms() { sed -n "${2}p" "$1" | sed -E 's/.*: ([0-9.e+-]+) ms, ([0-9]+) splits.*/\1/'; }
+engine_splits() { sed -n "${2}p" "$1" | sed -E 's/.*: ([0-9.e+-]+) ms, ([0-9]+) splits.*/\2/'; }
+triangles_of() { grep -c '^f ' "$1"; }
+
+"$make_mesh" 64 48 "$work/torus6k.obj"      # 6,144 triangles
+"$make_mesh" 204 128 "$work/torus52k.obj"   # 52,224 triangles
+"$make_mesh" 640 640 "$work/torus819k.obj"  # 819,200 triangles
+
+echo "level 4" > "$work/level4.txt"
+echo "level 4 sphere 0 0 0 1000" > "$work/level4_sphere.txt"
+echo "level 3" > "$work/level3.txt"
+echo "budget 1500000" > "$work/budget.txt"
+printf 'level 1 sphere 100 100 100 0.5\nlevel 1 sphere 100 100 100 0.5\n' > "$work/miss.txt"
+
+# 1. The whole process: rgbsub refine --level 4 against OpenMesh's read, LoopT, write.
+: > "$work/refine.s"; : > "$work/openmesh.s"
+for _ in $(seq "$repeat"); do
+    t0=$(now); "$rgbsub" refine "$work/torus6k.obj" -o "$work/out.obj" --level 4; t1=$(now)
+    "$openmesh" "$work/torus6k.obj" "$work/om.obj" 4 > "$work/om.txt"; t2=$(now)
+    echo "$t1 - $t0" | bc -l >> "$work/refine.s"
+    echo "$t2 - $t1" | bc -l >> "$work/openmesh.s"
+done
+refine_s=$(median < "$work/refine.s"); openmesh_s=$(median < "$work/openmesh.s")
+printf 'whole process, 6k -> %d triangles: rgbsub refine %.3f s, OpenMesh %.3f s, ratio %.2f\n' \
+    "$(triangles_of "$work/out.obj")" "$refine_s" "$openmesh_s" "$(echo "$refine_s / $openmesh_s" | bc -l)"
+
+# 2. The engine per new vertex: apply --timings against OpenMesh's in-process build + LoopT + extraction.
+: > "$work/engine.ns"; : > "$work/om.ns"; : > "$work/general.ns"
+for _ in $(seq "$repeat"); do
+    "$rgbsub" apply "$work/torus6k.obj" "$work/level4.txt" -o "$work/out.obj" --timings > "$work/t.txt"
+    echo "$(engine_ms "$work/t.txt" 1) * 1e6 / $(engine_splits "$work/t.txt" 1)" | bc -l >> "$work/engine.ns"
+    "$openmesh" "$work/torus6k.obj" "$work/om.obj" 4 | sed -E 's/.* ([0-9.]+) ns per new vertex.*/\1/' >> "$work/om.ns"
+    "$rgbsub" apply "$work/torus6k.obj" "$work/level4_sphere.txt" -o "$work/out.obj" --timings > "$work/t.txt"
+    echo "$(engine_ms "$work/t.txt" 1) * 1e6 / $(engine_splits "$work/t.txt" 1)" | bc -l >> "$work/general.ns"
+done
+engine=$(median < "$work/engine.ns"); om=$(median < "$work/om.ns"); general=$(median < "$work/general.ns")
+printf 'engine per new vertex, level 4: rgbsub %.0f ns, OpenMesh %.0f ns, ratio %.2f\n' "$engine" "$om" "$(echo "$engine / $om" | bc -l)"
+printf 'general path (level 4 in a sphere holding the mesh) per split: %.0f ns, %.2fx the whole-mesh path\n' \
+    "$general" "$(echo "$general / $engine" | bc -l)"
+
+# 3. A budget against a uniform level, whole process, per output triangle.
+: > "$work/budget.s"; : > "$work/level3.s"
+for _ in $(seq "$repeat"); do
+    t0=$(now); "$rgbsub" apply "$work/torus52k.obj" "$work/budget.txt" -o "$work/budget.obj"; t1=$(now)
+    "$rgbsub" apply "$work/torus52k.obj" "$work/level3.txt" -o "$work/level3.obj"; t2=$(now)
+    echo "($t1 - $t0) / $(triangles_of "$work/budget.obj")" | bc -l >> "$work/budget.s"
+    echo "($t2 - $t1) / $(triangles_of "$work/level3.obj")" | bc -l >> "$work/level3.s"
+done
+budget=$(median < "$work/budget.s"); level3=$(median < "$work/level3.s")
+printf 'budget 1500000 on 52k triangles: %.0f ns per output triangle, level 3 %.0f ns, ratio %.2f\n' \
+    "$(echo "$budget * 1e9" | bc -l)" "$(echo "$level3 * 1e9" | bc -l)" "$(echo "$budget / $level3" | bc -l)"
+
+# 4. A region request that touches nothing, on 819k triangles: the first builds the spatial index.
+"$rgbsub" apply "$work/torus819k.obj" "$work/miss.txt" -o "$work/miss.obj" --timings > "$work/t.txt"
+printf 'sphere touching nothing on 819k triangles: first request %s ms (index built), next %s ms\n' \
+    "$(engine_ms "$work/t.txt" 1)" "$(engine_ms "$work/t.txt" 2)"
