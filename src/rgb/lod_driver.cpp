@@ -8,6 +8,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "rgb/loop_geometry.h"
 #include "rgb/operators.h"
 #include "rgb/refine.h"
 
@@ -19,14 +20,14 @@ constexpr std::uint64_t kBaseKey = std::numeric_limits<std::uint64_t>::max();
 constexpr int kBandsPerOctave = 2;
 constexpr int kMortonBits = 16;  // per axis
 
-// Bits of x spread to every third position.
+// The low 21 bits of x spread to every third position.
 std::uint64_t spread(std::uint64_t x) {
-    x &= 0xffff;
-    x = (x | (x << 32)) & 0x0000ffff0000ffffull;
-    x = (x | (x << 16)) & 0x00ff0000ff0000ffull;
-    x = (x | (x << 8)) & 0xf00f00f00f00f00full;
-    x = (x | (x << 4)) & 0x30c30c30c30c30c3ull;
-    x = (x | (x << 2)) & 0x9249249249249249ull;
+    x &= 0x1fffff;
+    x = (x | (x << 32)) & 0x1f00000000ffffull;
+    x = (x | (x << 16)) & 0x1f0000ff0000ffull;
+    x = (x | (x << 8)) & 0x100f00f00f00f00full;
+    x = (x | (x << 4)) & 0x10c30c30c30c30c3ull;
+    x = (x | (x << 2)) & 0x1249249249249249ull;
     return x;
 }
 
@@ -39,8 +40,8 @@ std::uint64_t band(double value) {
 
 }  // namespace
 
-double insertion_length(const Mesh& mesh, VertexId a, VertexId b, int) {
-    return glm::distance(mesh.insertion_position(a), mesh.insertion_position(b));
+double edge_length(const Mesh& mesh, VertexId a, VertexId b, int level) {
+    return glm::distance(control_point(mesh, a, level), control_point(mesh, b, level));
 }
 
 LodDriver::LodDriver(Mesh& mesh, LodSettings settings)

@@ -30,12 +30,11 @@ namespace rgb {
 // depend on the edge alone (the hierarchy's positions, never the current mesh around it).
 using SplitValue = std::function<double(const Mesh&, VertexId a, VertexId b, int level)>;
 
-// The edge's length between its endpoints' insertion positions (each vertex where it entered the
-// hierarchy).
-double insertion_length(const Mesh& mesh, VertexId a, VertexId b, int level);
+// The edge's length in the uniform mesh of its level (between its endpoints' Loop positions there).
+double edge_length(const Mesh& mesh, VertexId a, VertexId b, int level);
 
 struct LodSettings {
-    SplitValue value = insertion_length;
+    SplitValue value = edge_length;
     double threshold = 0.0;  // splits whose value is not above it are not wanted
     std::size_t max_triangles = 1'000'000;
     int max_level = kMaxLevel;  // edges of this level are never split

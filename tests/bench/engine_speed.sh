@@ -53,10 +53,10 @@ printf 'whole process, 6k -> %d triangles: rgbsub refine %.3f s, OpenMesh %.3f s
 : > "$work/engine.ns"; : > "$work/om.ns"; : > "$work/general.ns"
 for _ in $(seq "$repeat"); do
     "$rgbsub" apply "$work/torus6k.obj" "$work/level4.txt" -o "$work/out.obj" --timings > "$work/t.txt"
-    echo "$(engine_ms "$work/t.txt" 1) * 1e6 / $(engine_splits "$work/t.txt" 1)" | bc -l >> "$work/engine.ns"
+    echo "$(engine_ms "$work/t.txt" 1) * 1000000 / $(engine_splits "$work/t.txt" 1)" | bc -l >> "$work/engine.ns"
     "$openmesh" "$work/torus6k.obj" "$work/om.obj" 4 | sed -E 's/.* ([0-9.]+) ns per new vertex.*/\1/' >> "$work/om.ns"
     "$rgbsub" apply "$work/torus6k.obj" "$work/level4_sphere.txt" -o "$work/out.obj" --timings > "$work/t.txt"
-    echo "$(engine_ms "$work/t.txt" 1) * 1e6 / $(engine_splits "$work/t.txt" 1)" | bc -l >> "$work/general.ns"
+    echo "$(engine_ms "$work/t.txt" 1) * 1000000 / $(engine_splits "$work/t.txt" 1)" | bc -l >> "$work/general.ns"
 done
 engine=$(median < "$work/engine.ns"); om=$(median < "$work/om.ns"); general=$(median < "$work/general.ns")
 printf 'engine per new vertex, level 4: rgbsub %.0f ns, OpenMesh %.0f ns, ratio %.2f\n' "$engine" "$om" "$(echo "$engine / $om" | bc -l)"
@@ -73,7 +73,7 @@ for _ in $(seq "$repeat"); do
 done
 budget=$(median < "$work/budget.s"); level3=$(median < "$work/level3.s")
 printf 'budget 1500000 on 52k triangles: %.0f ns per output triangle, level 3 %.0f ns, ratio %.2f\n' \
-    "$(echo "$budget * 1e9" | bc -l)" "$(echo "$level3 * 1e9" | bc -l)" "$(echo "$budget / $level3" | bc -l)"
+    "$(echo "$budget * 1000000000" | bc -l)" "$(echo "$level3 * 1000000000" | bc -l)" "$(echo "$budget / $level3" | bc -l)"
 
 # 4. A region request that touches nothing, on 819k triangles: the first builds the spatial index.
 "$rgbsub" apply "$work/torus819k.obj" "$work/miss.txt" -o "$work/miss.obj" --timings > "$work/t.txt"
