@@ -31,7 +31,11 @@ private:
 #pragma pack(pop)
     static constexpr std::uint32_t kEmpty = 0xffffffffu;
     static constexpr std::size_t kAbsent = static_cast<std::size_t>(-1);
-    std::size_t home(std::uint32_t key) const { return (key * 2654435761u) & (entries_.size() - 1); }
+    // Runs of 16 consecutive slots stay together (vertices made together are read together, so their
+    // entries share cache lines); the runs themselves are scattered, so no stride of ids clusters.
+    std::size_t home(std::uint32_t key) const {
+        return ((std::size_t((key >> 4) * 2654435761u) << 4) | (key & 15u)) & (entries_.size() - 1);
+    }
     std::size_t slot_of(std::uint32_t vertex) const;
     void grow();
 

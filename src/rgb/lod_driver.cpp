@@ -45,7 +45,7 @@ double edge_length(const Mesh& mesh, VertexId a, VertexId b, int level) {
 }
 
 LodDriver::LodDriver(Mesh& mesh, LodSettings settings)
-    : mesh_(mesh), settings_(std::move(settings)), queue_(Lower{this}) {
+    : mesh_(mesh), settings_(std::move(settings)), bands_(std::size_t(1) << 16), queue_(Lower{this}) {
     const BaseMesh& base = mesh_.base();
     glm::dvec3 lo(std::numeric_limits<double>::max()), hi(std::numeric_limits<double>::lowest());
     for (std::uint32_t v = 0; v < base.num_vertices(); ++v) {
@@ -61,6 +61,8 @@ LodDriver::LodDriver(Mesh& mesh, LodSettings settings)
     for (const auto& level : by_level) doomed_.insert(doomed_.end(), level.begin(), level.end());
     vertex_key_.assign(mesh_.vertex_capacity(), 0);
     std::fill(vertex_key_.begin(), vertex_key_.begin() + base.num_vertices(), kBaseKey);
+    base_space_.resize(mesh_.vertex_capacity());
+    for (std::uint32_t v = 0; v < base.num_vertices(); ++v) base_space_[v] = base.position(v);
     mesh_.add_observer(this);
 }
 
@@ -70,8 +72,8 @@ bool LodDriver::outranks(const Candidate& x, const Candidate& y) const {
     if (x.key != y.key) return x.key > y.key;
     // Equal keys (an edge whose value is above its endpoints' keys inherits them): the base-space
     // point the split would insert decides, which no storage or history changes.
-    const glm::dvec3 px = 0.5 * (mesh_.base_space_position(x.a) + mesh_.base_space_position(x.b));
-    const glm::dvec3 py = 0.5 * (mesh_.base_space_position(y.a) + mesh_.base_space_position(y.b));
+    const glm::dvec3 px = 0.5 * (base_space_[x.a.idx] + base_space_[x.b.idx]);
+    const glm::dvec3 py = 0.5 * (base_space_[y.a.idx] + base_space_[y.b.idx]);
     return std::tie(px.x, px.y, px.z) > std::tie(py.x, py.y, py.z);
 }
 
@@ -84,7 +86,7 @@ std::uint64_t LodDriver::edge_key(VertexId a, VertexId b, int level) {
         report_.level_cap_bound = true;
         return 0;
     }
-    const glm::dvec3 mid = (0.5 * (mesh_.base_space_position(a) + mesh_.base_space_position(b)) - box_lo_) * box_scale_;
+    const glm::dvec3 mid = (0.5 * (base_space_[a.idx] + base_space_[b.idx]) - box_lo_) * box_scale_;
     std::uint64_t morton = 0;
     for (int i = 0; i < 3; ++i) morton |= spread(static_cast<std::uint64_t>(std::clamp(mid[i], 0.0, 65535.0))) << (2 - i);
     return std::min((band(value) << 48) | morton, inherited);
@@ -93,21 +95,37 @@ std::uint64_t LodDriver::edge_key(VertexId a, VertexId b, int level) {
 void LodDriver::vertex_added(const Mesh&, VertexId v, VertexId a, VertexId b) {
     ++report_.splits;
     added_vertices_.push_back(v);
+    if (v.idx >= vertex_key_.size()) {
+        vertex_key_.resize(std::max<std::size_t>(v.idx + 1, 2 * vertex_key_.size()), 0);
+        base_space_.resize(vertex_key_.size());
+    }
+    base_space_[v.idx] = 0.5 * (base_space_[a.idx] + base_space_[b.idx]);
     const bool wanted = splitting_ && ((splitting_->a == a && splitting_->b == b) || (splitting_->a == b && splitting_->b == a));
-    const std::uint64_t key = wanted ? splitting_->key : edge_key(a, b, mesh_.level(v) - 1);
-    if (v.idx >= vertex_key_.size()) vertex_key_.resize(std::max<std::size_t>(v.idx + 1, 2 * vertex_key_.size()), 0);
-    vertex_key_[v.idx] = key;
+    vertex_key_[v.idx] = wanted ? splitting_->key : edge_key(a, b, mesh_.level(v) - 1);
 }
 
 void LodDriver::start_refining() {
+    // With every split wanted the run ends at the budget: room for it at once, so that the arrays do
+    // not regrow on the way (a split adds a vertex per two triangles, one per triangle on a boundary).
+    if (settings_.threshold <= 0.0) mesh_.reserve(settings_.max_triangles, settings_.max_triangles / 2 + mesh_.num_vertices());
     for (FaceId f : mesh_.faces())
         for (int i = 0; i < 3; ++i) {
             const HalfedgeId h = Mesh::halfedge(f, i);
             const HalfedgeId o = mesh_.opposite(h);
             if (o.valid() && o < h) continue;  // each edge once
             const VertexId a = mesh_.from_vertex(h), b = mesh_.to_vertex(h);
-            if (const std::uint64_t key = edge_key(a, b, 0)) queue_.push({key, a, b, 0});
+            if (const std::uint64_t key = edge_key(a, b, 0)) push({key, a, b, 0});
         }
+    band_ = bands_.size() - 1;
+    while (band_ > 0 && bands_[band_].empty()) --band_;
+}
+
+void LodDriver::push(const Candidate& c) {
+    const std::size_t band = c.key >> 48;
+    if (exact_ && band == band_)
+        queue_.push(c);
+    else
+        bands_[band].push_back(c);
 }
 
 // The green edges a step created: those inside the faces it added (both sides new) and new boundary
@@ -125,39 +143,106 @@ void LodDriver::push_new_edges() {
             const EdgeType t = mesh_.edge_type(h);
             if (t.colour != Colour::Green) continue;
             const VertexId a = mesh_.from_vertex(h), b = mesh_.to_vertex(h);
-            if (const std::uint64_t key = edge_key(a, b, t.level)) queue_.push({key, a, b, t.level});
+            if (const std::uint64_t key = edge_key(a, b, t.level)) push({key, a, b, t.level});
         }
     }
 }
 
-bool LodDriver::split_next() {
-    while (!queue_.empty()) {
-        const Candidate top = queue_.top();
-        queue_.pop();
-        // Stale entries: the edge was split as another's dependency.
-        const HalfedgeId h = mesh_.find_edge(top.a, top.b);
-        if (!h.valid()) continue;
-        const EdgeType t = mesh_.edge_type(h);
-        if (t.colour != Colour::Green || t.level != top.level) continue;
-        added_faces_.clear();
-        added_vertices_.clear();
-        splitting_ = &top;
-        refine_edge(mesh_, h);
-        splitting_ = nullptr;
-        if (mesh_.num_faces() > settings_.max_triangles) {
-            // Over budget: the split and what it needed go again, which leaves the mesh of the
-            // previous key (removal normalises, so it is that mesh exactly).
-            for (auto it = added_vertices_.rbegin(); it != added_vertices_.rend(); ++it)
-                if (mesh_.is_live(*it)) remove_with_dependents(mesh_, *it);
-            report_.budget_bound = true;
-            queue_ = decltype(queue_)(Lower{this});
-            return false;
-        }
-        push_new_edges();
-        ++steps_;
-        return true;
+// Splits the candidate's edge (with what it depends on) unless it is stale: split already as another's
+// dependency.
+bool LodDriver::split(const Candidate& c) {
+    const HalfedgeId h = mesh_.find_edge(c.a, c.b);
+    if (!h.valid()) return false;
+    const EdgeType t = mesh_.edge_type(h);
+    if (t.colour != Colour::Green || t.level != c.level) return false;
+    // The split ends the uniform neighbourhoods of the corners of the edge's two triangles, where
+    // their limits (which later keys and splits need) cost least: take them now.
+    for (HalfedgeId side : {h, mesh_.opposite(h)}) {
+        if (!side.valid()) continue;
+        limit_position_where_uniform(mesh_, mesh_.from_vertex(side));
+        limit_position_where_uniform(mesh_, mesh_.opposite_vertex(side));
     }
-    return false;
+    added_faces_.clear();
+    added_vertices_.clear();
+    splitting_ = &c;
+    refine_edge(mesh_, h);
+    splitting_ = nullptr;
+    push_new_edges();
+    return true;
+}
+
+// Latest first, so that each vertex has no dependents left when its turn comes; removal normalises,
+// so the mesh is the one from before those splits exactly.
+void LodDriver::undo(const std::vector<VertexId>& vertices) {
+    for (auto it = vertices.rbegin(); it != vertices.rend(); ++it)
+        if (mesh_.is_live(*it)) remove_with_dependents(mesh_, *it);
+}
+
+void LodDriver::work_off_exactly(std::vector<Candidate>& band) {
+    exact_ = true;
+    queue_ = decltype(queue_)(Lower{this}, std::move(band));
+    band.clear();
+    band_next_ = 0;
+}
+
+bool LodDriver::split_next() {
+    for (;;) {
+        if (exact_) {
+            while (!queue_.empty()) {
+                const Candidate top = queue_.top();
+                queue_.pop();
+                if (!split(top)) continue;
+                if (mesh_.num_faces() > settings_.max_triangles) {
+                    undo(added_vertices_);
+                    report_.budget_bound = true;
+                    return false;
+                }
+                ++steps_;
+                return true;
+            }
+            exact_ = false;  // the whole band fit
+        } else {
+            std::vector<Candidate>& band = bands_[band_];
+            if (band_next_ == 0) {
+                band_start_size_ = band.size();
+                band_vertices_.clear();
+                band_steps_ = 0;
+                // Every split adds at least one triangle (two inside the surface).
+                if (mesh_.num_faces() + band.size() > settings_.max_triangles) {
+                    work_off_exactly(band);
+                    continue;
+                }
+            }
+            while (band_next_ < band.size()) {
+                const Candidate c = band[band_next_++];  // a copy: splits may append to the band
+                if (!split(c)) continue;
+                band_vertices_.insert(band_vertices_.end(), added_vertices_.begin(), added_vertices_.end());
+                if (mesh_.num_faces() > settings_.max_triangles) {
+                    undo(band_vertices_);
+                    steps_ -= band_steps_;
+                    band.resize(band_start_size_);
+                    work_off_exactly(band);
+                    break;
+                }
+                ++band_steps_;
+                ++steps_;
+                return true;
+            }
+            if (exact_) continue;
+            std::vector<Candidate>().swap(band);
+            band_next_ = 0;
+        }
+        do {
+            if (band_ == 0) return false;
+            --band_;
+        } while (bands_[band_].empty());
+    }
+}
+
+std::size_t LodDriver::pending() const {
+    std::size_t n = queue_.size() + doomed_.size();
+    for (std::size_t b = 0; b <= band_ && b < bands_.size(); ++b) n += bands_[b].size();
+    return n - band_next_;
 }
 
 bool LodDriver::step() {

@@ -63,7 +63,7 @@ public:
     std::size_t steps() const { return steps_; }
     const LodReport& report() const { return report_; }
     // Candidate splits still queued, stale ones included (for progress display).
-    std::size_t pending() const { return queue_.size() + doomed_.size(); }
+    std::size_t pending() const;
 
 private:
     struct Candidate {
@@ -82,8 +82,12 @@ private:
     bool outranks(const Candidate& x, const Candidate& y) const;
     std::uint64_t edge_key(VertexId a, VertexId b, int level);
     std::uint64_t key_of(VertexId v) const { return v.idx < vertex_key_.size() ? vertex_key_[v.idx] : 0; }
+    void push(const Candidate& c);
     void push_new_edges();
     void start_refining();
+    bool split(const Candidate& c);
+    void undo(const std::vector<VertexId>& vertices);
+    void work_off_exactly(std::vector<Candidate>& band);
     bool split_next();
 
     Mesh& mesh_;
@@ -91,6 +95,18 @@ private:
     glm::dvec3 box_lo_, box_scale_;  // base-space box, for Morton codes
     std::vector<VertexId> doomed_;   // old detail, coarsest first (removed from the back)
     std::vector<std::uint64_t> vertex_key_;
+    // Base-space positions by midpoint recursion from the base (a canonical value, cheaper than
+    // evaluating each vertex's address), for Morton codes and ties.
+    std::vector<glm::dvec3> base_space_;
+    // Candidates by band (the key's top 16 bits). A whole band gives the same mesh in any order, so
+    // bands are worked off as lists, and only the band the budget ends in goes through a heap in key
+    // order: started that way when the band clearly cannot fit, or redone that way from the band's
+    // start when it turns out not to.
+    std::vector<std::vector<Candidate>> bands_;
+    std::size_t band_ = 0, band_next_ = 0, band_start_size_ = 0;
+    std::vector<VertexId> band_vertices_;
+    std::size_t band_steps_ = 0;
+    bool exact_ = false;
     std::priority_queue<Candidate, std::vector<Candidate>, Lower> queue_;
     const Candidate* splitting_ = nullptr;
     std::vector<FaceId> added_faces_;

@@ -116,17 +116,6 @@ int Mesh::corner_of(FaceId f, VertexId v) const {
     return -1;
 }
 
-EdgeType Mesh::edge_type(HalfedgeId h) const {
-    const FaceType t = type(face(h));
-    const int i = corner(h);
-    if (t.colour == Colour::Green) return {Colour::Green, t.level};
-    if (i == t.red_edge) return {Colour::Red, t.level};
-    if (t.colour == Colour::Blue) return {Colour::Green, t.level + 1};
-    // Red: the half of the split edge touches the top vertex (the one of level l+1).
-    const bool touches_top = level(from_vertex(h)) > t.level || level(to_vertex(h)) > t.level;
-    return {Colour::Green, touches_top ? t.level + 1 : t.level};
-}
-
 int Mesh::angle(FaceId f, int c) const {
     const FaceType t = type(f);
     if (t.colour == Colour::Green) return 2;
@@ -221,8 +210,8 @@ void Mesh::release_face(FaceId f) {
 }
 
 void Mesh::release_vertex(VertexId v) {
+    if (vertex_info_[v.idx] & kLimitBit) limits_.erase(v.idx);
     vertex_info_[v.idx] = kDead;
-    limits_.erase(v.idx);
     vertex_halfedge_[v.idx] = HalfedgeId();
     free_vertices_.push_back(v.idx);
     --vertex_count_;

@@ -123,7 +123,16 @@ public:
     Colour colour(FaceId f) const { return colour_of(face_code_[f.idx]); }
     int corner_of(FaceId f, VertexId v) const;  // -1 if v is not a corner of f
     // Colour and level of the edge of h (spec §1.4), derived from its face.
-    EdgeType edge_type(HalfedgeId h) const;
+    EdgeType edge_type(HalfedgeId h) const {
+        const FaceType t = type(face(h));
+        const int i = corner(h);
+        if (t.colour == Colour::Green) return {Colour::Green, t.level};
+        if (i == t.red_edge) return {Colour::Red, t.level};
+        if (t.colour == Colour::Blue) return {Colour::Green, t.level + 1};
+        // Red: the half of the split edge touches the top vertex (the one of level l+1).
+        const bool touches_top = level(from_vertex(h)) > t.level || level(to_vertex(h)) > t.level;
+        return {Colour::Green, touches_top ? t.level + 1 : t.level};
+    }
     // Topological angle of corner i of f in units of 30 degrees (spec §1.5).
     int angle(FaceId f, int corner) const;
 
@@ -147,7 +156,11 @@ public:
     // Spec §3.5: the vertex under midpoint subdivision of the base mesh; it never moves.
     glm::dvec3 base_space_position(VertexId v) const { return rgb::base_space_position(*base_, address(v)); }
     // p^inf(v) if it has been computed (see loop_geometry.h, which computes it on demand).
-    std::optional<glm::dvec3> cached_limit(VertexId v) const { return limits_.find(v.idx); }
+    std::optional<glm::dvec3> cached_limit(VertexId v) const {
+        // The flag answers the common "not cached" without a probe into the table.
+        if ((vertex_info_[v.idx] & kLimitBit) == 0) return std::nullopt;
+        return limits_.find(v.idx);
+    }
     // Number of neighbours in the uniform mesh of the vertex's own level (base valence or 6).
     int uniform_valence(VertexId v) const;
     int valence(VertexId v) const;  // in the current mesh
@@ -173,7 +186,10 @@ public:
     VertexId next_vertex_slot() const;
     // Caches p^inf(v). Logically const: the limit is a function of the base mesh alone, so caching it
     // never changes what the mesh means.
-    void cache_limit(VertexId v, const glm::dvec3& p) const { limits_.insert(v.idx, p); }
+    void cache_limit(VertexId v, const glm::dvec3& p) const {
+        limits_.insert(v.idx, p);
+        vertex_info_[v.idx] |= kLimitBit;
+    }
     // Delete `old_faces` (and the listed vertices, which must be used by no new face), add `added` (in
     // slot next_vertex_slot()) and create `new_faces` over the same region. Adjacency with the outside
     // is rebuilt by matching edges. Observers hear of it in the order observer.h states. Returns the
@@ -193,6 +209,7 @@ private:
     static constexpr std::uint8_t kDead = 0xff;
     static constexpr std::uint8_t kLevelMask = 0x3f;
     static constexpr std::uint8_t kBoundaryBit = 0x40;
+    static constexpr std::uint8_t kLimitBit = 0x80;  // the limit is in limits_ (a live level is below 63)
     // A face's type in one byte: bits 0-2 are 0 for green, 1 + red edge for red, 4 + red edge for blue;
     // bits 3-7 the level. 0xff marks a dead slot.
     static std::uint8_t pack(const FaceType& t) {
@@ -235,7 +252,8 @@ private:
     // vertices
     std::vector<glm::dvec3> insertion_position_;
     std::vector<HalfedgeId> vertex_halfedge_;
-    std::vector<std::uint8_t> vertex_info_;  // level (bits 0-5), boundary (bit 6); 0xff: dead slot
+    // level (bits 0-5), boundary (bit 6), limit cached (bit 7); 0xff: dead slot. Mutable for the cache flag.
+    mutable std::vector<std::uint8_t> vertex_info_;
     std::vector<PackedAddress> address_;
     std::vector<std::uint32_t> free_vertices_;
     std::size_t vertex_count_ = 0;

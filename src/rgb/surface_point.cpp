@@ -154,9 +154,10 @@ glm::dvec3 base_space_position(const BaseMesh& base, const SurfacePoint& p) {
     std::sort(order.begin(), order.end(), lexicographic);
     glm::dvec3 sum(0.0);
     bool first = true;
+    const double unit = std::ldexp(1.0, -p.level);  // a power of two: a * unit is exact
     for (int c : order) {
         if (p.a[c] == 0) continue;
-        const glm::dvec3 term = std::ldexp(static_cast<double>(p.a[c]), -p.level) * base.position(t[c]);
+        const glm::dvec3 term = (static_cast<double>(p.a[c]) * unit) * base.position(t[c]);
         sum = first ? term : sum + term;
         first = false;
     }
