@@ -187,6 +187,7 @@ public:
     // Caches p^inf(v). Logically const: the limit is a function of the base mesh alone, so caching it
     // never changes what the mesh means.
     void cache_limit(VertexId v, const glm::dvec3& p) const {
+        if (vertex_info_[v.idx] & kLimitBit) return;
         limits_.insert(v.idx, p);
         vertex_info_[v.idx] |= kLimitBit;
     }
