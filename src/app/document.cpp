@@ -30,32 +30,23 @@ void Document::save(const std::string& path, const rgbio::SaveOptions& options) 
     dirty_ = false;
 }
 
-void Document::begin_edit(std::string label) { history_.begin_edit(mesh_, std::move(label)); }
+void Document::begin_edit(std::string label) { history_.begin_edit(std::move(label)); }
 
 void Document::end_edit(bool changed) {
-    history_.end_edit(mesh_, changed);
+    history_.end_edit(changed);
     dirty_ = dirty_ || changed;
 }
 
-bool Document::abandon_edit() {
-    std::optional<rgb::Mesh> before = history_.abandon_edit();
-    if (!before) return false;
-    replace_mesh(std::move(*before));
-    return true;
-}
+bool Document::abandon_edit() { return history_.abandon_edit(); }
 
 bool Document::undo() {
-    std::optional<rgb::Mesh> before = history_.undo(mesh_);
-    if (!before) return false;
-    replace_mesh(std::move(*before));
+    if (!history_.undo()) return false;
     dirty_ = true;
     return true;
 }
 
 bool Document::redo() {
-    std::optional<rgb::Mesh> after = history_.redo(mesh_);
-    if (!after) return false;
-    replace_mesh(std::move(*after));
+    if (!history_.redo()) return false;
     dirty_ = true;
     return true;
 }
@@ -69,9 +60,12 @@ const render::SurfaceGeometry& Document::geometry() {
 }
 
 void Document::replace_mesh(rgb::Mesh mesh) {
-    changes_.reset();  // unregisters from the outgoing mesh
-    mesh_ = std::move(mesh);
-    changes_ = std::make_unique<render::MeshChanges>(mesh_);
+    mesh_ = std::move(mesh);  // observers stay with the object
+    resync();
+}
+
+void Document::resync() {
+    changes_->clear();
     geometry_.rebuild(mesh_);
     ++generation_;
 }

@@ -34,14 +34,15 @@ public:
     const rgb::Mesh& mesh() const { return mesh_; }
     const std::string& path() const { return path_; }
     bool dirty() const { return dirty_; }
-    // Changes whenever the mesh object is replaced wholesale (open, undo, redo), so that views
-    // attached to it re-attach.
+    // Changes whenever the mesh is replaced wholesale (open, adopt), so that views attached to it
+    // rebuild; undo and redo change it in place, through its observers.
     std::uint64_t generation() const { return generation_; }
 
     // Around every undoable edit: changed == false means the edit did nothing and leaves no step.
     void begin_edit(std::string label);
     void end_edit(bool changed);
     // Puts the mesh back as it was at begin_edit, leaving no step; false if no edit is under way.
+    // Throws std::logic_error if it cannot (the history is then cleared).
     bool abandon_edit();
     bool undo();
     bool redo();
@@ -53,12 +54,15 @@ public:
 
 private:
     void replace_mesh(rgb::Mesh mesh);
+    // Rebuilds what follows the mesh from scratch.
+    void resync();
 
     rgb::Mesh mesh_;
+    // Its journal observes the mesh first, before anything that could fail while told of a change.
+    UndoHistory history_{mesh_};
     std::string path_;
     bool dirty_ = false;
     std::uint64_t generation_ = 0;
-    UndoHistory history_;
     render::SurfaceGeometry geometry_;
     std::unique_ptr<render::MeshChanges> changes_;
 };

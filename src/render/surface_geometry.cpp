@@ -121,6 +121,10 @@ void SurfaceGeometry::rebuild(const rgb::Mesh& mesh) {
 }
 
 std::vector<SlotRange> SurfaceGeometry::update(const rgb::Mesh& mesh, const MeshChanges& changes) {
+    if (changes.everything()) {
+        rebuild(mesh);
+        return {SlotRange{0, static_cast<std::uint32_t>(face_slots())}};
+    }
     resize(mesh);
     std::vector<rgb::VertexId> moved;
     for (rgb::VertexId v : changes.moved_vertices())

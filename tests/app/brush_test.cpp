@@ -1,5 +1,5 @@
-// The brush's pieces on their own: falloff targets, mode inversion, stroke spacing, the undo
-// history's memory bound, and ray picking on a known triangle.
+// The brush's pieces on their own: falloff targets, mode inversion, stroke spacing, and ray picking
+// on a known triangle.
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
@@ -7,7 +7,6 @@
 #include "app/brush.h"
 #include "app/stroke_sampler.h"
 #include "app/surface_picking.h"
-#include "app/undo_history.h"
 #include "render/mesh_changes.h"
 #include "render/surface_geometry.h"
 #include "rgb/mesh.h"
@@ -59,23 +58,6 @@ rgb::Mesh tetrahedron() {
     const std::vector<glm::dvec3> p{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
     const std::vector<rgb::Triangle> t{{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
     return rgb::Mesh(p, t);
-}
-
-TEST(UndoHistory, ForgetsTheOldestStepsBeyondTheBound) {
-    rgb::Mesh mesh = tetrahedron();
-    UndoHistory history;
-    for (int level = 1; level <= 3; ++level) {
-        history.begin_edit(mesh, "level " + std::to_string(level));
-        rgb::refine_uniform(mesh, level);
-        history.end_edit(mesh, true);
-    }
-    ASSERT_EQ(history.undo_steps(), 3u);
-    const std::size_t newest = state_bytes(rgb::capture_state(rgb::restore_state(rgb::capture_state(mesh))));
-    history.set_byte_bound(history.bytes() - 1);
-    EXPECT_EQ(history.undo_steps(), 2u);
-    EXPECT_EQ(history.undo_label(), "level 3");
-    EXPECT_LE(history.bytes(), history.byte_bound());
-    EXPECT_GT(newest, 0u);
 }
 
 TEST(SurfacePicking, HitsTheFrontFaceAndSkipsBackFaces) {
