@@ -5,7 +5,7 @@
 
 namespace app {
 
-Document::Document() : changes_(std::make_unique<render::MeshChanges>(mesh_)) { geometry_.rebuild(mesh_); }
+Document::Document() : changes_(std::make_unique<render::MeshChanges>(mesh_)) { resync(); }
 
 Document::~Document() = default;
 
@@ -32,8 +32,8 @@ void Document::save(const std::string& path, const rgbio::SaveOptions& options) 
 
 void Document::begin_edit(std::string label) { history_.begin_edit(std::move(label)); }
 
-void Document::end_edit(bool changed) {
-    history_.end_edit(changed);
+void Document::end_edit(bool changed, std::optional<std::string> script) {
+    history_.end_edit(changed, std::move(script));
     dirty_ = dirty_ || changed;
 }
 
@@ -53,11 +53,13 @@ bool Document::redo() {
 
 const render::SurfaceGeometry& Document::geometry() {
     if (!changes_->empty()) {
-        geometry_.update(mesh_, *changes_);
+        index_.update(geometry_, geometry_.update(mesh_, *changes_));
         changes_->clear();
     }
     return geometry_;
 }
+
+std::optional<SurfaceHit> Document::pick(const Ray& ray) { return index_.pick(geometry(), ray); }
 
 void Document::replace_mesh(rgb::Mesh mesh) {
     mesh_ = std::move(mesh);  // observers stay with the object
@@ -67,6 +69,7 @@ void Document::replace_mesh(rgb::Mesh mesh) {
 void Document::resync() {
     changes_->clear();
     geometry_.rebuild(mesh_);
+    index_.rebuild(mesh_, geometry_);
     ++generation_;
 }
 

@@ -4,9 +4,11 @@
 // core's observer). GL-free.
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "app/surface_index.h"
 #include "app/undo_history.h"
 #include "io/mesh_file.h"
 #include "render/mesh_changes.h"
@@ -40,7 +42,7 @@ public:
 
     // Around every undoable edit: changed == false means the edit did nothing and leaves no step.
     void begin_edit(std::string label);
-    void end_edit(bool changed);
+    void end_edit(bool changed, std::optional<std::string> script = std::nullopt);
     // Puts the mesh back as it was at begin_edit, leaving no step; false if no edit is under way.
     // Throws std::logic_error if it cannot (the history is then cleared).
     bool abandon_edit();
@@ -51,6 +53,8 @@ public:
 
     // The displayed triangles, brought up to date with the mesh.
     const render::SurfaceGeometry& geometry();
+    // The nearest front-facing displayed triangle along the ray.
+    std::optional<SurfaceHit> pick(const Ray& ray);
 
 private:
     void replace_mesh(rgb::Mesh mesh);
@@ -64,6 +68,7 @@ private:
     bool dirty_ = false;
     std::uint64_t generation_ = 0;
     render::SurfaceGeometry geometry_;
+    SurfaceIndex index_;
     std::unique_ptr<render::MeshChanges> changes_;
 };
 

@@ -8,6 +8,9 @@
 #include <glm/geometric.hpp>
 
 #include "app/flood_fill.h"
+#include "app/request_pieces.h"
+#include "app/stroke_script.h"
+#include "io/atomic_file.h"
 #include "io/obj_error.h"
 #include "rgb/mesh.h"
 
@@ -45,7 +48,7 @@ void Editor::mouse_pressed(MouseButton button, Modifiers mods) {
         drag_ = Drag::Orbit;
     } else if (button == MouseButton::Middle || (button == MouseButton::Left && mods.alt && mods.shift)) {
         drag_ = Drag::Pan;
-    } else if (button == MouseButton::Left && job_ == nullptr && pending_ == Pending::None) {
+    } else if (button == MouseButton::Left && pending_ == Pending::None && !refuse_if_whole_mesh_job("paint")) {
         begin_stroke(mouse_);
     }
 }
@@ -87,7 +90,56 @@ void Editor::key_pressed(Key key, Modifiers mods) {
 }
 
 void Editor::update(std::chrono::microseconds job_slice) {
-    if (job_ && !job_->step(job_slice)) finish_job();
+    const auto start = std::chrono::steady_clock::now();
+    const auto deadline = start + job_slice;
+    std::size_t operations = 0;
+    // The front job gets the slice; one that finishes early hands the rest to the next.
+    while (!jobs_.empty()) {
+        MeshJob& job = *jobs_.front();
+        if (!front_begun_) {
+            document_.begin_edit(job.label());
+            front_begun_ = true;
+        }
+        const auto left = std::chrono::duration_cast<std::chrono::microseconds>(deadline - std::chrono::steady_clock::now());
+        const auto* requests = dynamic_cast<const RequestJob*>(&job);
+        const std::size_t before = requests ? requests->stats().splits + requests->stats().removals : 0;
+        const bool more = job.step(std::max(left, std::chrono::microseconds(0)));
+        if (requests) operations += requests->stats().splits + requests->stats().removals - before;
+        if (more) break;
+        finish_front();
+        if (std::chrono::steady_clock::now() >= deadline) break;
+    }
+    timing_.frame_ms = milliseconds_since(start);
+    timing_.frame_operations = operations;
+}
+
+void Editor::finish_work() {
+    if (stroke_) end_stroke();
+    while (!jobs_.empty()) update(std::chrono::seconds(1));
+}
+
+void Editor::queue(std::unique_ptr<MeshJob> job) { jobs_.push_back(std::move(job)); }
+
+void Editor::finish_front() {
+    MeshJob& job = *jobs_.front();
+    if (!job.is_stroke()) report(job.label() + " done", false);
+    document_.end_edit(job.changed(), job.script());
+    jobs_.pop_front();
+    front_begun_ = false;
+}
+
+bool Editor::refuse_if_whole_mesh_job(const char* action) {
+    if (jobs_.empty() || jobs_.back()->is_stroke()) return false;
+    report(std::string("cannot ") + action + " while " + jobs_.back()->label() + " runs: wait, or press Esc to stop it", true);
+    return true;
+}
+
+bool Editor::refuse_if_busy(const char* action) {
+    if (!busy()) return false;
+    report(std::string("cannot ") + action + " while " + (painting_ ? "painting" : jobs_.front()->label() + " runs") +
+               ": wait, or press Esc to stop it",
+           true);
+    return true;
 }
 
 // ---- brush and strokes ------------------------------------------------------------------------
@@ -98,84 +150,56 @@ double Editor::brush_world_radius(const glm::dvec3& at) const {
 }
 
 std::optional<SurfaceHit> Editor::cursor_hit() {
-    const double reach = cursor_hit_ ? 2.0 * brush_world_radius(cursor_hit_->point) : 0.0;
-    cursor_hit_ = pick(mouse_, cursor_hit_, reach);
+    cursor_hit_ = pick(mouse_);
     return cursor_hit_;
 }
 
-std::optional<SurfaceHit> Editor::pick(glm::vec2 px, const std::optional<SurfaceHit>& previous, double reach) {
-    const Ray ray = camera_.ray_through(px, viewport_);
-    const render::SurfaceGeometry& geometry = document_.geometry();
-    // The whole surface only when the cursor left the neighbourhood of the previous hit.
-    if (previous && document_.mesh().is_live(previous->face))
-        if (auto hit = pick_surface_near(document_.mesh(), geometry, ray, previous->face, previous->point, reach))
-            return hit;
-    return pick_surface(geometry, ray);
-}
+std::optional<SurfaceHit> Editor::pick(glm::vec2 px) { return document_.pick(camera_.ray_through(px, viewport_)); }
 
 void Editor::begin_stroke(glm::vec2 px) {
+    const auto start = std::chrono::steady_clock::now();
     painting_ = true;
-    stroke_changed_ = false;
-    last_hit_.reset();
-    document_.begin_edit("brush stroke");
+    last_hit_point_.reset();
+    auto stroke = std::make_unique<RequestJob>(document_.mesh(), "brush stroke", true);
+    stroke_script_ = StrokeScript();
+    stroke_ = stroke.get();
+    queue(std::move(stroke));
     for (glm::vec2 p : sampler_.begin(px)) dab(p);
+    timing_.stroke_start_ms = milliseconds_since(start);
 }
 
 void Editor::continue_stroke(glm::vec2 px) {
     float spacing_px = kDabSpacing * brush_.radius_px;
-    if (brush_.unit == RadiusUnit::World && last_hit_)
+    if (brush_.unit == RadiusUnit::World && last_hit_point_)
         spacing_px = static_cast<float>(kDabSpacing * brush_.radius_world /
-                                        camera_.world_per_pixel(camera_.depth_of(last_hit_->point), viewport_));
+                                        camera_.world_per_pixel(camera_.depth_of(*last_hit_point_), viewport_));
     for (glm::vec2 p : sampler_.move_to(px, spacing_px)) dab(p);
 }
 
 void Editor::end_stroke() {
     painting_ = false;
-    document_.end_edit(stroke_changed_);
-    last_hit_.reset();
+    if (stroke_) stroke_->close();
+    stroke_ = nullptr;
+    last_hit_point_.reset();
 }
 
+// Picks and queues: the engine applies the dab's pieces in update(), coarse to fine.
 void Editor::dab(glm::vec2 px) {
     const auto pick_start = std::chrono::steady_clock::now();
-    const double reach =
-        last_hit_ ? 2.0 * last_radius_ + kDabSpacing * brush_.radius_px *
-                                             camera_.world_per_pixel(camera_.depth_of(last_hit_->point), viewport_)
-                  : 0.0;
-    const std::optional<SurfaceHit> hit = pick(px, last_hit_, reach);
+    const std::optional<SurfaceHit> hit = pick(px);
     if (!hit) {
-        last_hit_.reset();
+        last_hit_point_.reset();
         return;
     }
-    rgb::Mesh& mesh = document_.mesh();
+    const rgb::Mesh& mesh = document_.mesh();
     const double radius = brush_world_radius(hit->point);
     const auto displayed = document_.geometry().corners(hit->face);
     const BaseSpaceHit at = to_base_space(mesh, hit->face, displayed, hit->point, radius);
     const rgb::Dab request = make_dab(brush_, mods_.shift, at, camera_.ray_through(px, viewport_).direction);
     timing_.last_pick_ms = milliseconds_since(pick_start);
-
-    const std::array<rgb::VertexId, 3> corners = mesh.face_vertices(hit->face);
-    const auto engine_start = std::chrono::steady_clock::now();
-    const rgb::RequestStats stats = rgb::apply_dab(mesh, request);
-    timing_.last_ms = milliseconds_since(engine_start);
-    timing_.last_operations = stats.splits + stats.removals;
+    stroke_->add(dab_pieces(mesh, request), stroke_script_.lines(request));
     ++timing_.dabs;
-    stroke_changed_ |= stats.splits + stats.removals > 0;
-
-    last_hit_ = hit;
-    last_radius_ = radius;
-    if (!mesh.is_live(hit->face)) reseed_after_dab(corners);
-}
-
-// The hit face may have been split or merged away; any live face at one of its corners serves as
-// the next pick's seed.
-void Editor::reseed_after_dab(const std::array<rgb::VertexId, 3>& corners) {
-    const rgb::Mesh& mesh = document_.mesh();
-    for (rgb::VertexId v : corners) {
-        if (!mesh.is_live(v)) continue;
-        last_hit_->face = rgb::Mesh::face(mesh.vertex_halfedge(v));
-        return;
-    }
-    last_hit_.reset();
+    last_hit_point_ = hit->point;
 }
 
 // ---- whole-mesh actions -----------------------------------------------------------------------
@@ -188,7 +212,7 @@ void Editor::frame_mesh() {
 void Editor::reset_view() { camera_.frame(document_.geometry().bounds(document_.mesh()), viewport_); }
 
 bool Editor::undo() {
-    if (busy()) return false;
+    if (refuse_if_busy("undo")) return false;
     const std::string label = document_.history().can_undo() ? document_.history().undo_label() : "";
     if (!document_.undo()) return false;
     report("undid " + label, false);
@@ -196,7 +220,7 @@ bool Editor::undo() {
 }
 
 bool Editor::redo() {
-    if (busy()) return false;
+    if (refuse_if_busy("redo")) return false;
     const std::string label = document_.history().can_redo() ? document_.history().redo_label() : "";
     if (!document_.redo()) return false;
     report("redid " + label, false);
@@ -204,29 +228,28 @@ bool Editor::redo() {
 }
 
 void Editor::start_flood_fill(int level) {
-    if (busy()) return;
-    job_ = std::make_unique<FloodFillJob>(document_.mesh(), std::clamp(level, 0, kMaxBrushLevel));
-    document_.begin_edit(job_->label());
+    if (refuse_if_busy("set all")) return;
+    queue(make_flood_fill(document_.mesh(), std::clamp(level, 0, kMaxBrushLevel)));
 }
 
 void Editor::start_auto_lod() {
-    if (busy()) return;
-    job_ = std::make_unique<AutoLodJob>(document_.mesh(), auto_lod_settings_);
-    document_.begin_edit(job_->label());
+    if (refuse_if_busy("start automatic LOD")) return;
+    queue(std::make_unique<AutoLodJob>(document_.mesh(), auto_lod_settings_));
 }
 
-// Work done until the cancel stays, as one undoable step.
+// Work done until the cancel stays, as one undoable step; work waiting is dropped.
 void Editor::cancel_job() {
-    if (!job_) return;
-    report(job_->label() + " cancelled; Ctrl+Z undoes what it did", false);
-    document_.end_edit(job_->changed());
-    job_.reset();
-}
-
-void Editor::finish_job() {
-    report(job_->label() + " done", false);
-    document_.end_edit(job_->changed());
-    job_.reset();
+    if (jobs_.empty()) return;
+    if (stroke_) end_stroke();
+    const std::string label = jobs_.front()->label();
+    if (front_begun_) {
+        jobs_.front()->cancel();
+        document_.end_edit(jobs_.front()->changed(), jobs_.front()->script());
+    }
+    const bool changed = front_begun_ && jobs_.front()->changed();
+    jobs_.clear();
+    front_begun_ = false;
+    report(label + " cancelled" + (changed ? "; Ctrl+Z undoes what it did" : ""), false);
 }
 
 bool Editor::sample_level_under_cursor() {
@@ -239,7 +262,7 @@ bool Editor::sample_level_under_cursor() {
 // ---- files and confirmations ------------------------------------------------------------------
 
 bool Editor::open(const std::string& path) {
-    if (busy()) return false;
+    if (refuse_if_busy("open a file")) return false;
     try {
         load(path);
     } catch (const rgbio::ObjError& error) {
@@ -265,7 +288,7 @@ bool Editor::save() {
 }
 
 bool Editor::save_as(const std::string& path) {
-    if (busy()) return false;
+    if (refuse_if_busy("save")) return false;
     try {
         document_.save(path, save_options_);
         report("saved " + path, false);
@@ -274,6 +297,25 @@ bool Editor::save_as(const std::string& path) {
         return false;
     }
     remember_recent(path);
+    return true;
+}
+
+bool Editor::save_strokes(const std::string& path) {
+    const UndoHistory::SessionScript session = document_.history().session_script();
+    const std::string opened = document_.path().empty() ? std::string("the mesh") : document_.path();
+    try {
+        rgbio::write_file_atomically(path, "# rgbsub edit session on " + opened + ": rgbsub apply " + opened + " " + path +
+                                               " -o OUT.obj replays it\n" + session.text);
+    } catch (const rgbio::SaveError& error) {
+        report(error.what(), true);
+        return false;
+    }
+    if (session.unscripted_steps > 0)
+        report("saved the strokes to " + path + ", but " + std::to_string(session.unscripted_steps) +
+                   " edit(s) in effect (automatic LOD, or stopped before the end) have no script: a replay will differ",
+               true);
+    else
+        report("saved the strokes to " + path, false);
     return true;
 }
 
@@ -336,13 +378,15 @@ bool Editor::run_guarded(const std::function<void()>& step) {
 }
 
 void Editor::recover_from(const std::exception& failure) {
-    const std::string action = painting_ ? "the brush stroke" : job_ ? job_->label() : "";
+    const std::string action = jobs_.empty() ? "" : jobs_.front()->is_stroke() ? "the brush stroke" : jobs_.front()->label();
     const std::string cause = dynamic_cast<const std::bad_alloc*>(&failure) != nullptr ? std::string("out of memory")
                                                                                       : std::string(failure.what());
     painting_ = false;
-    last_hit_.reset();
+    stroke_ = nullptr;
+    last_hit_point_.reset();
     drag_ = Drag::None;
-    job_.reset();
+    jobs_.clear();
+    front_begun_ = false;
     std::string outcome;
     try {
         if (document_.abandon_edit()) outcome = "; " + action + " was rolled back, the mesh is as before it";

@@ -8,6 +8,7 @@
 // confirmations | statistics.
 #include <chrono>
 #include <cstddef>
+#include <deque>
 #include <exception>
 #include <functional>
 #include <memory>
@@ -22,7 +23,9 @@
 #include "app/document.h"
 #include "app/input.h"
 #include "app/mesh_job.h"
+#include "app/request_job.h"
 #include "app/stroke_sampler.h"
+#include "app/stroke_script.h"
 #include "app/surface_picking.h"
 #include "app/view_camera.h"
 #include "io/mesh_file.h"
@@ -32,10 +35,12 @@ namespace app {
 // A question the user must answer before the editor goes on.
 enum class Pending { None, DiscardForQuit, DiscardForOpen, Overwrite };
 
-struct DabTiming {
-    double last_ms = 0.0;       // engine time (rgb::apply_dab) of the most recent dab
-    double last_pick_ms = 0.0;  // picking and mapping that dab to base space
-    std::size_t last_operations = 0;  // splits and removals it made
+// What the engine and picking cost, for the statistics panel and the benchmarks.
+struct EngineTiming {
+    double frame_ms = 0.0;             // engine work in the most recent update()
+    std::size_t frame_operations = 0;  // splits and removals it made
+    double last_pick_ms = 0.0;         // picking the most recent dab and mapping it to base space
+    double stroke_start_ms = 0.0;      // the press that started the most recent stroke
     std::size_t dabs = 0;
 };
 
@@ -61,8 +66,10 @@ public:
     void key_pressed(Key key, Modifiers mods);
     // Shift held or not, for the stroke under way and the cursor preview.
     void set_modifiers(Modifiers mods) { mods_ = mods; }
-    // Advances the running job by a time slice; call once per frame.
-    void update(std::chrono::microseconds job_slice = std::chrono::milliseconds(12));
+    // Advances the queued work (strokes, whole-mesh jobs) by about a time slice; call once per frame.
+    void update(std::chrono::microseconds job_slice);
+    // Runs the queued work to its end (tests, headless frames).
+    void finish_work();
 
     // ---- brush ----
     bool painting() const { return painting_; }
@@ -79,8 +86,11 @@ public:
     bool redo();
     void start_flood_fill(int level);
     void start_auto_lod();
+    // Esc: stops the work under way (what is done stays as one undoable step) and drops what waits.
     void cancel_job();
-    const MeshJob* job() const { return job_.get(); }
+    // The work under way, if any: a stroke still being applied or a whole-mesh job.
+    const MeshJob* job() const { return jobs_.empty() ? nullptr : jobs_.front().get(); }
+    std::size_t jobs_waiting() const { return jobs_.empty() ? 0 : jobs_.size() - 1; }
     // The level of the face under the cursor becomes the brush's target level.
     bool sample_level_under_cursor();
 
@@ -105,8 +115,13 @@ public:
     bool message_is_error() const { return message_is_error_; }
     std::string window_title() const;
 
+    // The edits in effect as a level-of-detail script (brush and dab lines, `level` for set all),
+    // which `rgbsub apply` replays on the opened file to the same mesh. Returns false with a message
+    // when it cannot be written; warns when some edit in effect has no script.
+    bool save_strokes(const std::string& path);
+
     // ---- statistics ----
-    const DabTiming& dab_timing() const { return timing_; }
+    const EngineTiming& timing() const { return timing_; }
 
     // ---- failures ----
     // Runs one input event or frame step. A std::exception from it (out of memory in a deep
@@ -121,14 +136,18 @@ private:
     void continue_stroke(glm::vec2 px);
     void end_stroke();
     void dab(glm::vec2 px);
-    // The surface under px, searched near `previous` first when given (spec §3.4).
-    std::optional<SurfaceHit> pick(glm::vec2 px, const std::optional<SurfaceHit>& previous, double reach);
-    void reseed_after_dab(const std::array<rgb::VertexId, 3>& corners);
-    void finish_job();
+    std::optional<SurfaceHit> pick(glm::vec2 px);
+    void queue(std::unique_ptr<MeshJob> job);
+    // Ends the job at the front (its edit with it) and starts on the next.
+    void finish_front();
     void remember_recent(const std::string& path);
     void report(std::string message, bool error);
     void recover_from(const std::exception& failure);
-    bool busy() const { return job_ != nullptr || painting_; }
+    bool busy() const { return !jobs_.empty() || painting_; }
+    // Refuse (with a message) while work is under way / while a whole-mesh job is (strokes queue
+    // behind strokes).
+    bool refuse_if_busy(const char* action);
+    bool refuse_if_whole_mesh_job(const char* action);
 
     Document document_;
     ViewCamera camera_;
@@ -142,14 +161,17 @@ private:
     enum class Drag { None, Orbit, Pan } drag_ = Drag::None;
 
     bool painting_ = false;
-    bool stroke_changed_ = false;
+    RequestJob* stroke_ = nullptr;  // the open stroke, in jobs_
+    StrokeScript stroke_script_;
     StrokeSampler sampler_;
-    std::optional<SurfaceHit> last_hit_;
+    std::optional<glm::dvec3> last_hit_point_;
     std::optional<SurfaceHit> cursor_hit_;
-    double last_radius_ = 0.0;
-    DabTiming timing_;
+    EngineTiming timing_;
 
-    std::unique_ptr<MeshJob> job_;
+    // Applied in order, the front one a slice per frame; each is one undoable step, begun when it
+    // reaches the front.
+    std::deque<std::unique_ptr<MeshJob>> jobs_;
+    bool front_begun_ = false;
 
     Pending pending_ = Pending::None;
     std::string pending_path_;

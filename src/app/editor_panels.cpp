@@ -162,9 +162,9 @@ void statistics_panel(Editor& editor, PanelState& state, double dt_s) {
     ImGui::PushTextWrapPos(0.0f);
     ImGui::TextUnformatted(levels.c_str());
     ImGui::PopTextWrapPos();
-    const DabTiming& dab = editor.dab_timing();
-    ImGui::Text("last dab: engine %.2f ms, pick %.2f ms", dab.last_ms, dab.last_pick_ms);
-    ImGui::Text("          %zu splits and removals", dab.last_operations);
+    const EngineTiming& timing = editor.timing();
+    ImGui::Text("engine %.2f ms last frame (%zu operations)", timing.frame_ms, timing.frame_operations);
+    ImGui::Text("pick %.2f ms, stroke start %.2f ms", timing.last_pick_ms, timing.stroke_start_ms);
     ImGui::Text("frame %.1f ms", state.frame_ms);
 }
 

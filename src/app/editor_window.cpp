@@ -14,6 +14,7 @@
 
 #include "app/editor.h"
 #include "app/editor_view.h"
+#include "app/job_pacer.h"
 
 namespace app {
 namespace {
@@ -117,6 +118,7 @@ GLFWwindow* open_window() {
 
 void run_loop(GLFWwindow* window, Editor& editor, const WindowLaunch& launch, Clock::time_point start) {
     EditorView view;
+    JobPacer pacer;
     std::string title;
     auto last = Clock::now();
     for (int frame = 0; !glfwWindowShouldClose(window) && !editor.should_quit(); ++frame) {
@@ -124,10 +126,11 @@ void run_loop(GLFWwindow* window, Editor& editor, const WindowLaunch& launch, Cl
         // Idle: sleep until input arrives (but keep drawing while a job or a stroke runs).
         if (editor.job() != nullptr || editor.painting() || frame < 2) glfwPollEvents();
         else glfwWaitEventsTimeout(0.25);
+        const auto frame_start = Clock::now();
         int fw = 1, fh = 1;
         glfwGetFramebufferSize(window, &fw, &fh);
         editor.set_viewport({fw, fh});
-        editor.run_guarded([&] { editor.update(); });
+        editor.run_guarded([&] { editor.update(pacer.slice()); });
         if (editor.window_title() != title) {
             title = editor.window_title();
             glfwSetWindowTitle(window, title.c_str());
@@ -144,6 +147,7 @@ void run_loop(GLFWwindow* window, Editor& editor, const WindowLaunch& launch, Cl
         ImGui::Render();
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
         glfwSwapBuffers(window);
+        pacer.frame_drawn(std::chrono::duration<double, std::milli>(Clock::now() - frame_start).count() - editor.timing().frame_ms);
         if (frame == 0 && launch.frames)
             std::printf("first frame after %.1f ms\n",
                         std::chrono::duration<double, std::milli>(Clock::now() - start).count());

@@ -14,13 +14,13 @@ void UndoHistory::begin_edit(std::string label) {
     journal_.start();
 }
 
-void UndoHistory::end_edit(bool changed) {
+void UndoHistory::end_edit(bool changed, std::optional<std::string> script) {
     if (!journal_.recording()) return;
     rgb::JournalRecord record = journal_.stop();
     if (!changed || record.empty()) return;
     for (const Step& step : redo_) bytes_ -= step.record.bytes();
     redo_.clear();
-    push(undo_, Step{std::move(pending_label_), std::move(record)});
+    push(undo_, Step{std::move(pending_label_), std::move(record), std::move(script)});
 }
 
 bool UndoHistory::abandon_edit() {
@@ -50,7 +50,7 @@ bool UndoHistory::cross(std::deque<Step>& from, std::deque<Step>& to) {
         clear();
         throw;
     }
-    push(to, Step{std::move(step.label), journal_.stop()});
+    push(to, Step{std::move(step.label), journal_.stop(), std::move(step.script)});
     return true;
 }
 
@@ -62,10 +62,24 @@ void UndoHistory::clear() {
     undo_.clear();
     redo_.clear();
     bytes_ = 0;
+    forgotten_ = {};
+}
+
+UndoHistory::SessionScript UndoHistory::session_script() const {
+    SessionScript session = forgotten_;
+    for (const Step& step : undo_) {
+        if (step.script) session.text += *step.script;
+        else ++session.unscripted_steps;
+    }
+    return session;
 }
 
 void UndoHistory::forget_if_stale() {
-    if (journal_.take_unrecorded_change()) clear();
+    if (!journal_.take_unrecorded_change()) return;
+    SessionScript in_effect = session_script();
+    ++in_effect.unscripted_steps;  // the change itself
+    clear();
+    forgotten_ = std::move(in_effect);
 }
 
 void UndoHistory::push(std::deque<Step>& side, Step step) {
@@ -83,6 +97,11 @@ void UndoHistory::set_byte_bound(std::size_t bound) {
 void UndoHistory::enforce_bound() {
     while (bytes_ > byte_bound_ && (!undo_.empty() || !redo_.empty())) {
         std::deque<Step>& side = undo_.empty() ? redo_ : undo_;
+        if (&side == &undo_) {
+            // Still in effect, only no longer undoable.
+            if (side.front().script) forgotten_.text += *side.front().script;
+            else ++forgotten_.unscripted_steps;
+        }
         bytes_ -= side.front().record.bytes();
         side.pop_front();
     }

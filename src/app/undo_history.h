@@ -5,8 +5,12 @@
 // undoing or redoing it costs in proportion to what it changed, and so does its memory. Undo and
 // redo change the mesh in place through its ordinary operations, so whatever observes the mesh
 // (the renderer's buffers, the picking index) updates only what changed.
+//
+// A step also keeps what it did as script lines (io/lod_script.h) when a script can say it, so the
+// edits in effect can be saved as a script that `rgbsub apply` replays to the same mesh.
 #include <cstddef>
 #include <deque>
+#include <optional>
 #include <string>
 
 #include "rgb/journal.h"
@@ -22,9 +26,10 @@ public:
     // Follows `mesh` (for the history's lifetime); every change of it must happen inside an edit.
     explicit UndoHistory(rgb::Mesh& mesh, std::size_t byte_bound = std::size_t{1} << 30);
 
-    // Around one undoable change of the mesh. end_edit with changed == false forgets it.
+    // Around one undoable change of the mesh. end_edit with changed == false forgets it; `script`
+    // says what it did, if a script can.
     void begin_edit(std::string label);
-    void end_edit(bool changed);
+    void end_edit(bool changed, std::optional<std::string> script = std::nullopt);
     bool editing() const { return journal_.recording(); }
     // Ends the edit under way without a step and puts the mesh back as it was at begin_edit (for an
     // edit that failed half-way). False when no edit is under way.
@@ -42,6 +47,14 @@ public:
     bool redo();
     void clear();
 
+    // The script of every step in effect (undone ones left out, those forgotten for the memory
+    // bound kept), and how many of them no script could say.
+    struct SessionScript {
+        std::string text;
+        std::size_t unscripted_steps = 0;
+    };
+    SessionScript session_script() const;
+
     std::size_t bytes() const { return bytes_; }
     std::size_t byte_bound() const { return byte_bound_; }
     void set_byte_bound(std::size_t bound);
@@ -50,6 +63,7 @@ private:
     struct Step {
         std::string label;
         rgb::JournalRecord record;  // what the step did; reverting it crosses to the other side
+        std::optional<std::string> script;
     };
     // Pops the newest step of `from`, reverts it, and pushes the reversal's record onto `to`.
     bool cross(std::deque<Step>& from, std::deque<Step>& to);
@@ -64,6 +78,7 @@ private:
     std::deque<Step> undo_;  // oldest first
     std::deque<Step> redo_;  // most recently undone last
     std::string pending_label_;
+    SessionScript forgotten_;  // steps in effect that the bound dropped from undo_
 };
 
 }  // namespace app

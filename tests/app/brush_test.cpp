@@ -6,12 +6,11 @@
 
 #include "app/brush.h"
 #include "app/stroke_sampler.h"
-#include "app/surface_picking.h"
+#include "app/surface_index.h"
 #include "render/mesh_changes.h"
 #include "render/surface_geometry.h"
 #include "rgb/mesh.h"
 #include "rgb/refine.h"
-#include "rgb/triangle_geometry.h"
 
 namespace app {
 namespace {
@@ -64,10 +63,12 @@ TEST(SurfacePicking, HitsTheFrontFaceAndSkipsBackFaces) {
     rgb::Mesh mesh = tetrahedron();
     render::SurfaceGeometry geometry;
     geometry.rebuild(mesh);
+    SurfaceIndex index;
+    index.rebuild(mesh, geometry);
     // From far along +x+y+z, the slanted face {1,2,3} is the front one; its centroid is (1/3,1/3,1/3).
     const glm::dvec3 centroid(1.0 / 3.0);
     const Ray ray{glm::dvec3(3.0), glm::normalize(centroid - glm::dvec3(3.0))};
-    const std::optional<SurfaceHit> hit = pick_surface(geometry, ray);
+    const std::optional<SurfaceHit> hit = index.pick(geometry, ray);
     ASSERT_TRUE(hit.has_value());
     EXPECT_EQ(mesh.face_vertices(hit->face)[0].idx + mesh.face_vertices(hit->face)[1].idx +
                   mesh.face_vertices(hit->face)[2].idx,
@@ -75,28 +76,7 @@ TEST(SurfacePicking, HitsTheFrontFaceAndSkipsBackFaces) {
     EXPECT_NEAR(glm::distance(hit->point, centroid), 0.0, 1e-6);
     // The same line from inside looking out meets only back faces.
     const Ray inside{glm::dvec3(0.1), glm::normalize(glm::dvec3(1.0))};
-    EXPECT_FALSE(pick_surface(geometry, inside).has_value());
-}
-
-TEST(SurfacePicking, FootprintGrowsOnlyThroughFacesInTheSphere) {
-    rgb::Mesh mesh = tetrahedron();
-    rgb::refine_uniform(mesh, 3);
-    render::SurfaceGeometry geometry;
-    geometry.rebuild(mesh);
-    const Ray ray{glm::dvec3(3.0), glm::normalize(glm::dvec3(1.0 / 3.0) - glm::dvec3(3.0))};
-    const SurfaceHit hit = *pick_surface(geometry, ray);
-    const double radius = 0.1;
-    const std::vector<rgb::FaceId> footprint = faces_in_sphere(mesh, geometry, hit.face, hit.point, radius);
-    std::size_t expected = 0;
-    for (rgb::FaceId f : mesh.faces()) {
-        const auto v = geometry.vertices();
-        expected += rgb::distance_to_triangle(hit.point, glm::dvec3(v[3 * f.idx].position), glm::dvec3(v[3 * f.idx + 1].position),
-                                         glm::dvec3(v[3 * f.idx + 2].position)) <= radius;
-    }
-    // The sphere is small and within one flat face of the tetrahedron, so its faces are connected.
-    EXPECT_EQ(footprint.size(), expected);
-    EXPECT_GT(footprint.size(), 1u);
-    EXPECT_LT(footprint.size(), mesh.num_faces());
+    EXPECT_FALSE(index.pick(geometry, inside).has_value());
 }
 
 }  // namespace

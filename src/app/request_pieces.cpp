@@ -1,0 +1,105 @@
+#include "app/request_pieces.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+
+#include <glm/geometric.hpp>
+
+#include "rgb/base_face_index.h"
+#include "rgb/mesh.h"
+
+namespace app {
+namespace {
+
+// The base faces the request may touch: those its outermost ball meets (every base face without a
+// ball), within its own restriction if it has one. Sorted.
+std::vector<std::uint32_t> base_faces_of(const rgb::Mesh& mesh, const rgb::LevelRequest& request) {
+    std::vector<std::uint32_t> faces;
+    if (request.sphere) {
+        double radius = request.sphere->radius;
+        for (const rgb::LevelBand& band : request.taper) radius = std::max(radius, band.radius);
+        faces = mesh.base().face_index().faces_meeting_sphere(request.sphere->centre, radius);
+    } else {
+        faces.resize(mesh.base().num_faces());
+        for (std::uint32_t f = 0; f < faces.size(); ++f) faces[f] = f;
+    }
+    if (request.base_faces.empty()) return faces;
+    std::vector<std::uint32_t> allowed;
+    std::set_intersection(faces.begin(), faces.end(), request.base_faces.begin(), request.base_faces.end(), std::back_inserter(allowed));
+    return allowed;
+}
+
+// Triangles the request may create (refine) or visit (coarsen: the mesh's average per base face over
+// the base faces it meets).
+double expected_work(const rgb::Mesh& mesh, const rgb::LevelRequest& request, std::size_t base_faces) {
+    double work = 0.0;
+    if (request.kind != rgb::RequestKind::Refine)
+        work += static_cast<double>(base_faces) * static_cast<double>(mesh.num_faces()) /
+                static_cast<double>(std::max<std::size_t>(mesh.base().num_faces(), 1));
+    if (request.kind != rgb::RequestKind::Coarsen) work += rgb::estimated_triangles(mesh, request) - static_cast<double>(mesh.num_faces());
+    return work;
+}
+
+// `request` over consecutive batches of its base faces, each of about `per_piece` expected work.
+void append_batches(const rgb::Mesh& mesh, const rgb::LevelRequest& request, double per_piece, std::vector<rgb::LevelRequest>& out) {
+    const std::vector<std::uint32_t> faces = base_faces_of(mesh, request);
+    if (faces.empty()) return;
+    const double work = expected_work(mesh, request, faces.size());
+    const auto batches = static_cast<std::size_t>(std::clamp(std::ceil(work / per_piece), 1.0, static_cast<double>(faces.size())));
+    const std::size_t per_batch = (faces.size() + batches - 1) / batches;
+    for (std::size_t first = 0; first < faces.size(); first += per_batch) {
+        rgb::LevelRequest piece = request;
+        piece.base_faces.assign(faces.begin() + static_cast<std::ptrdiff_t>(first),
+                                faces.begin() + static_cast<std::ptrdiff_t>(std::min(first + per_batch, faces.size())));
+        out.push_back(std::move(piece));
+    }
+}
+
+// Refine to level k: the ball of the band of level k (the widest one asking k or more), the finer
+// bands capped at k, the coarser ones kept.
+rgb::LevelRequest refine_to(const rgb::LevelRequest& request, int k) {
+    rgb::LevelRequest piece = request;
+    piece.kind = rgb::RequestKind::Refine;
+    piece.level = k;
+    piece.taper.clear();
+    for (const rgb::LevelBand& band : request.taper) {
+        if (band.level < k) piece.taper.push_back(band);
+        else if (piece.sphere) piece.sphere->radius = std::max(piece.sphere->radius, band.radius);
+    }
+    return piece;
+}
+
+// Coarse to fine: the coarsen part first (set requests), then the refine part level by level.
+std::vector<rgb::LevelRequest> pieces_of(const rgb::Mesh& mesh, const rgb::LevelRequest& request, double per_piece) {
+    std::vector<rgb::LevelRequest> pieces;
+    if (request.kind != rgb::RequestKind::Refine) {
+        rgb::LevelRequest coarsen = request;
+        coarsen.kind = rgb::RequestKind::Coarsen;
+        append_batches(mesh, coarsen, per_piece, pieces);
+    }
+    if (request.kind != rgb::RequestKind::Coarsen)
+        for (int k = 1; k <= request.level; ++k) append_batches(mesh, refine_to(request, k), per_piece, pieces);
+    return pieces;
+}
+
+}  // namespace
+
+std::vector<rgb::LevelRequest> dab_pieces(const rgb::Mesh& mesh, const rgb::Dab& dab, double piece_triangles) {
+    // What apply_dab does nothing for.
+    if (dab.view && !(glm::length(*dab.view) > 0.0)) return {};
+    const rgb::LevelRequest request = rgb::dab_request(mesh, dab);
+    if (request.sphere->radius <= 0.0 || (dab.view && request.base_faces.empty())) return {};
+    if (dab.mode == rgb::BrushMode::Refine && dab.level == 0) return {};
+    if (expected_work(mesh, request, base_faces_of(mesh, request).size()) <= piece_triangles) return {request};
+    return pieces_of(mesh, request, piece_triangles);
+}
+
+std::vector<rgb::LevelRequest> set_all_pieces(const rgb::Mesh& mesh, int level, double piece_triangles) {
+    rgb::LevelRequest request;
+    request.kind = rgb::RequestKind::Set;
+    request.level = level;
+    return pieces_of(mesh, request, piece_triangles);
+}
+
+}  // namespace app
