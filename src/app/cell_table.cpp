@@ -1,5 +1,6 @@
 #include "app/cell_table.h"
 
+#include <algorithm>
 #include <bit>
 #include <utility>
 
@@ -19,50 +20,45 @@ std::uint32_t CellTable::find(std::uint64_t key) const {
     return i == entries_.size() ? kNone : entries_[i].value;
 }
 
-std::uint32_t& CellTable::at(std::uint64_t key) {
-    const std::size_t found = slot_of(key);
-    if (found != entries_.size()) return entries_[found].value;
-    // Keep the load at most 1/2 so probe runs stay short.
-    if (2 * (size_ + 1) > entries_.size()) grow();
-    const std::size_t mask = entries_.size() - 1;
-    std::size_t i = home(key);
-    while (entries_[i].key != kEmpty) i = (i + 1) & mask;
-    entries_[i] = {key, kNone};
-    ++size_;
-    return entries_[i].value;
-}
-
-void CellTable::erase(std::uint64_t key) {
+void CellTable::set(std::uint64_t key, std::uint32_t value) {
     std::size_t i = slot_of(key);
-    if (i == entries_.size()) return;
-    // Backward shift: later members of the probe run move into the hole unless their home lies
-    // cyclically in (hole, member].
-    const std::size_t mask = entries_.size() - 1;
-    for (std::size_t j = (i + 1) & mask; entries_[j].key != kEmpty; j = (j + 1) & mask) {
-        const std::size_t h = home(entries_[j].key);
-        const bool home_between = i <= j ? (h > i && h <= j) : (h > i || h <= j);
-        if (!home_between) {
-            entries_[i] = entries_[j];
-            i = j;
-        }
+    if (i == entries_.size()) {
+        if (value == kNone) return;
+        // Keep the load at most 1/2 so probe runs stay short; a rebuild drops the emptied cells.
+        if (2 * (size_ + 1) > entries_.size()) rebuild(4 * (size_ - emptied_ + 1) > entries_.size() ? 2 * entries_.size() : entries_.size());
+        const std::size_t mask = entries_.size() - 1;
+        for (i = home(key); entries_[i].key != kEmpty; i = (i + 1) & mask) {}
+        entries_[i] = {key, kNone};
+        ++size_;
+        ++emptied_;
     }
-    entries_[i] = Entry{};
-    --size_;
+    if (entries_[i].value == kNone && value != kNone) --emptied_;
+    if (entries_[i].value != kNone && value == kNone) ++emptied_;
+    entries_[i].value = value;
+    if (2 * emptied_ > size_ && size_ > 1024) rebuild(entries_.size());
 }
 
 void CellTable::clear() {
     entries_.clear();
     shift_ = 64;
     size_ = 0;
+    emptied_ = 0;
 }
 
-void CellTable::grow() {
-    const std::size_t capacity = entries_.empty() ? 1024 : 2 * entries_.size();
+void CellTable::rebuild(std::size_t capacity) {
+    capacity = std::max<std::size_t>(capacity, 1024);
     std::vector<Entry> old = std::exchange(entries_, std::vector<Entry>(capacity));
     shift_ = 64 - std::countr_zero(capacity);
     size_ = 0;
-    for (const Entry& e : old)
-        if (e.key != kEmpty) at(e.key) = e.value;
+    emptied_ = 0;
+    const std::size_t mask = capacity - 1;
+    for (const Entry& e : old) {
+        if (e.key == kEmpty || e.value == kNone) continue;
+        std::size_t i = home(e.key);
+        while (entries_[i].key != kEmpty) i = (i + 1) & mask;
+        entries_[i] = e;
+        ++size_;
+    }
 }
 
 }  // namespace app

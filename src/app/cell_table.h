@@ -1,7 +1,8 @@
 #pragma once
 // A hash map from 64-bit cell keys to 32-bit values for the picking index: open addressing with
-// linear probing and backward-shift deletion (no tombstones, so lookups stay short however many
-// cells come and go), 16 bytes a cell.
+// linear probing, 16 bytes a cell. A cell whose value becomes kNone stays until the table is rebuilt
+// without such cells, which happens when they are half of it (so lookups stay short however many
+// cells come and go).
 #include <cstdint>
 #include <vector>
 
@@ -13,11 +14,9 @@ public:
 
     // The value of `key`, or kNone.
     std::uint32_t find(std::uint64_t key) const;
-    // A reference to the value of `key`, inserted as kNone when absent.
-    std::uint32_t& at(std::uint64_t key);
-    void erase(std::uint64_t key);
+    // Sets the value of `key` (kNone empties the cell).
+    void set(std::uint64_t key, std::uint32_t value);
     void clear();
-    std::size_t size() const { return size_; }
     std::size_t memory_bytes() const { return entries_.capacity() * sizeof(Entry); }
 
 private:
@@ -28,11 +27,13 @@ private:
     };
     std::size_t home(std::uint64_t key) const { return static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> shift_); }
     std::size_t slot_of(std::uint64_t key) const;
-    void grow();
+    // Rehashes the cells with a value into a table of `capacity` entries.
+    void rebuild(std::size_t capacity);
 
     std::vector<Entry> entries_;  // power-of-two size
     int shift_ = 64;
-    std::size_t size_ = 0;
+    std::size_t size_ = 0;     // entries with a key
+    std::size_t emptied_ = 0;  // of those, entries whose value is kNone
 };
 
 }  // namespace app

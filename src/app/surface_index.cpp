@@ -104,22 +104,20 @@ void SurfaceIndex::insert(std::uint64_t cell, std::uint32_t slot) {
         ref = static_cast<std::uint32_t>(refs_.size());
         refs_.emplace_back();
     }
-    std::uint32_t& head = cells_.at(cell);
-    refs_[ref] = {slot, head};
-    head = ref;
+    refs_[ref] = {slot, cells_.find(cell)};
+    cells_.set(cell, ref);
 }
 
 void SurfaceIndex::remove(std::uint64_t cell, std::uint32_t slot) {
-    std::uint32_t& head = cells_.at(cell);
-    for (std::uint32_t* link = &head; *link != CellTable::kNone; link = &refs_[*link].next) {
-        if (refs_[*link].slot != slot) continue;
-        const std::uint32_t ref = *link;
-        *link = refs_[ref].next;
+    std::uint32_t previous = CellTable::kNone;
+    for (std::uint32_t ref = cells_.find(cell); ref != CellTable::kNone; previous = ref, ref = refs_[ref].next) {
+        if (refs_[ref].slot != slot) continue;
+        if (previous == CellTable::kNone) cells_.set(cell, refs_[ref].next);
+        else refs_[previous].next = refs_[ref].next;
         refs_[ref].next = free_ref_;
         free_ref_ = ref;
-        break;
+        return;
     }
-    if (head == CellTable::kNone) cells_.erase(cell);
 }
 
 std::optional<SurfaceHit> SurfaceIndex::pick(const render::SurfaceGeometry& geometry, const Ray& ray) const {
