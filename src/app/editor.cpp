@@ -111,6 +111,10 @@ void Editor::update(std::chrono::microseconds job_slice) {
     }
     timing_.frame_ms = milliseconds_since(start);
     timing_.frame_operations = operations;
+    // The picking geometry and index catch up here rather than in the next pick.
+    const auto catch_up = std::chrono::steady_clock::now();
+    document_.geometry();
+    timing_.geometry_ms = milliseconds_since(catch_up);
 }
 
 void Editor::finish_work() {
@@ -197,7 +201,8 @@ void Editor::dab(glm::vec2 px) {
     const BaseSpaceHit at = to_base_space(mesh, hit->face, displayed, hit->point, radius);
     const rgb::Dab request = make_dab(brush_, mods_.shift, at, camera_.ray_through(px, viewport_).direction);
     timing_.last_pick_ms = milliseconds_since(pick_start);
-    stroke_->add(dab_pieces(mesh, request), stroke_script_.lines(request));
+    const int from_level = mesh.level(hit->face);
+    stroke_->add([&mesh, request, from_level] { return dab_pieces(mesh, request, from_level); }, stroke_script_.lines(request));
     ++timing_.dabs;
     last_hit_point_ = hit->point;
 }

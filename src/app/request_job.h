@@ -4,6 +4,7 @@
 // start). The pieces of one request are canonical, so the result is the mesh the requests give whole.
 #include <cstddef>
 #include <deque>
+#include <functional>
 #include <string>
 
 #include "app/mesh_job.h"
@@ -20,8 +21,11 @@ public:
     // An open job (a brush stroke) takes more pieces until close().
     RequestJob(rgb::Mesh& mesh, std::string label, bool open);
 
-    // Appends the pieces of one request and the script lines that say it.
-    void add(std::vector<rgb::LevelRequest> pieces, const std::string& script_lines);
+    // What makes a request's pieces (request_pieces.h); called when the job reaches the request, so
+    // that adding costs nothing and the pieces are cut for the mesh as it then is.
+    using Pieces = std::function<std::vector<rgb::LevelRequest>()>;
+    // Appends one request and the script lines that say it.
+    void add(Pieces pieces, const std::string& script_lines);
     void close() { open_ = false; }
 
     bool step(std::chrono::microseconds slice) override;
@@ -34,15 +38,16 @@ public:
 
     // Splits and removals so far.
     const rgb::RequestStats& stats() const { return stats_; }
-    std::size_t pieces_left() const { return pieces_.size(); }
 
 private:
     rgb::Mesh& mesh_;
     std::string label_;
     bool stroke_;
     bool open_;
-    std::deque<rgb::LevelRequest> pieces_;
-    std::size_t pieces_done_ = 0;
+    std::deque<Pieces> requests_;          // not cut yet
+    std::deque<rgb::LevelRequest> pieces_;  // of the request under way
+    std::size_t requests_done_ = 0;
+    std::size_t pieces_done_ = 0;  // of the request under way
     rgb::RequestStats stats_;
     std::string script_;
     bool dropped_ = false;

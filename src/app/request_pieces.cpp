@@ -30,13 +30,11 @@ std::vector<std::uint32_t> base_faces_of(const rgb::Mesh& mesh, const rgb::Level
     return allowed;
 }
 
-// Triangles the request may create (refine) or visit (coarsen: the mesh's average per base face over
-// the base faces it meets).
+// Triangles the request visits (the mesh's average per base face over the base faces it meets) and
+// may create.
 double expected_work(const rgb::Mesh& mesh, const rgb::LevelRequest& request, std::size_t base_faces) {
-    double work = 0.0;
-    if (request.kind != rgb::RequestKind::Refine)
-        work += static_cast<double>(base_faces) * static_cast<double>(mesh.num_faces()) /
-                static_cast<double>(std::max<std::size_t>(mesh.base().num_faces(), 1));
+    double work = static_cast<double>(base_faces) * static_cast<double>(mesh.num_faces()) /
+                  static_cast<double>(std::max<std::size_t>(mesh.base().num_faces(), 1));
     if (request.kind != rgb::RequestKind::Coarsen) work += rgb::estimated_triangles(mesh, request) - static_cast<double>(mesh.num_faces());
     return work;
 }
@@ -70,8 +68,10 @@ rgb::LevelRequest refine_to(const rgb::LevelRequest& request, int k) {
     return piece;
 }
 
-// Coarse to fine: the coarsen part first (set requests), then the refine part level by level.
-std::vector<rgb::LevelRequest> pieces_of(const rgb::Mesh& mesh, const rgb::LevelRequest& request, double per_piece) {
+// Coarse to fine: the coarsen part first (set requests), then the refine part level by level from
+// just above `from_level` (a piece also does what skipped coarser pieces would have: skipping them
+// only saves their pass over the faces).
+std::vector<rgb::LevelRequest> pieces_of(const rgb::Mesh& mesh, const rgb::LevelRequest& request, double per_piece, int from_level) {
     std::vector<rgb::LevelRequest> pieces;
     if (request.kind != rgb::RequestKind::Refine) {
         rgb::LevelRequest coarsen = request;
@@ -79,27 +79,30 @@ std::vector<rgb::LevelRequest> pieces_of(const rgb::Mesh& mesh, const rgb::Level
         append_batches(mesh, coarsen, per_piece, pieces);
     }
     if (request.kind != rgb::RequestKind::Coarsen)
-        for (int k = 1; k <= request.level; ++k) append_batches(mesh, refine_to(request, k), per_piece, pieces);
+        for (int k = std::clamp(from_level + 1, 1, request.level); k <= request.level; ++k)
+            append_batches(mesh, refine_to(request, k), per_piece, pieces);
     return pieces;
 }
 
 }  // namespace
 
-std::vector<rgb::LevelRequest> dab_pieces(const rgb::Mesh& mesh, const rgb::Dab& dab, double piece_triangles) {
+std::vector<rgb::LevelRequest> dab_pieces(const rgb::Mesh& mesh, const rgb::Dab& dab, int from_level, double piece_triangles) {
     // What apply_dab does nothing for.
     if (dab.view && !(glm::length(*dab.view) > 0.0)) return {};
     const rgb::LevelRequest request = rgb::dab_request(mesh, dab);
     if (request.sphere->radius <= 0.0 || (dab.view && request.base_faces.empty())) return {};
     if (dab.mode == rgb::BrushMode::Refine && dab.level == 0) return {};
     if (expected_work(mesh, request, base_faces_of(mesh, request).size()) <= piece_triangles) return {request};
-    return pieces_of(mesh, request, piece_triangles);
+    return pieces_of(mesh, request, piece_triangles, from_level);
 }
 
 std::vector<rgb::LevelRequest> set_all_pieces(const rgb::Mesh& mesh, int level, double piece_triangles) {
     rgb::LevelRequest request;
     request.kind = rgb::RequestKind::Set;
     request.level = level;
-    return pieces_of(mesh, request, piece_triangles);
+    int coarsest = rgb::kMaxLevel;
+    for (rgb::FaceId f : mesh.faces()) coarsest = std::min(coarsest, mesh.level(f));
+    return pieces_of(mesh, request, piece_triangles, coarsest);
 }
 
 }  // namespace app

@@ -18,14 +18,16 @@ class Mesh;
 
 namespace app {
 
-// About this many new (or visited) triangles per piece: several milliseconds of engine time.
-inline constexpr double kPieceTriangles = 16384.0;
+// About this many visited and new triangles per piece: several milliseconds of engine time.
+inline constexpr double kPieceTriangles = 8192.0;
 
 // The pieces of a dab (none when apply_dab would do nothing); the whole request as one piece when it
-// is expected to be small.
-std::vector<rgb::LevelRequest> dab_pieces(const rgb::Mesh& mesh, const rgb::Dab& dab, double piece_triangles = kPieceTriangles);
+// is expected to be small. Levels up to `from_level` (the level of the face under the dab, say) get
+// no pieces of their own; that changes the slicing only, never the result.
+std::vector<rgb::LevelRequest> dab_pieces(const rgb::Mesh& mesh, const rgb::Dab& dab, int from_level,
+                                          double piece_triangles = kPieceTriangles);
 
-// The pieces of "every face to level N".
+// The pieces of "every face to level N", the levels below the mesh's coarsest face skipped.
 std::vector<rgb::LevelRequest> set_all_pieces(const rgb::Mesh& mesh, int level, double piece_triangles = kPieceTriangles);
 
 }  // namespace app

@@ -1,6 +1,7 @@
 #include "app/surface_index.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 
@@ -14,6 +15,8 @@ constexpr int kCoordinateBits = 18;
 constexpr std::int64_t kFinestCells = std::int64_t{1} << (kCoordinateBits - 1);
 constexpr int kLevels = kCoordinateBits;  // the coarsest grid is one cell
 constexpr int kReachShift = 59;
+// Cells per axis of a block: a walk skips a block whose cells are all empty in one step.
+constexpr std::int64_t kBlockCells = 8;
 // Displayed positions are floats: a margin keeps their rounding inside the box.
 constexpr double kMargin = 1e-3;
 
@@ -41,6 +44,7 @@ void SurfaceIndex::rebuild(const rgb::Mesh& mesh, const render::SurfaceGeometry&
     placements_.assign(geometry.face_slots(), kNowhere);
     per_level_ = {};
     cells_.clear();
+    blocks_.clear();
     refs_.clear();
     free_ref_ = CellTable::kNone;
     for (std::uint32_t slot = 0; slot < geometry.face_slots(); ++slot) place(slot, placement(geometry, slot));
@@ -96,7 +100,18 @@ void SurfaceIndex::place(std::uint32_t slot, const Placement& where) {
     placements_[slot] = where;
 }
 
+std::uint64_t SurfaceIndex::block_of(std::uint64_t cell) {
+    const std::uint64_t mask = (std::uint64_t{1} << kCoordinateBits) - 1;
+    const int shift = std::countr_zero(static_cast<unsigned>(kBlockCells));
+    const std::uint64_t x = (cell >> (2 * kCoordinateBits)) & mask, y = (cell >> kCoordinateBits) & mask, z = cell & mask;
+    return cell_key(key_level(cell), static_cast<std::int64_t>(x >> shift), static_cast<std::int64_t>(y >> shift),
+                    static_cast<std::int64_t>(z >> shift));
+}
+
 void SurfaceIndex::insert(std::uint64_t cell, std::uint32_t slot) {
+    const std::uint64_t block = block_of(cell);
+    const std::uint32_t in_block = blocks_.find(block);
+    blocks_.set(block, in_block == CellTable::kNone ? 1 : in_block + 1);
     std::uint32_t ref = free_ref_;
     if (ref != CellTable::kNone) {
         free_ref_ = refs_[ref].next;
@@ -116,6 +131,9 @@ void SurfaceIndex::remove(std::uint64_t cell, std::uint32_t slot) {
         else refs_[previous].next = refs_[ref].next;
         refs_[ref].next = free_ref_;
         free_ref_ = ref;
+        const std::uint64_t block = block_of(cell);
+        const std::uint32_t in_block = blocks_.find(block);
+        blocks_.set(block, in_block == 1 ? CellTable::kNone : in_block - 1);
         return;
     }
 }
@@ -142,40 +160,64 @@ std::optional<SurfaceHit> SurfaceIndex::pick(const render::SurfaceGeometry& geom
     return best;
 }
 
-// Amanatides and Woo's walk through the cells of one grid, from where the ray enters the box to where
-// it leaves it or passes the best hit.
-void SurfaceIndex::walk_level(const render::SurfaceGeometry& geometry, const Ray& ray, int level, double t_enter, double t_exit,
-                              std::optional<SurfaceHit>& best) const {
-    const double cell = std::ldexp(finest_cell_, level);
-    const std::int64_t count = cells_at(level);
+// Amanatides and Woo's walk through the cells (of size `cell`, coordinates within [lo, hi]) that
+// the ray crosses between t0 and t1: visit(x, y, z, t_in, t_out) for each, in order, until it
+// returns false.
+template <class Visit>
+void walk_cells(const Ray& ray, const glm::dvec3& origin, double cell, const std::array<std::int64_t, 3>& lo,
+                const std::array<std::int64_t, 3>& hi, double t0, double t1, Visit&& visit) {
     std::array<std::int64_t, 3> c{}, step{};
     std::array<double, 3> t_next{}, t_delta{};
-    const glm::dvec3 entry = ray.origin + t_enter * ray.direction - origin_;
+    const glm::dvec3 entry = ray.origin + t0 * ray.direction - origin;
     for (int a = 0; a < 3; ++a) {
-        c[a] = std::clamp(static_cast<std::int64_t>(std::floor(entry[a] / cell)), std::int64_t{0}, count - 1);
+        c[a] = std::clamp(static_cast<std::int64_t>(std::floor(entry[a] / cell)), lo[a], hi[a]);
         const double d = ray.direction[a];
         step[a] = d > 0.0 ? 1 : -1;
         t_delta[a] = d != 0.0 ? cell / std::abs(d) : std::numeric_limits<double>::infinity();
-        const double boundary = origin_[a] + static_cast<double>(c[a] + (d > 0.0 ? 1 : 0)) * cell;
+        const double boundary = origin[a] + static_cast<double>(c[a] + (d > 0.0 ? 1 : 0)) * cell;
         t_next[a] = d != 0.0 ? (boundary - ray.origin[a]) / d : std::numeric_limits<double>::infinity();
     }
-    for (double t = t_enter; t <= t_exit && (!best || t <= best->distance);) {
-        for (std::uint32_t ref = cells_.find(cell_key(level, c[0], c[1], c[2])); ref != CellTable::kNone; ref = refs_[ref].next) {
-            const rgb::FaceId f(refs_[ref].slot);
-            const std::optional<double> distance = front_hit(ray, geometry.corners(f));
-            if (distance && (!best || *distance < best->distance))
-                best = SurfaceHit{f, ray.origin + *distance * ray.direction, *distance};
-        }
+    for (double t = t0; t <= t1;) {
         const int a = t_next[0] < t_next[1] ? (t_next[0] < t_next[2] ? 0 : 2) : (t_next[1] < t_next[2] ? 1 : 2);
+        if (!visit(c[0], c[1], c[2], t, std::min(t_next[a], t1))) return;
         t = t_next[a];
         c[a] += step[a];
-        if (c[a] < 0 || c[a] >= count) break;
+        if (c[a] < lo[a] || c[a] > hi[a]) return;
         t_next[a] += t_delta[a];
     }
 }
 
+// One grid: blocks of cells first, skipping the empty ones, then the cells of each occupied block,
+// until past the best hit.
+void SurfaceIndex::walk_level(const render::SurfaceGeometry& geometry, const Ray& ray, int level, double t_enter, double t_exit,
+                              std::optional<SurfaceHit>& best) const {
+    const double cell = std::ldexp(finest_cell_, level);
+    const std::int64_t cells = cells_at(level);
+    const std::int64_t blocks = (cells + kBlockCells - 1) / kBlockCells;
+    auto before_best = [&](double t) { return !best || t <= best->distance; };
+    walk_cells(ray, origin_, cell * kBlockCells, {0, 0, 0}, {blocks - 1, blocks - 1, blocks - 1}, t_enter, t_exit,
+               [&](std::int64_t bx, std::int64_t by, std::int64_t bz, double t_in, double t_out) {
+                   if (!before_best(t_in)) return false;
+                   if (blocks_.find(cell_key(level, bx, by, bz)) == CellTable::kNone) return true;
+                   const std::array<std::int64_t, 3> lo{bx * kBlockCells, by * kBlockCells, bz * kBlockCells};
+                   const std::array<std::int64_t, 3> hi{std::min(lo[0] + kBlockCells, cells) - 1, std::min(lo[1] + kBlockCells, cells) - 1,
+                                                        std::min(lo[2] + kBlockCells, cells) - 1};
+                   walk_cells(ray, origin_, cell, lo, hi, t_in, t_out, [&](std::int64_t x, std::int64_t y, std::int64_t z, double t, double) {
+                       if (!before_best(t)) return false;
+                       for (std::uint32_t ref = cells_.find(cell_key(level, x, y, z)); ref != CellTable::kNone; ref = refs_[ref].next) {
+                           const rgb::FaceId f(refs_[ref].slot);
+                           const std::optional<double> distance = front_hit(ray, geometry.corners(f));
+                           if (distance && (!best || *distance < best->distance))
+                               best = SurfaceHit{f, ray.origin + *distance * ray.direction, *distance};
+                       }
+                       return true;
+                   });
+                   return true;
+               });
+}
+
 std::size_t SurfaceIndex::memory_bytes() const {
-    return placements_.capacity() * sizeof(Placement) + refs_.capacity() * sizeof(Ref) + cells_.memory_bytes();
+    return placements_.capacity() * sizeof(Placement) + refs_.capacity() * sizeof(Ref) + cells_.memory_bytes() + blocks_.memory_bytes();
 }
 
 }  // namespace app

@@ -2,9 +2,10 @@
 // A spatial index over the displayed triangles, for picking: each face slot of a
 // render::SurfaceGeometry sits in the cells of a sparse grid whose cell size suits it (one grid per
 // power of two of cell size, a triangle in the grid whose cells are at least its size, so in at most
-// eight cells). A ray walks each grid that holds triangles cell by cell, coarse grids first, and
-// stops once it is past the nearest hit so far: the cost follows the cells the ray crosses, not the
-// triangles. Updating costs in proportion to the slots that changed.
+// eight cells). A ray walks each grid that holds triangles, coarse grids first, block by block
+// (8x8x8 cells, empty blocks skipped) and then cell by cell, and stops once it is past the nearest
+// hit so far: the cost follows the occupied cells the ray crosses, not the triangles. Updating costs
+// in proportion to the slots that changed.
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -48,6 +49,8 @@ private:
 
     Placement placement(const render::SurfaceGeometry& geometry, std::uint32_t slot) const;
     void place(std::uint32_t slot, const Placement& where);
+    // The key of the block of cells holding `cell` (a cell key of the grid whose cells are blocks).
+    static std::uint64_t block_of(std::uint64_t cell);
     void insert(std::uint64_t cell, std::uint32_t slot);
     void remove(std::uint64_t cell, std::uint32_t slot);
     void walk_level(const render::SurfaceGeometry& geometry, const Ray& ray, int level, double t_enter, double t_exit,
@@ -58,6 +61,7 @@ private:
     std::vector<Placement> placements_;  // per face slot
     std::array<std::size_t, 32> per_level_{};
     CellTable cells_;        // cell key -> first Ref
+    CellTable blocks_;       // block key -> Refs in its cells
     std::vector<Ref> refs_;  // singly linked lists per cell, free ones chained from free_ref_
     std::uint32_t free_ref_ = CellTable::kNone;
 };

@@ -16,16 +16,19 @@ namespace {
 
 // A step: a header byte (removed faces in bits 0-2, added faces in bits 3-5, a removed vertex in
 // bit 6, an added vertex in bit 7), the removed faces (slot, corners, type), the removed vertex
-// (slot, level and boundary flag, insertion position, address), the added vertex's slot, the added
+// (slot, level with flags, insertion position, address, and its limit if the mesh had cached it, so
+// that what shows the vertex again need not recompute it), the added vertex's slot, the added
 // faces' slots, and a trailer byte with the length of all that.
 constexpr std::size_t kFaceBytes = 4 + 3 * 4 + 1;
 constexpr std::size_t kVertexBytes = 4 + 1 + 3 * 8 + 3 * 4;
+constexpr std::size_t kLimitBytes = 3 * 8;
 constexpr std::size_t kMaxFaces = 6;
-constexpr std::size_t kMaxStepBytes = 1 + kMaxFaces * kFaceBytes + kVertexBytes + 4 + kMaxFaces * 4 + 1;
+constexpr std::size_t kMaxStepBytes = 1 + kMaxFaces * kFaceBytes + kVertexBytes + kLimitBytes + 4 + kMaxFaces * 4 + 1;
 static_assert(kMaxStepBytes - 1 <= 255, "a step's length must fit its trailer byte");
 constexpr std::uint8_t kRemovedVertexBit = 1u << 6;
 constexpr std::uint8_t kAddedVertexBit = 1u << 7;
-constexpr std::uint8_t kBoundaryBit = 1u << 6;
+constexpr std::uint8_t kBoundaryBit = 1u << 6;  // in the level byte
+constexpr std::uint8_t kLimitBit = 1u << 7;     // in the level byte
 constexpr std::uint32_t kFirstChunkBytes = 4096;
 constexpr std::uint32_t kLargestChunkBytes = 1u << 20;
 
@@ -150,14 +153,16 @@ void Journal::vertex_removed(const Mesh& mesh, VertexId v) {
     if (!enter(Phase::VertexRemoved)) return;
     record_.chunks_.back().data[step_start_] |= kRemovedVertexBit;
     const SurfacePoint address = mesh.address(v);
-    std::array<std::uint8_t, kVertexBytes> bytes;
+    const std::optional<glm::dvec3> limit = mesh.cached_limit(v);
+    std::array<std::uint8_t, kVertexBytes + kLimitBytes> bytes;
     std::memcpy(bytes.data(), &v.idx, 4);
-    bytes[4] = static_cast<std::uint8_t>(mesh.level(v) | (mesh.is_boundary(v) ? kBoundaryBit : 0));
+    bytes[4] = static_cast<std::uint8_t>(mesh.level(v) | (mesh.is_boundary(v) ? kBoundaryBit : 0) | (limit ? kLimitBit : 0));
     std::memcpy(bytes.data() + 5, &mesh.insertion_position(v), 24);
     std::memcpy(bytes.data() + 29, &address.face, 4);
     std::memcpy(bytes.data() + 33, &address.a[1], 4);
     std::memcpy(bytes.data() + 37, &address.a[2], 4);
-    append(bytes.data(), bytes.size());
+    if (limit) std::memcpy(bytes.data() + kVertexBytes, &*limit, kLimitBytes);
+    append(bytes.data(), limit ? bytes.size() : kVertexBytes);
 }
 
 void Journal::vertex_added(const Mesh&, VertexId v, VertexId, VertexId) {
@@ -203,10 +208,11 @@ void Journal::revert_step(const std::uint8_t* step) {
     }
     std::optional<Mesh::NewVertex> vertex;
     VertexId vertex_slot;
+    std::optional<glm::dvec3> limit;
     if ((header & kRemovedVertexBit) != 0) {
         vertex_slot = VertexId(in.read<std::uint32_t>());
         const std::uint8_t info = in.read<std::uint8_t>();
-        Mesh::NewVertex v{info & ~kBoundaryBit, in.read<glm::dvec3>(), (info & kBoundaryBit) != 0, {}, {}};
+        Mesh::NewVertex v{info & ~(kBoundaryBit | kLimitBit), in.read<glm::dvec3>(), (info & kBoundaryBit) != 0, {}, {}};
         SurfacePoint address;
         address.face = in.read<std::uint32_t>();
         address.level = v.level;
@@ -215,6 +221,7 @@ void Journal::revert_step(const std::uint8_t* step) {
         address.a[0] = (std::uint32_t(1) << address.level) - address.a[1] - address.a[2];
         v.address = address;
         vertex = v;
+        if ((info & kLimitBit) != 0) limit = in.read<glm::dvec3>();
     }
     InlineVector<VertexId, 1> removed_vertex;
     if ((header & kAddedVertexBit) != 0) removed_vertex.push_back(VertexId(in.read<std::uint32_t>()));
@@ -235,6 +242,8 @@ void Journal::revert_step(const std::uint8_t* step) {
     const FaceList created = mesh_.replace_faces(added, recreated, removed_vertex, vertex ? &*vertex : nullptr);
     if (!std::equal(created.begin(), created.end(), removed_slots.begin()))
         throw std::logic_error("journal: the mesh is not the one the record left");
+    // A function of the base mesh alone, so the value computed before is the value.
+    if (limit) mesh_.cache_limit(vertex_slot, *limit);
 }
 
 }  // namespace rgb

@@ -1,7 +1,7 @@
 #pragma once
 // An undo journal: while recording, every Mesh::replace_faces becomes one step holding what it
 // removed (the faces with their slots, corners and types; the vertex with its slot, level, boundary
-// flag, insertion position and address) and the slots of what it added. A step is exactly reversible
+// flag, insertion position, address and cached limit) and the slots of what it added. A step is exactly reversible
 // by one replace_faces that removes what it added and recreates what it removed, so undoing an edit
 // costs in proportion to the edit, the record takes memory in proportion to the edit (about 50 bytes
 // a split), and observers (the renderer) see ordinary changes.
