@@ -15,7 +15,8 @@ void RequestJob::add(Pieces pieces, const std::string& script_lines) {
 
 bool RequestJob::step(std::chrono::microseconds slice) {
     const auto deadline = std::chrono::steady_clock::now() + slice;
-    do {
+    // At least one piece, however short the slice.
+    for (bool applied = false; !applied || std::chrono::steady_clock::now() < deadline;) {
         if (pieces_.empty()) {
             if (requests_.empty()) break;
             for (rgb::LevelRequest& piece : requests_.front()()) pieces_.push_back(std::move(piece));
@@ -28,7 +29,8 @@ bool RequestJob::step(std::chrono::microseconds slice) {
         pieces_.pop_front();
         ++pieces_done_;
         if (pieces_.empty()) ++requests_done_;
-    } while (std::chrono::steady_clock::now() < deadline);
+        applied = true;
+    }
     return open_ || !pieces_.empty() || !requests_.empty();
 }
 

@@ -43,6 +43,22 @@ TEST(BrushTarget, ShiftSwapsRefineAndCoarsen) {
     EXPECT_EQ(effective_mode(BrushMode::Refine, false), BrushMode::Refine);
 }
 
+// The hit maps to the point with the same barycentric coordinates in the face's base-space
+// triangle; here the displayed triangle is the base one moved and scaled by 2, so the hit at
+// d0 + 0.25 (d1 - d0) + 0.5 (d2 - d0) is b0 + 0.25 (b1 - b0) + 0.5 (b2 - b0), and radii halve.
+TEST(BrushTarget, AHitMapsToBaseSpaceByItsBarycentricCoordinates) {
+    const std::vector<glm::dvec3> p{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    const std::vector<rgb::Triangle> t{{0, 1, 2}};
+    const rgb::Mesh mesh(p, t);
+    const std::array<glm::dvec3, 3> displayed{glm::dvec3(5, 5, 1), glm::dvec3(7, 5, 1), glm::dvec3(5, 7, 1)};
+    const glm::dvec3 point = displayed[0] + 0.25 * (displayed[1] - displayed[0]) + 0.5 * (displayed[2] - displayed[0]);
+    const BaseSpaceHit hit = to_base_space(mesh, rgb::FaceId(0), displayed, point, 0.4);
+    EXPECT_NEAR(hit.centre.x, 0.25, 1e-12);
+    EXPECT_NEAR(hit.centre.y, 0.5, 1e-12);
+    EXPECT_EQ(hit.centre.z, 0.0);
+    EXPECT_NEAR(hit.radius, 0.2, 1e-12);
+}
+
 TEST(StrokeSampler, SpacesDabsEvenlyAcrossSamples) {
     StrokeSampler sampler;
     EXPECT_EQ(sampler.begin({0.0f, 0.0f}).size(), 1u);
