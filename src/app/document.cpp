@@ -1,5 +1,6 @@
 #include "app/document.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <utility>
 
@@ -53,10 +54,34 @@ bool Document::redo() {
 
 const render::SurfaceGeometry& Document::geometry() {
     if (!changes_->empty()) {
-        index_.update(geometry_, geometry_.update(mesh_, *changes_));
+        const std::vector<render::SlotRange> ranges = geometry_.update(mesh_, *changes_);
         changes_->clear();
+        index_.update(geometry_, ranges);
+        if (!display_changes_.rebuilt)
+            display_changes_.ranges.insert(display_changes_.ranges.end(), ranges.begin(), ranges.end());
     }
     return geometry_;
+}
+
+void Document::set_position_source(render::PositionSource source) {
+    if (geometry_.source() == source) return;
+    geometry_.set_source(source);
+    resync();
+}
+
+Document::DisplayChanges Document::take_display_changes() {
+    DisplayChanges taken = std::exchange(display_changes_, DisplayChanges{});
+    // Several updates since the last take: one sorted, coalesced list.
+    std::sort(taken.ranges.begin(), taken.ranges.end(), [](const render::SlotRange& a, const render::SlotRange& b) { return a.first < b.first; });
+    std::vector<render::SlotRange> merged;
+    for (const render::SlotRange& r : taken.ranges) {
+        if (!merged.empty() && r.first <= merged.back().first + merged.back().count)
+            merged.back().count = std::max(merged.back().count, r.first + r.count - merged.back().first);
+        else
+            merged.push_back(r);
+    }
+    taken.ranges = std::move(merged);
+    return taken;
 }
 
 std::optional<SurfaceHit> Document::pick(const Ray& ray) { return index_.pick(geometry(), ray); }
@@ -70,7 +95,7 @@ void Document::resync() {
     changes_->clear();
     geometry_.rebuild(mesh_);
     index_.rebuild(mesh_, geometry_);
-    ++generation_;
+    display_changes_ = DisplayChanges{{}, true};
 }
 
 std::string document_title(const Document& document) {

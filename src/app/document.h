@@ -36,9 +36,6 @@ public:
     const rgb::Mesh& mesh() const { return mesh_; }
     const std::string& path() const { return path_; }
     bool dirty() const { return dirty_; }
-    // Changes whenever the mesh is replaced wholesale (open, adopt), so that views attached to it
-    // rebuild; undo and redo change it in place, through its observers.
-    std::uint64_t generation() const { return generation_; }
 
     // Around every undoable edit: changed == false means the edit did nothing and leaves no step.
     void begin_edit(std::string label);
@@ -51,8 +48,17 @@ public:
     UndoHistory& history() { return history_; }
     const UndoHistory& history() const { return history_; }
 
-    // The displayed triangles, brought up to date with the mesh.
+    // The displayed triangles, brought up to date with the mesh. The renderer draws these too.
     const render::SurfaceGeometry& geometry();
+    // Which positions the triangles show (and picking finds).
+    void set_position_source(render::PositionSource source);
+    // The slots geometry() changed since the last call (sorted, coalesced), or that it was rebuilt
+    // whole: what the renderer must upload.
+    struct DisplayChanges {
+        std::vector<render::SlotRange> ranges;
+        bool rebuilt = false;
+    };
+    DisplayChanges take_display_changes();
     // The nearest front-facing displayed triangle along the ray.
     std::optional<SurfaceHit> pick(const Ray& ray);
 
@@ -66,10 +72,10 @@ private:
     UndoHistory history_{mesh_};
     std::string path_;
     bool dirty_ = false;
-    std::uint64_t generation_ = 0;
     render::SurfaceGeometry geometry_;
     SurfaceIndex index_;
     std::unique_ptr<render::MeshChanges> changes_;
+    DisplayChanges display_changes_;
 };
 
 // "name.obj*" for the title bar and panels: the file name, or "untitled", with the unsaved mark.

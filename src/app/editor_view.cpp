@@ -8,14 +8,12 @@ namespace app {
 
 void EditorView::draw(Editor& editor, glm::ivec2 framebuffer, double dt_s, bool show_cursor) {
     Document& document = editor.document();
-    if (attached_generation_ != document.generation()) {
-        // The mesh object was replaced (open, undo, redo): follow the new one.
-        renderer_.detach();
-        renderer_.attach(document.mesh());
-        attached_generation_ = document.generation();
-    }
     draw_panels(editor, panels_, options_, dt_s);
-    renderer_.set_positions(options_.positions);
+    // The document's displayed triangles, which picking uses too: the renderer uploads what changed.
+    document.set_position_source(options_.positions);
+    const render::SurfaceGeometry& geometry = document.geometry();
+    const Document::DisplayChanges changes = document.take_display_changes();
+    renderer_.show(document.mesh(), geometry, changes.ranges, changes.rebuilt);
 
     options_.brush.reset();
     if (show_cursor && !ImGui::GetIO().WantCaptureMouse)

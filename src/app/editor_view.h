@@ -27,7 +27,6 @@ private:
     render::Renderer renderer_;
     render::RenderOptions options_;
     PanelState panels_;
-    std::uint64_t attached_generation_ = ~std::uint64_t{0};
 };
 
 }  // namespace app

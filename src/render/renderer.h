@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -58,6 +59,10 @@ public:
     // Starts following `mesh` (which must outlive the attachment) and uploads it whole.
     void attach(rgb::Mesh& mesh);
     void detach();
+    // Instead of a copy of its own, draws `geometry` of `mesh`, kept current by its owner (the
+    // editor's document, which picks on it too), both to outlive the renderer's use of them:
+    // `changed` are the slots changed since the previous call, or everything when `rebuilt`.
+    void show(const rgb::Mesh& mesh, const SurfaceGeometry& geometry, std::span<const SlotRange> changed, bool rebuilt);
 
     // Uploads what changed since the last sync.
     void sync();
