@@ -20,6 +20,7 @@ namespace {
 
 constexpr glm::vec3 kPlainColour{0.78f, 0.78f, 0.76f};
 constexpr glm::vec3 kWireColour{0.12f, 0.12f, 0.12f};
+constexpr glm::vec3 kBackColour{0.62f, 0.36f, 0.32f};
 constexpr glm::vec3 kBrushColour{1.0f, 0.55f, 0.0f};
 constexpr glm::vec3 kBaseMeshColour{0.1f, 0.1f, 0.1f};
 constexpr glm::vec3 kLegendTextColour{0.1f, 0.1f, 0.1f};
@@ -169,7 +170,7 @@ void Renderer::draw(const OrbitCamera& camera, const RenderOptions& options, glm
     const int max_level = s.drawn().max_face_level();
     std::vector<glm::vec3> level_colours(kMaxLevelColours);
     for (int level = 0; level < kMaxLevelColours; ++level)
-        level_colours[static_cast<std::size_t>(level)] = level_colour(level, max_level);
+        level_colours[static_cast<std::size_t>(level)] = level_colour(level);
     const glm::vec3 rgb_colours[3] = {rgb_type_colour(rgb::Colour::Green), rgb_type_colour(rgb::Colour::Red),
                                       rgb_type_colour(rgb::Colour::Blue)};
 
@@ -189,6 +190,7 @@ void Renderer::draw(const OrbitCamera& camera, const RenderOptions& options, glm
     surface.set("u_wire", options.wireframe);
     surface.set("u_wire_width", options.wire_width_px);
     surface.set("u_wire_colour", kWireColour);
+    surface.set("u_back_colour", kBackColour);
     surface.set("u_brush", options.brush.has_value());
     if (options.brush) {
         surface.set("u_brush_centre", options.brush->centre * shading_scale);
