@@ -11,11 +11,22 @@ Document::Document() : changes_(std::make_unique<render::MeshChanges>(mesh_)) { 
 Document::~Document() = default;
 
 std::vector<std::string> Document::open(const std::string& path) {
-    std::vector<std::string> warnings;
-    rgb::Mesh loaded = rgbio::load_mesh(path, &warnings);
+    LoadedDocument loaded = load_document(path, geometry_.source());
+    std::vector<std::string> warnings = std::move(loaded.warnings);
     adopt(std::move(loaded), path);
-    dirty_ = false;
     return warnings;
+}
+
+void Document::adopt(LoadedDocument loaded, std::string path, bool dirty) {
+    mesh_ = std::move(loaded.mesh);  // observers stay with the object
+    changes_->clear();
+    geometry_ = std::move(loaded.geometry);
+    index_ = std::move(loaded.index);
+    display_changes_ = DisplayChanges{{}, true};
+    path_ = std::move(path);
+    history_.clear();
+    dirty_ = dirty;
+    ++changes_count_;
 }
 
 void Document::adopt(rgb::Mesh mesh, std::string path) {
@@ -23,6 +34,7 @@ void Document::adopt(rgb::Mesh mesh, std::string path) {
     path_ = std::move(path);
     history_.clear();
     dirty_ = false;
+    ++changes_count_;
 }
 
 void Document::save(const std::string& path, const rgbio::SaveOptions& options) {
@@ -31,11 +43,17 @@ void Document::save(const std::string& path, const rgbio::SaveOptions& options) 
     dirty_ = false;
 }
 
+void Document::saved_as(const std::string& path, std::uint64_t changes) {
+    path_ = path;
+    dirty_ = dirty_ && changes != changes_count_;
+}
+
 void Document::begin_edit(std::string label) { history_.begin_edit(std::move(label)); }
 
 void Document::end_edit(bool changed, std::optional<std::string> script) {
     history_.end_edit(changed, std::move(script));
     dirty_ = dirty_ || changed;
+    changes_count_ += changed;
 }
 
 bool Document::abandon_edit() { return history_.abandon_edit(); }
@@ -43,12 +61,14 @@ bool Document::abandon_edit() { return history_.abandon_edit(); }
 bool Document::undo() {
     if (!history_.undo()) return false;
     dirty_ = true;
+    ++changes_count_;
     return true;
 }
 
 bool Document::redo() {
     if (!history_.redo()) return false;
     dirty_ = true;
+    ++changes_count_;
     return true;
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "app/loaded_document.h"
 #include "app/surface_index.h"
 #include "app/undo_history.h"
 #include "io/mesh_file.h"
@@ -27,15 +28,23 @@ public:
     // Replaces the mesh by the file's (throws rgbio::ObjError; the document is unchanged then).
     // Returns the loader's warnings.
     std::vector<std::string> open(const std::string& path);
+    // Takes over a document read elsewhere (load_document) as the file `path`; `dirty` for work
+    // that is not in that file (a recovery copy).
+    void adopt(LoadedDocument loaded, std::string path, bool dirty = false);
     // Adopts `mesh` as an unsaved document named `path` (may be empty).
     void adopt(rgb::Mesh mesh, std::string path);
     // Throws rgbio::SaveError. Clears the unsaved mark and makes `path` the document's file.
     void save(const std::string& path, const rgbio::SaveOptions& options);
+    // A copy saved elsewhere (in the background) reached `path`: the file is the document's, and
+    // clean if nothing changed since the copy was made at change count `changes`.
+    void saved_as(const std::string& path, std::uint64_t changes);
 
     rgb::Mesh& mesh() { return mesh_; }
     const rgb::Mesh& mesh() const { return mesh_; }
     const std::string& path() const { return path_; }
     bool dirty() const { return dirty_; }
+    // Counts the changes of the mesh (edits, undo, redo) since the document was made.
+    std::uint64_t changes() const { return changes_count_; }
 
     // Around every undoable edit: changed == false means the edit did nothing and leaves no step.
     void begin_edit(std::string label);
@@ -72,6 +81,7 @@ private:
     UndoHistory history_{mesh_};
     std::string path_;
     bool dirty_ = false;
+    std::uint64_t changes_count_ = 0;
     render::SurfaceGeometry geometry_;
     SurfaceIndex index_;
     std::unique_ptr<render::MeshChanges> changes_;

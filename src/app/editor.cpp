@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <filesystem>
 #include <new>
+#include <thread>
+
+#include <unistd.h>
 #include <utility>
 
 #include <glm/geometric.hpp>
@@ -26,7 +29,19 @@ double milliseconds_since(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-Editor::Editor(glm::ivec2 viewport) : viewport_(viewport) { frame_mesh(); }
+Editor::Editor(glm::ivec2 viewport) : Editor(EditorOptions{viewport, std::nullopt, 0, std::chrono::seconds(120)}) {}
+
+Editor::Editor(const EditorOptions& options) : viewport_(options.viewport), recovery_interval_(options.recovery_interval) {
+    frame_mesh();
+    recovery_due_ = std::chrono::steady_clock::now() + recovery_interval_;
+    if (!options.recovery_folder) return;
+    recovery_.emplace(*options.recovery_folder, options.process_id != 0 ? options.process_id : static_cast<int>(::getpid()));
+    const std::vector<RecoveryStore::Orphan> orphans = recovery_->orphans();
+    if (orphans.empty()) return;
+    offered_ = orphans.front();
+    pending_ = Pending::Recover;
+    pending_path_ = offered_->document_path;
+}
 
 void Editor::set_viewport(glm::ivec2 viewport) { viewport_ = glm::max(viewport, glm::ivec2(1)); }
 
@@ -58,7 +73,14 @@ void Editor::mouse_released(MouseButton button) {
     if (button != MouseButton::Left || drag_ != Drag::None) drag_ = Drag::None;
 }
 
-void Editor::scrolled(float steps) { camera_.zoom(steps); }
+// Towards the surface under the cursor, or the point of the cursor's ray as deep as the target.
+void Editor::scrolled(float steps) {
+    const Ray ray = camera_.ray_through(mouse_, viewport_);
+    const std::optional<SurfaceHit> hit = pick(mouse_);
+    const glm::dvec3 target(camera_.camera().target);
+    const glm::dvec3 anchor = hit ? hit->point : ray.origin + ray.direction * glm::dot(target - ray.origin, ray.direction);
+    camera_.zoom(steps, anchor);
+}
 
 void Editor::key_pressed(Key key, Modifiers mods) {
     mods_ = mods;
@@ -66,7 +88,11 @@ void Editor::key_pressed(Key key, Modifiers mods) {
         switch (key) {
             case Key::Z: mods.shift ? redo() : undo(); break;
             case Key::Y: redo(); break;
-            case Key::S: save(); break;
+            case Key::S:
+                if (mods.shift) browse_request_ = Browse::SaveAs;
+                else request_save();
+                break;
+            case Key::O: browse_request_ = Browse::Open; break;
             case Key::Q: request_quit(); break;
             default: break;
         }
@@ -78,6 +104,8 @@ void Editor::key_pressed(Key key, Modifiers mods) {
         case Key::S: sample_level_under_cursor(); break;
         case Key::LeftBracket: grow_radius(brush_, -1); break;
         case Key::RightBracket: grow_radius(brush_, 1); break;
+        case Key::Minus: brush_.target_level = std::max(brush_.target_level - 1, 0); break;
+        case Key::Equal: brush_.target_level = std::min(brush_.target_level + 1, kMaxBrushLevel); break;
         case Key::Digit1: brush_.mode = BrushMode::Refine; break;
         case Key::Digit2: brush_.mode = BrushMode::Coarsen; break;
         case Key::Digit3: brush_.mode = BrushMode::Set; break;
@@ -90,6 +118,8 @@ void Editor::key_pressed(Key key, Modifiers mods) {
 }
 
 void Editor::update(std::chrono::microseconds job_slice) {
+    poll_file_task();
+    poll_recovery_task();
     const auto start = std::chrono::steady_clock::now();
     const auto deadline = start + job_slice;
     std::size_t operations = 0;
@@ -115,11 +145,15 @@ void Editor::update(std::chrono::microseconds job_slice) {
     const auto catch_up = std::chrono::steady_clock::now();
     document_.geometry();
     timing_.geometry_ms = milliseconds_since(catch_up);
+    keep_recovery_copy(false);
 }
 
 void Editor::finish_work() {
     if (stroke_) end_stroke();
-    while (!jobs_.empty()) update(std::chrono::seconds(1));
+    while (!jobs_.empty() || file_task_ || recovery_task_ || save_when_idle_) {
+        update(std::chrono::seconds(1));
+        if (jobs_.empty()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
 }
 
 void Editor::queue(std::unique_ptr<MeshJob> job) { jobs_.push_back(std::move(job)); }
@@ -209,12 +243,18 @@ void Editor::dab(glm::vec2 px) {
 
 // ---- whole-mesh actions -----------------------------------------------------------------------
 
+// Both fit the mesh into the part of the viewport the panel leaves free, centred there.
 void Editor::frame_mesh() {
-    const render::BoundingSphere bounds = document_.geometry().bounds(document_.mesh());
-    camera_.refit(bounds, viewport_);
+    const glm::ivec2 free_area(std::max(viewport_.x - static_cast<int>(covered_right_), 1), viewport_.y);
+    camera_.refit(document_.geometry().bounds(document_.mesh()), free_area);
+    camera_.pan({-0.5f * covered_right_, 0.0f}, viewport_);
 }
 
-void Editor::reset_view() { camera_.frame(document_.geometry().bounds(document_.mesh()), viewport_); }
+void Editor::reset_view() {
+    const glm::ivec2 free_area(std::max(viewport_.x - static_cast<int>(covered_right_), 1), viewport_.y);
+    camera_.frame(document_.geometry().bounds(document_.mesh()), free_area);
+    camera_.pan({-0.5f * covered_right_, 0.0f}, viewport_);
+}
 
 bool Editor::undo() {
     if (refuse_if_busy("undo")) return false;
@@ -234,11 +274,13 @@ bool Editor::redo() {
 
 void Editor::start_flood_fill(int level) {
     if (refuse_if_busy("set all")) return;
+    keep_recovery_copy(true);
     queue(make_flood_fill(document_.mesh(), std::clamp(level, 0, kMaxBrushLevel)));
 }
 
 void Editor::start_auto_lod() {
     if (refuse_if_busy("start automatic LOD")) return;
+    keep_recovery_copy(true);
     queue(std::make_unique<AutoLodJob>(document_.mesh(), auto_lod_settings_));
 }
 
@@ -262,101 +304,6 @@ bool Editor::sample_level_under_cursor() {
     if (!hit) return false;
     brush_.target_level = document_.mesh().level(hit->face);
     return true;
-}
-
-// ---- files and confirmations ------------------------------------------------------------------
-
-bool Editor::open(const std::string& path) {
-    if (refuse_if_busy("open a file")) return false;
-    try {
-        load(path);
-    } catch (const rgbio::ObjError& error) {
-        report(error.what(), true);
-        return false;
-    }
-    return true;
-}
-
-void Editor::load(const std::string& path) {
-    const std::vector<std::string> warnings = document_.open(path);
-    report(warnings.empty() ? "opened " + path : path + ": " + warnings.front() + (warnings.size() > 1 ? " (and more)" : ""), false);
-    remember_recent(path);
-    reset_view();
-}
-
-bool Editor::save() {
-    if (document_.path().empty()) {
-        report("the mesh has no file yet: use Save as", true);
-        return false;
-    }
-    return save_as(document_.path());
-}
-
-bool Editor::save_as(const std::string& path) {
-    if (refuse_if_busy("save")) return false;
-    try {
-        document_.save(path, save_options_);
-        report("saved " + path, false);
-    } catch (const rgbio::SaveError& error) {
-        report(error.what(), true);
-        return false;
-    }
-    remember_recent(path);
-    return true;
-}
-
-bool Editor::save_strokes(const std::string& path) {
-    const UndoHistory::SessionScript session = document_.history().session_script();
-    const std::string opened = document_.path().empty() ? std::string("the mesh") : document_.path();
-    try {
-        rgbio::write_file_atomically(path, "# rgbsub edit session on " + opened + ": rgbsub apply " + opened + " " + path +
-                                               " -o OUT.obj replays it\n" + session.text);
-    } catch (const rgbio::SaveError& error) {
-        report(error.what(), true);
-        return false;
-    }
-    if (session.unscripted_steps > 0)
-        report("saved the strokes to " + path + ", but " + std::to_string(session.unscripted_steps) +
-                   " edit(s) in effect (automatic LOD, or stopped before the end) have no script: a replay will differ",
-               true);
-    else
-        report("saved the strokes to " + path, false);
-    return true;
-}
-
-void Editor::request_open(const std::string& path) {
-    if (document_.dirty()) {
-        pending_ = Pending::DiscardForOpen;
-        pending_path_ = path;
-    } else {
-        open(path);
-    }
-}
-
-void Editor::request_save_as(const std::string& path) {
-    std::error_code error;
-    if (path != document_.path() && std::filesystem::exists(path, error)) {
-        pending_ = Pending::Overwrite;
-        pending_path_ = path;
-    } else {
-        save_as(path);
-    }
-}
-
-void Editor::request_quit() {
-    if (document_.dirty()) pending_ = Pending::DiscardForQuit;
-    else quit_ = true;
-}
-
-void Editor::answer_pending(bool proceed) {
-    const Pending question = std::exchange(pending_, Pending::None);
-    if (!proceed) return;
-    switch (question) {
-        case Pending::DiscardForQuit: quit_ = true; break;
-        case Pending::DiscardForOpen: open(pending_path_); break;
-        case Pending::Overwrite: save_as(pending_path_); break;
-        case Pending::None: break;
-    }
 }
 
 void Editor::remember_recent(const std::string& path) {

@@ -10,19 +10,23 @@
 #include <cstddef>
 #include <deque>
 #include <exception>
+#include <filesystem>
 #include <functional>
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/vec2.hpp>
 
 #include "app/auto_lod.h"
+#include "app/background_task.h"
 #include "app/brush.h"
 #include "app/document.h"
 #include "app/input.h"
 #include "app/mesh_job.h"
+#include "app/recovery_store.h"
 #include "app/request_job.h"
 #include "app/stroke_sampler.h"
 #include "app/stroke_script.h"
@@ -33,7 +37,16 @@
 namespace app {
 
 // A question the user must answer before the editor goes on.
-enum class Pending { None, DiscardForQuit, DiscardForOpen, Overwrite };
+enum class Pending { None, DiscardForQuit, DiscardForOpen, Overwrite, Recover };
+
+struct EditorOptions {
+    glm::ivec2 viewport{1280, 800};
+    // Where recovery copies of unsaved work go (recovery_store.h); none: no copies are kept.
+    std::optional<std::filesystem::path> recovery_folder;
+    int process_id = 0;  // names this session's copy; 0: this process
+    // Unsaved work is copied this often (and before whole-mesh actions).
+    std::chrono::seconds recovery_interval{120};
+};
 
 // What the engine and picking cost, for the statistics panel and the benchmarks.
 struct EngineTiming {
@@ -45,9 +58,15 @@ struct EngineTiming {
     std::size_t dabs = 0;
 };
 
+// The side panel's width in pixels (editor_panels.cpp): framing keeps the mesh clear of it.
+inline constexpr float kPanelWidth = 320.0f;
+
 class Editor {
 public:
     explicit Editor(glm::ivec2 viewport = {1280, 800});
+    // With a recovery folder, offers (Pending::Recover) the newest copy a session that did not exit
+    // cleanly left there.
+    explicit Editor(const EditorOptions& options);
 
     Document& document() { return document_; }
     const Document& document() const { return document_; }
@@ -58,6 +77,8 @@ public:
     rgbio::SaveOptions& save_options() { return save_options_; }
     glm::ivec2 viewport() const { return viewport_; }
     void set_viewport(glm::ivec2 viewport);
+    // Pixels at the right of the viewport that the panel covers: framing keeps the mesh out of them.
+    void set_covered_right(float pixels) { covered_right_ = pixels; }
 
     // ---- input ----
     void mouse_moved(glm::vec2 px);
@@ -67,9 +88,10 @@ public:
     void key_pressed(Key key, Modifiers mods);
     // Shift held or not, for the stroke under way and the cursor preview.
     void set_modifiers(Modifiers mods) { mods_ = mods; }
-    // Advances the queued work (strokes, whole-mesh jobs) by about a time slice; call once per frame.
+    // Advances the queued work (strokes, whole-mesh jobs) by about a time slice, takes the results
+    // of files read or written in the background and keeps the recovery copy; call once per frame.
     void update(std::chrono::microseconds job_slice);
-    // Runs the queued work to its end (tests, headless frames).
+    // Runs the queued work and the files being read or written to their end (tests, headless frames).
     void finish_work();
 
     // ---- brush ----
@@ -96,22 +118,37 @@ public:
     bool sample_level_under_cursor();
 
     // ---- files ----
-    // Each returns false and sets an error message when it cannot proceed.
+    // Right away, on this thread (tests, headless frames); each returns false and sets an error
+    // message when it cannot proceed.
     bool open(const std::string& path);  // no questions asked
     // open, but a file that cannot be loaded throws its rgbio::ObjError (for callers that report it
     // themselves, like the CLI's screenshot) instead of setting the message.
     void load(const std::string& path);
     bool save();                         // to the document's path
     bool save_as(const std::string& path);
-    // Asks first when there are unsaved changes / the file exists.
+    // What the window does: read or write in the background (file_task() shows how it goes), and
+    // ask first when there are unsaved changes (once the file has been read: a file that cannot be
+    // read asks nothing) or the target exists. A save waits for the work under way.
     void request_open(const std::string& path);
+    void request_save();
     void request_save_as(const std::string& path);
     void request_quit();
+    // "Save and quit" in the quit question.
+    void save_and_quit();
+    const BackgroundTask* file_task() const { return file_task_.get(); }
     Pending pending() const { return pending_; }
     const std::string& pending_path() const { return pending_path_; }
     void answer_pending(bool proceed);
-    bool should_quit() const { return quit_; }
+    // Once nothing is being saved.
+    bool should_quit() const;
+    // A clean exit: the recovery copy goes (after one being written is done).
+    void close_session();
     const std::vector<std::string>& recent_files() const { return recent_; }
+    // Ctrl+O and Ctrl+Shift+S ask the window for its file browser.
+    enum class Browse { None, Open, SaveAs };
+    Browse take_browse_request() { return std::exchange(browse_request_, Browse::None); }
+    // Counts the files that could not be opened (the panel then shows the document's path again).
+    std::uint64_t open_failures() const { return open_failures_; }
     const std::string& message() const { return message_; }
     bool message_is_error() const { return message_is_error_; }
     std::string window_title() const;
@@ -139,6 +176,13 @@ private:
     void dab(glm::vec2 px);
     std::optional<SurfaceHit> pick(glm::vec2 px);
     void queue(std::unique_ptr<MeshJob> job);
+    // File tasks: start, and take what finished.
+    void start_save(const std::string& path);
+    void poll_file_task();
+    void opened(LoadedDocument loaded, const std::string& path);
+    // The recovery copy: written when `force`d or due, if there is unsaved work not yet in it.
+    void keep_recovery_copy(bool force);
+    void poll_recovery_task();
     // Ends the job at the front (its edit with it) and starts on the next.
     void finish_front();
     void remember_recent(const std::string& path);
@@ -173,6 +217,27 @@ private:
     // reaches the front.
     std::deque<std::unique_ptr<MeshJob>> jobs_;
     bool front_begun_ = false;
+
+    // Files read or written in the background, one at a time.
+    std::unique_ptr<BackgroundTask> file_task_;
+    std::optional<std::string> save_when_idle_;  // a save waiting for the work under way
+    std::uint64_t saved_changes_ = 0;             // the document's change count in the copy being saved
+    bool quit_after_save_ = false;
+    std::optional<LoadedDocument> opened_;  // read, waiting for the answer to DiscardForOpen
+
+    // Recovery copies of unsaved work.
+    std::optional<RecoveryStore> recovery_;
+    std::unique_ptr<BackgroundTask> recovery_task_;
+    std::uint64_t recovery_changes_ = 0;  // the change count in the copy (being) written
+    std::chrono::steady_clock::time_point recovery_due_;
+    std::chrono::seconds recovery_interval_{120};
+    std::optional<RecoveryStore::Orphan> offered_;   // Pending::Recover's copy
+    std::optional<RecoveryStore::Orphan> recovered_;  // removed once the own copy holds its work
+    bool recovering_ = false;                          // file_task_ reads offered_
+
+    float covered_right_ = kPanelWidth + 8.0f;
+    Browse browse_request_ = Browse::None;
+    std::uint64_t open_failures_ = 0;
 
     Pending pending_ = Pending::None;
     std::string pending_path_;

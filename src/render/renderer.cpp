@@ -21,7 +21,6 @@ namespace {
 constexpr glm::vec3 kPlainColour{0.78f, 0.78f, 0.76f};
 constexpr glm::vec3 kWireColour{0.12f, 0.12f, 0.12f};
 constexpr glm::vec3 kBackColour{0.62f, 0.36f, 0.32f};
-constexpr glm::vec3 kBrushColour{1.0f, 0.55f, 0.0f};
 constexpr glm::vec3 kBaseMeshColour{0.1f, 0.1f, 0.1f};
 constexpr glm::vec3 kLegendTextColour{0.1f, 0.1f, 0.1f};
 constexpr float kBrushWidthPx = 2.0f;
@@ -196,7 +195,7 @@ void Renderer::draw(const OrbitCamera& camera, const RenderOptions& options, glm
         surface.set("u_brush_centre", options.brush->centre * shading_scale);
         surface.set("u_brush_radius", options.brush->radius * shading_scale);
         surface.set("u_brush_width", kBrushWidthPx);
-        surface.set("u_brush_colour", kBrushColour);
+        surface.set("u_brush_colour", options.brush->colour);
     }
     s.surface.draw();
 
@@ -210,7 +209,7 @@ void Renderer::draw(const OrbitCamera& camera, const RenderOptions& options, glm
 
     if (options.colouring == Colouring::Level && options.level_legend) {
         glDisable(GL_DEPTH_TEST);
-        s.overlay.upload(level_legend(max_level, viewport, kLegendTextColour));
+        s.overlay.upload(level_legend(max_level, {viewport.x, viewport.y - static_cast<int>(options.bottom_inset_px)}, kLegendTextColour));
         s.overlay_program.use();
         s.overlay_program.set("u_viewport_size", glm::vec2(viewport));
         s.overlay.draw(GL_TRIANGLES);

@@ -29,6 +29,7 @@ enum class Colouring { Plain, RgbType, Level };
 struct BrushCursor {
     glm::vec3 centre{0.0f};
     float radius = 0.1f;
+    glm::vec3 colour{1.0f, 0.55f, 0.0f};
 };
 
 struct RenderOptions {
@@ -39,6 +40,7 @@ struct RenderOptions {
     PositionSource positions = PositionSource::Displayed;
     bool base_mesh_overlay = false;
     bool level_legend = true;  // shown with Colouring::Level
+    float bottom_inset_px = 0.0f;  // a strip at the bottom that overlays (the legend) keep clear of
     std::optional<BrushCursor> brush;
     glm::vec3 background{1.0f};
 };

@@ -167,12 +167,30 @@ TEST_F(EditorScript, UnsavedChangesAskBeforeQuitOrOpen) {
     editor.answer_pending(false);
     EXPECT_FALSE(editor.should_quit());
     const std::size_t painted = editor.document().mesh().num_faces();
+    // The file is read first (in the background), and only then the question comes.
     editor.request_open(bunny_path());
+    editor.finish_work();
     EXPECT_EQ(editor.pending(), Pending::DiscardForOpen);
     EXPECT_EQ(editor.document().mesh().num_faces(), painted);
     editor.answer_pending(true);
     EXPECT_LT(editor.document().mesh().num_faces(), painted);
     EXPECT_FALSE(editor.document().dirty());
+}
+
+TEST_F(EditorScript, AFileThatCannotBeOpenedAsksNothingAndTheMeshStays) {
+    stroke(from, to, 3);
+    const rgb::Mesh painted = editor.document().mesh();
+    const std::filesystem::path bad = std::filesystem::path(::testing::TempDir()) / "editor_bad_open.obj";
+    { std::ofstream(bad) << "v 0 0 0\nv 1 0 0\nf 1 2 7\n"; }
+    const std::uint64_t failures = editor.open_failures();
+    editor.request_open(bad.string());
+    editor.finish_work();
+    EXPECT_EQ(editor.pending(), Pending::None);
+    EXPECT_TRUE(editor.message_is_error());
+    EXPECT_NE(editor.message().find("editor_bad_open.obj:3"), std::string::npos) << editor.message();
+    EXPECT_EQ(editor.open_failures(), failures + 1);
+    EXPECT_TRUE(rgbtest::same_slots(editor.document().mesh(), painted));
+    EXPECT_EQ(editor.document().path(), bunny_path());
 }
 
 TEST_F(EditorScript, LoadErrorsBecomeMessages) {
@@ -194,6 +212,7 @@ TEST_F(EditorScript, SaveAsOverAnotherFileAsksFirst) {
     EXPECT_EQ(std::filesystem::file_size(other), 8u);
     editor.request_save_as(other.string());
     editor.answer_pending(true);
+    editor.finish_work();
     EXPECT_GT(std::filesystem::file_size(other), 8u);
     EXPECT_EQ(editor.document().path(), other.string());
 }

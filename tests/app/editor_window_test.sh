@@ -21,7 +21,7 @@ save_as() {
   cp "$work/mesh.obj" "$work/$1.obj"
 }
 
-x0=540 y0=440 x1=760 y1=440
+x0=340 y0=440 x1=560 y1=440
 xdotool mousemove --window "$window" $x0 $y0
 sleep 0.3
 xdotool mousedown 1
