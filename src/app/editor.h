@@ -44,6 +44,7 @@ struct EditorOptions {
     // Where recovery copies of unsaved work go (recovery_store.h); none: no copies are kept.
     std::optional<std::filesystem::path> recovery_folder;
     int process_id = 0;  // names this session's copy; 0: this process
+    float covered_right = 0.0f;  // see set_covered_right
     // Unsaved work is copied this often (and before whole-mesh actions).
     std::chrono::seconds recovery_interval{120};
 };
@@ -58,8 +59,11 @@ struct EngineTiming {
     std::size_t dabs = 0;
 };
 
-// The side panel's width in pixels (editor_panels.cpp): framing keeps the mesh clear of it.
+// The side panel's width in pixels (editor_panels.cpp), and what it covers of the viewport with its
+// margin: the window and headless frames tell the editor (set_covered_right) so that framing keeps
+// the mesh clear of it.
 inline constexpr float kPanelWidth = 320.0f;
+inline constexpr float kPanelCover = kPanelWidth + 8.0f;
 
 class Editor {
 public:
@@ -235,7 +239,7 @@ private:
     std::optional<RecoveryStore::Orphan> recovered_;  // removed once the own copy holds its work
     bool recovering_ = false;                          // file_task_ reads offered_
 
-    float covered_right_ = kPanelWidth + 8.0f;
+    float covered_right_ = 0.0f;
     Browse browse_request_ = Browse::None;
     std::uint64_t open_failures_ = 0;
 

@@ -271,7 +271,7 @@ void draw_panels(Editor& editor, PanelState& state, render::RenderOptions& optio
     ImGui::SetNextWindowPos(ImVec2(display.x - kPanelWidth - 8.0f, 8.0f), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(kPanelWidth, std::max(display.y - 16.0f - kStatusBarHeight, 100.0f)), ImGuiCond_Always);
     state.panel_open = ImGui::Begin("rgbsub", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize);
-    editor.set_covered_right(state.panel_open ? kPanelWidth + 8.0f : 0.0f);
+    editor.set_covered_right(state.panel_open ? kPanelCover : 0.0f);
     if (state.panel_open) {
         ImGui::PushItemWidth(-120.0f);
         brush_panel(editor);

@@ -245,6 +245,7 @@ int run_editor_window(const WindowLaunch& launch) {
     }
     EditorOptions options;
     options.recovery_folder = RecoveryStore::default_folder();
+    options.covered_right = kPanelCover;
     Editor editor(options);
     WindowState state{&editor};
     glfwSetWindowUserPointer(window, &state);

@@ -40,6 +40,7 @@ int main(int argc, char** argv) {
     }
     // The stroke's surface points, seen by an editor framing the original mesh like the window did.
     app::Editor editor({1280, 800});
+    editor.set_covered_right(app::kPanelCover);
     if (!editor.open(argv[1])) {
         std::fprintf(stderr, "%s\n", editor.message().c_str());
         return 2;
