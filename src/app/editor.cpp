@@ -94,6 +94,7 @@ void Editor::key_pressed(Key key, Modifiers mods) {
                 else request_save();
                 break;
             case Key::O: browse_request_ = Browse::Open; break;
+            case Key::E: browse_request_ = Browse::SaveStrokes; break;
             case Key::Q: request_quit(); break;
             default: break;
         }

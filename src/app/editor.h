@@ -148,8 +148,8 @@ public:
     // A clean exit: the recovery copy goes (after one being written is done).
     void close_session();
     const std::vector<std::string>& recent_files() const { return recent_; }
-    // Ctrl+O and Ctrl+Shift+S ask the window for its file browser.
-    enum class Browse { None, Open, SaveAs };
+    // Ctrl+O, Ctrl+Shift+S and Ctrl+E ask the window for its file browser.
+    enum class Browse { None, Open, SaveAs, SaveStrokes };
     Browse take_browse_request() { return std::exchange(browse_request_, Browse::None); }
     // Counts the files that could not be opened (the panel then shows the document's path again).
     std::uint64_t open_failures() const { return open_failures_; }

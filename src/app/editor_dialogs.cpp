@@ -117,9 +117,12 @@ void file_browser(Editor& editor, FileBrowser& browser) {
         }
     }
     ImGui::EndChild();
+    // The name has the keyboard from the start, and Enter anywhere in the dialog confirms.
+    if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
     ImGui::InputText("name", browser.name.data(), browser.name.size());
+    const bool entered = ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter));
     const bool named = browser.name[0] != '\0';
-    if (ImGui::Button(browser.purpose == FileBrowser::Purpose::Open ? "Open" : "Save") && named) finish(editor, browser);
+    if ((ImGui::Button(browser.purpose == FileBrowser::Purpose::Open ? "Open" : "Save") || entered) && named) finish(editor, browser);
     ImGui::SameLine();
     if (ImGui::Button("Cancel")) browser.purpose = FileBrowser::Purpose::None;
     if (browser.purpose == FileBrowser::Purpose::None) ImGui::CloseCurrentPopup();

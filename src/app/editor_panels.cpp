@@ -143,7 +143,7 @@ void files_panel(Editor& editor, PanelState& state) {
     tooltip("To the path above; Ctrl+Shift+S browses");
     ImGui::SameLine();
     if (ImGui::Button("Save strokes")) open_browser(state, FileBrowser::Purpose::SaveStrokes, state.path.data());
-    tooltip("The edits in effect as a script: rgbsub apply FILE.obj SCRIPT -o OUT.obj replays them");
+    tooltip("Ctrl+E: the edits in effect as a script; rgbsub apply FILE.obj SCRIPT -o OUT.obj replays them");
     int positions = static_cast<int>(editor.save_options().positions);
     ImGui::RadioButton("displayed positions", &positions, 0);
     ImGui::SameLine();
@@ -224,6 +224,7 @@ void shortcuts_panel() {
         "Ctrl+O           open (file browser)\n"
         "Ctrl+S           save\n"
         "Ctrl+Shift+S     save as (file browser)\n"
+        "Ctrl+E           save the strokes as a script\n"
         "Ctrl+Q           quit\n"
         "Esc              stop the work under way\n"
         "drop an OBJ on the window to open it");
@@ -287,6 +288,7 @@ void draw_panels(Editor& editor, PanelState& state, render::RenderOptions& optio
     switch (editor.take_browse_request()) {
         case Editor::Browse::Open: open_browser(state, FileBrowser::Purpose::Open, state.path.data()); break;
         case Editor::Browse::SaveAs: open_browser(state, FileBrowser::Purpose::SaveAs, state.path.data()); break;
+        case Editor::Browse::SaveStrokes: open_browser(state, FileBrowser::Purpose::SaveStrokes, state.path.data()); break;
         case Editor::Browse::None: break;
     }
     file_browser(editor, state.browser);

@@ -53,6 +53,7 @@ std::optional<Key> key_of(int glfw_key) {
         case GLFW_KEY_S: return Key::S;
         case GLFW_KEY_O: return Key::O;
         case GLFW_KEY_Q: return Key::Q;
+        case GLFW_KEY_E: return Key::E;
         case GLFW_KEY_LEFT_BRACKET: return Key::LeftBracket;
         case GLFW_KEY_RIGHT_BRACKET: return Key::RightBracket;
         case GLFW_KEY_MINUS: return Key::Minus;
