@@ -20,22 +20,16 @@ std::uint32_t CellTable::find(std::uint64_t key) const {
     return i == entries_.size() ? kNone : entries_[i].value;
 }
 
-void CellTable::set(std::uint64_t key, std::uint32_t value) {
-    std::size_t i = slot_of(key);
-    if (i == entries_.size()) {
-        if (value == kNone) return;
-        // Keep the load at most 1/2 so probe runs stay short; a rebuild drops the emptied cells.
-        if (2 * (size_ + 1) > entries_.size()) rebuild(4 * (size_ - emptied_ + 1) > entries_.size() ? 2 * entries_.size() : entries_.size());
-        const std::size_t mask = entries_.size() - 1;
-        for (i = home(key); entries_[i].key != kEmpty; i = (i + 1) & mask) {}
-        entries_[i] = {key, kNone};
-        ++size_;
-        ++emptied_;
-    }
-    if (entries_[i].value == kNone && value != kNone) --emptied_;
-    if (entries_[i].value != kNone && value == kNone) ++emptied_;
-    entries_[i].value = value;
-    if (2 * emptied_ > size_ && size_ > 1024) rebuild(entries_.size());
+std::size_t CellTable::insert_empty(std::uint64_t key) {
+    // Keep the load at most 1/2 so probe runs stay short; a rebuild drops the emptied cells.
+    if (2 * (size_ + 1) > entries_.size()) rebuild(4 * (size_ - emptied_ + 1) > entries_.size() ? 2 * entries_.size() : entries_.size());
+    const std::size_t mask = entries_.size() - 1;
+    std::size_t i = home(key);
+    while (entries_[i].key != kEmpty) i = (i + 1) & mask;
+    entries_[i] = {key, kNone};
+    ++size_;
+    ++emptied_;
+    return i;
 }
 
 void CellTable::clear() {

@@ -14,8 +14,21 @@ public:
 
     // The value of `key`, or kNone.
     std::uint32_t find(std::uint64_t key) const;
-    // Sets the value of `key` (kNone empties the cell).
-    void set(std::uint64_t key, std::uint32_t value);
+    // Sets the value of `key` to change(old value) (kNone when absent; kNone empties the cell), with
+    // one probe.
+    template <class Change>
+    void update(std::uint64_t key, Change&& change) {
+        std::size_t i = slot_of(key);
+        const std::uint32_t before = i == entries_.size() ? kNone : entries_[i].value;
+        const std::uint32_t after = change(before);
+        if (i == entries_.size()) {
+            if (after == kNone) return;
+            i = insert_empty(key);
+        }
+        entries_[i].value = after;
+        if (before == kNone && after != kNone) --emptied_;
+        if (before != kNone && after == kNone && 2 * ++emptied_ > size_ && size_ > 1024) rebuild(entries_.size());
+    }
     void clear();
     std::size_t memory_bytes() const { return entries_.capacity() * sizeof(Entry); }
 
@@ -27,6 +40,8 @@ private:
     };
     std::size_t home(std::uint64_t key) const { return static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> shift_); }
     std::size_t slot_of(std::uint64_t key) const;
+    // Adds `key` with the value kNone (growing first if needed) and returns its slot.
+    std::size_t insert_empty(std::uint64_t key);
     // Rehashes the cells with a value into a table of `capacity` entries.
     void rebuild(std::size_t capacity);
 

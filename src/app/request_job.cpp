@@ -14,9 +14,11 @@ void RequestJob::add(Pieces pieces, const std::string& script_lines) {
 }
 
 bool RequestJob::step(std::chrono::microseconds slice) {
-    const auto deadline = std::chrono::steady_clock::now() + slice;
-    // At least one piece, however short the slice.
-    for (bool applied = false; !applied || std::chrono::steady_clock::now() < deadline;) {
+    using Clock = std::chrono::steady_clock;
+    const auto deadline = Clock::now() + slice;
+    const auto piece_time = [&] { return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(piece_seconds_)); };
+    // At least one piece, however short the slice; then another while one is expected to fit.
+    for (bool applied = false; !applied || Clock::now() + piece_time() < deadline;) {
         if (pieces_.empty()) {
             if (requests_.empty()) break;
             for (rgb::LevelRequest& piece : requests_.front()()) pieces_.push_back(std::move(piece));
@@ -25,7 +27,10 @@ bool RequestJob::step(std::chrono::microseconds slice) {
             if (pieces_.empty()) ++requests_done_;
             continue;
         }
+        const auto start = Clock::now();
         stats_ += rgb::apply_request(mesh_, pieces_.front());
+        const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+        piece_seconds_ = pieces_done_ + requests_done_ == 0 ? seconds : 0.8 * piece_seconds_ + 0.2 * seconds;
         pieces_.pop_front();
         ++pieces_done_;
         if (pieces_.empty()) ++requests_done_;

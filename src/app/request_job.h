@@ -49,6 +49,7 @@ private:
     std::size_t requests_done_ = 0;
     std::size_t pieces_done_ = 0;  // of the request under way
     rgb::RequestStats stats_;
+    double piece_seconds_ = 0.0;  // a running mean of what pieces take, to stop before the deadline
     std::string script_;
     bool dropped_ = false;
 };

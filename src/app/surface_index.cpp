@@ -65,9 +65,10 @@ SurfaceIndex::Placement SurfaceIndex::placement(const render::SurfaceGeometry& g
     const glm::dvec3 lo = glm::min(corners[0], glm::min(corners[1], corners[2])) - origin_;
     const glm::dvec3 hi = glm::max(corners[0], glm::max(corners[1], corners[2])) - origin_;
     const double extent = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
-    // The finest grid whose cells are at least the triangle's size: it then spans two cells per axis
-    // at most (one more level if rounding says otherwise).
-    int level = extent > finest_cell_ ? std::min(static_cast<int>(std::ceil(std::log2(extent / finest_cell_))), kLevels) : 0;
+    // The finest grid whose cells are at least twice the triangle's size: it then spans two cells
+    // per axis at most (one more level if rounding says otherwise). Cells of just its size would
+    // hold fewer triangles each but put each in more cells, which costs more to keep.
+    int level = 2.0 * extent > finest_cell_ ? std::min(static_cast<int>(std::ceil(std::log2(2.0 * extent / finest_cell_))), kLevels) : 0;
     for (;; ++level) {
         const double cell = std::ldexp(finest_cell_, level);
         const std::int64_t top = cells_at(level) - 1;
@@ -109,9 +110,7 @@ std::uint64_t SurfaceIndex::block_of(std::uint64_t cell) {
 }
 
 void SurfaceIndex::insert(std::uint64_t cell, std::uint32_t slot) {
-    const std::uint64_t block = block_of(cell);
-    const std::uint32_t in_block = blocks_.find(block);
-    blocks_.set(block, in_block == CellTable::kNone ? 1 : in_block + 1);
+    blocks_.update(block_of(cell), [](std::uint32_t in_block) { return in_block == CellTable::kNone ? 1 : in_block + 1; });
     std::uint32_t ref = free_ref_;
     if (ref != CellTable::kNone) {
         free_ref_ = refs_[ref].next;
@@ -119,23 +118,25 @@ void SurfaceIndex::insert(std::uint64_t cell, std::uint32_t slot) {
         ref = static_cast<std::uint32_t>(refs_.size());
         refs_.emplace_back();
     }
-    refs_[ref] = {slot, cells_.find(cell)};
-    cells_.set(cell, ref);
+    cells_.update(cell, [&](std::uint32_t head) {
+        refs_[ref] = {slot, head};
+        return ref;
+    });
 }
 
 void SurfaceIndex::remove(std::uint64_t cell, std::uint32_t slot) {
-    std::uint32_t previous = CellTable::kNone;
-    for (std::uint32_t ref = cells_.find(cell); ref != CellTable::kNone; previous = ref, ref = refs_[ref].next) {
-        if (refs_[ref].slot != slot) continue;
-        if (previous == CellTable::kNone) cells_.set(cell, refs_[ref].next);
-        else refs_[previous].next = refs_[ref].next;
-        refs_[ref].next = free_ref_;
-        free_ref_ = ref;
-        const std::uint64_t block = block_of(cell);
-        const std::uint32_t in_block = blocks_.find(block);
-        blocks_.set(block, in_block == 1 ? CellTable::kNone : in_block - 1);
-        return;
-    }
+    cells_.update(cell, [&](std::uint32_t head) {
+        for (std::uint32_t* link = &head; *link != CellTable::kNone; link = &refs_[*link].next) {
+            if (refs_[*link].slot != slot) continue;
+            const std::uint32_t ref = *link;
+            *link = refs_[ref].next;
+            refs_[ref].next = free_ref_;
+            free_ref_ = ref;
+            break;
+        }
+        return head;
+    });
+    blocks_.update(block_of(cell), [](std::uint32_t in_block) { return in_block == 1 ? CellTable::kNone : in_block - 1; });
 }
 
 std::optional<SurfaceHit> SurfaceIndex::pick(const render::SurfaceGeometry& geometry, const Ray& ray) const {

@@ -1,8 +1,8 @@
 #pragma once
 // A spatial index over the displayed triangles, for picking: each face slot of a
 // render::SurfaceGeometry sits in the cells of a sparse grid whose cell size suits it (one grid per
-// power of two of cell size, a triangle in the grid whose cells are at least its size, so in at most
-// eight cells). A ray walks each grid that holds triangles, coarse grids first, block by block
+// power of two of cell size, a triangle in the grid whose cells are at least twice its size, so in
+// at most eight cells and mostly in one to four). A ray walks each grid that holds triangles, coarse grids first, block by block
 // (8x8x8 cells, empty blocks skipped) and then cell by cell, and stops once it is past the nearest
 // hit so far: the cost follows the occupied cells the ray crosses, not the triangles. Updating costs
 // in proportion to the slots that changed.
