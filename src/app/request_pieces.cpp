@@ -30,20 +30,29 @@ std::vector<std::uint32_t> base_faces_of(const rgb::Mesh& mesh, const rgb::Level
     return allowed;
 }
 
-// Triangles the request visits (the mesh's average per base face over the base faces it meets) and
-// may create.
-double expected_work(const rgb::Mesh& mesh, const rgb::LevelRequest& request, std::size_t base_faces) {
-    double work = static_cast<double>(base_faces) * static_cast<double>(mesh.num_faces()) /
-                  static_cast<double>(std::max<std::size_t>(mesh.base().num_faces(), 1));
-    if (request.kind != rgb::RequestKind::Coarsen) work += rgb::estimated_triangles(mesh, request) - static_cast<double>(mesh.num_faces());
-    return work;
+// Triangles a refine request may add (rgb::estimated_triangles).
+double added(const rgb::Mesh& mesh, const rgb::LevelRequest& request) {
+    return request.kind == rgb::RequestKind::Coarsen ? 0.0 : rgb::estimated_triangles(mesh, request) - static_cast<double>(mesh.num_faces());
 }
+
+// Triangles there are in the request's region: estimated as for a refine to the mesh's average level.
+double present(const rgb::Mesh& mesh, const rgb::LevelRequest& request) {
+    const double per_base_face = static_cast<double>(mesh.num_faces()) / static_cast<double>(std::max<std::size_t>(mesh.base().num_faces(), 1));
+    rgb::LevelRequest average = request;
+    average.kind = rgb::RequestKind::Refine;
+    average.level = std::clamp(static_cast<int>(std::lround(std::log2(std::max(per_base_face, 1.0)) / 2.0)), 0, rgb::kMaxLevel);
+    average.taper.clear();
+    return added(mesh, average);
+}
+
+// What a request costs: it visits the triangles there and makes the ones it adds.
+double expected_work(const rgb::Mesh& mesh, const rgb::LevelRequest& request) { return present(mesh, request) + added(mesh, request); }
 
 // `request` over consecutive batches of its base faces, each of about `per_piece` expected work.
 void append_batches(const rgb::Mesh& mesh, const rgb::LevelRequest& request, double per_piece, std::vector<rgb::LevelRequest>& out) {
     const std::vector<std::uint32_t> faces = base_faces_of(mesh, request);
     if (faces.empty()) return;
-    const double work = expected_work(mesh, request, faces.size());
+    const double work = expected_work(mesh, request);
     const auto batches = static_cast<std::size_t>(std::clamp(std::ceil(work / per_piece), 1.0, static_cast<double>(faces.size())));
     const std::size_t per_batch = (faces.size() + batches - 1) / batches;
     for (std::size_t first = 0; first < faces.size(); first += per_batch) {
@@ -69,8 +78,9 @@ rgb::LevelRequest refine_to(const rgb::LevelRequest& request, int k) {
 }
 
 // Coarse to fine: the coarsen part first (set requests), then the refine part level by level from
-// just above `from_level` (a piece also does what skipped coarser pieces would have: skipping them
-// only saves their pass over the faces).
+// just above `from_level`, each level that adds at least as many triangles as its pass over the
+// region visits (a piece also does what skipped coarser pieces would have: skipping them only saves
+// their pass over the faces).
 std::vector<rgb::LevelRequest> pieces_of(const rgb::Mesh& mesh, const rgb::LevelRequest& request, double per_piece, int from_level) {
     std::vector<rgb::LevelRequest> pieces;
     if (request.kind != rgb::RequestKind::Refine) {
@@ -78,9 +88,12 @@ std::vector<rgb::LevelRequest> pieces_of(const rgb::Mesh& mesh, const rgb::Level
         coarsen.kind = rgb::RequestKind::Coarsen;
         append_batches(mesh, coarsen, per_piece, pieces);
     }
-    if (request.kind != rgb::RequestKind::Coarsen)
-        for (int k = std::clamp(from_level + 1, 1, request.level); k <= request.level; ++k)
-            append_batches(mesh, refine_to(request, k), per_piece, pieces);
+    if (request.kind == rgb::RequestKind::Coarsen) return pieces;
+    const double there = present(mesh, request);
+    for (int k = std::clamp(from_level + 1, 1, request.level); k <= request.level; ++k) {
+        const rgb::LevelRequest piece = refine_to(request, k);
+        if (k == request.level || added(mesh, piece) >= there) append_batches(mesh, piece, per_piece, pieces);
+    }
     return pieces;
 }
 
@@ -92,7 +105,7 @@ std::vector<rgb::LevelRequest> dab_pieces(const rgb::Mesh& mesh, const rgb::Dab&
     const rgb::LevelRequest request = rgb::dab_request(mesh, dab);
     if (request.sphere->radius <= 0.0 || (dab.view && request.base_faces.empty())) return {};
     if (dab.mode == rgb::BrushMode::Refine && dab.level == 0) return {};
-    if (expected_work(mesh, request, base_faces_of(mesh, request).size()) <= piece_triangles) return {request};
+    if (expected_work(mesh, request) <= piece_triangles) return {request};
     return pieces_of(mesh, request, piece_triangles, from_level);
 }
 

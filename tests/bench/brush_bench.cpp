@@ -6,7 +6,7 @@
 //   - pick ms per dab (the picking index, plus mapping the hit to base space), p50 / p95,
 //   - pick ms for rays through random pixels (the index alone),
 //   - the press that starts a stroke,
-//   - undo and redo of the stroke, with its splits.
+//   - undo and redo of the stroke, with its splits, and of a shorter stroke of about 10k splits.
 // Run on demand: ./brush_bench [levels...]   (default: 4 5, i.e. 940k and 3.8M triangles)
 #include <algorithm>
 #include <chrono>
@@ -52,10 +52,12 @@ struct StrokeResult {
     std::size_t frames = 0, faces_before = 0, faces_after = 0;
 };
 
-StrokeResult replay(app::Editor& editor, app::Modifiers mods) {
+// The recorded path, or the part of it given by `fraction`.
+StrokeResult replay(app::Editor& editor, app::Modifiers mods, double fraction = 1.0) {
     StrokeResult r;
     r.faces_before = editor.document().mesh().num_faces();
-    const std::vector<glm::vec2> path = recorded_path();
+    std::vector<glm::vec2> path = recorded_path();
+    path.resize(std::max<std::size_t>(2, static_cast<std::size_t>(fraction * static_cast<double>(path.size()))));
     editor.mouse_moved(path.front());
     editor.mouse_pressed(app::MouseButton::Left, mods);
     r.press_ms = editor.timing().stroke_start_ms;
@@ -146,6 +148,9 @@ int main(int argc, char** argv) {
         report("refine one level deeper", replay(editor, {}));
         editor.brush().target_level = level;
         report("coarsen back (Shift)", replay(editor, {.shift = true}));
+        // The start of the path: a stroke of about 10k splits, the size the undo goal is stated for.
+        editor.brush().target_level = level + 1;
+        report("a shorter stroke", replay(editor, {}, 0.17 / std::exp2(static_cast<double>(level - 4))));
     }
     return 0;
 }
