@@ -162,6 +162,10 @@ GLFWwindow* open_window() {
 // Whether frames must keep coming without input: work to show, files to take, or a stroke.
 bool working(const Editor& editor) { return editor.job() != nullptr || editor.painting() || editor.file_task() != nullptr; }
 
+// Whether the frames only wait for a file read or written on another thread: then they come a few
+// times a second, to move the progress bar and take the result, and leave the processor to it.
+bool only_waiting_for_a_file(const Editor& editor) { return editor.job() == nullptr && !editor.painting() && editor.file_task() != nullptr; }
+
 void run_loop(GLFWwindow* window, WindowState& state, const WindowLaunch& launch, Clock::time_point start) {
     Editor& editor = *state.editor;
     EditorView view;
@@ -180,14 +184,17 @@ void run_loop(GLFWwindow* window, WindowState& state, const WindowLaunch& launch
         }
         if (launch.frames && file_shown && frames_after_shown >= *launch.frames) break;
         // Idle: sleep until input arrives (waking now and then for the recovery copy's timer), and
-        // draw only if something happened.
-        if (working(editor) || frame < 2) {
+        // draw only if something happened. Counted frames (--frames) are always drawn.
+        if (only_waiting_for_a_file(editor) && frame >= 2) {
+            glfwWaitEventsTimeout(0.05);
+        } else if (working(editor) || frame < 2 || launch.frames) {
             glfwPollEvents();
         } else {
             glfwWaitEventsTimeout(1.0);
             if (!state.redraw && !working(editor)) {
+                const std::string message = editor.message();
                 editor.run_guarded([&] { editor.update(pacer.slice()); });
-                continue;
+                if (editor.message() == message) continue;
             }
         }
         state.redraw = false;

@@ -5,6 +5,7 @@
 #include <glm/geometric.hpp>
 
 #include "app/brush.h"
+#include "app/job_pacer.h"
 #include "app/stroke_sampler.h"
 #include "app/surface_index.h"
 #include "render/mesh_changes.h"
@@ -57,6 +58,18 @@ TEST(BrushTarget, AHitMapsToBaseSpaceByItsBarycentricCoordinates) {
     EXPECT_NEAR(hit.centre.y, 0.5, 1e-12);
     EXPECT_EQ(hit.centre.z, 0.0);
     EXPECT_NEAR(hit.radius, 0.2, 1e-12);
+}
+
+// The work gets what drawing leaves of a 60 Hz frame, but never less than drawing takes.
+TEST(JobPacer, TheWorksShareFollowsTheFrameTime) {
+    EXPECT_DOUBLE_EQ(JobPacer::slice_ms(2.0), 1000.0 / 60.0 - 2.0);
+    EXPECT_DOUBLE_EQ(JobPacer::slice_ms(12.0), 12.0);  // half of a slow frame
+    EXPECT_DOUBLE_EQ(JobPacer::slice_ms(300.0), 300.0);
+    EXPECT_DOUBLE_EQ(JobPacer::slice_ms(5000.0), JobPacer::kMaxSliceMs);
+    JobPacer pacer;
+    EXPECT_EQ(pacer.slice(), std::chrono::microseconds(16666));
+    pacer.frame_drawn(200.0);
+    EXPECT_EQ(pacer.slice(), std::chrono::microseconds(200000));
 }
 
 TEST(StrokeSampler, SpacesDabsEvenlyAcrossSamples) {
