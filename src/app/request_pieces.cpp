@@ -35,18 +35,30 @@ double added(const rgb::Mesh& mesh, const rgb::LevelRequest& request) {
     return request.kind == rgb::RequestKind::Coarsen ? 0.0 : rgb::estimated_triangles(mesh, request) - static_cast<double>(mesh.num_faces());
 }
 
-// Triangles there are in the request's region: estimated as for a refine to the mesh's average level.
+// Triangles there are in the region the request searches: estimated as for a refine to the mesh's
+// average level. Coarsening searches a triangle's size of level N around its ball (requests.cpp).
 double present(const rgb::Mesh& mesh, const rgb::LevelRequest& request) {
     const double per_base_face = static_cast<double>(mesh.num_faces()) / static_cast<double>(std::max<std::size_t>(mesh.base().num_faces(), 1));
     rgb::LevelRequest average = request;
     average.kind = rgb::RequestKind::Refine;
     average.level = std::clamp(static_cast<int>(std::lround(std::log2(std::max(per_base_face, 1.0)) / 2.0)), 0, rgb::kMaxLevel);
     average.taper.clear();
+    if (average.sphere && request.kind != rgb::RequestKind::Refine) {
+        for (const rgb::LevelBand& band : request.taper) average.sphere->radius = std::max(average.sphere->radius, band.radius);
+        average.sphere->radius += std::ldexp(mesh.base().longest_edge(), -request.level);
+    }
     return added(mesh, average);
 }
 
-// What a request costs: it visits the triangles there and makes the ones it adds.
-double expected_work(const rgb::Mesh& mesh, const rgb::LevelRequest& request) { return present(mesh, request) + added(mesh, request); }
+// A triangle coarsening visits costs about eight times one refining makes (half a vertex removal
+// each: a merge, its swaps and the search for what depends on it), measured with
+// tests/bench/brush_bench at 3.6M triangles.
+constexpr double kRemovalWork = 8.0;
+
+// What a request costs: it visits the triangles there (and may remove them) and makes the ones it adds.
+double expected_work(const rgb::Mesh& mesh, const rgb::LevelRequest& request) {
+    return (request.kind == rgb::RequestKind::Refine ? 1.0 : kRemovalWork) * present(mesh, request) + added(mesh, request);
+}
 
 // `request` over consecutive batches of its base faces, each of about `per_piece` expected work.
 void append_batches(const rgb::Mesh& mesh, const rgb::LevelRequest& request, double per_piece, std::vector<rgb::LevelRequest>& out) {
