@@ -113,7 +113,8 @@ void Editor::key_pressed(Key key, Modifiers mods) {
         case Key::Digit3: brush_.mode = BrushMode::Set; break;
         case Key::Escape:
             if (pending_ != Pending::None) answer_pending(false);
-            else cancel_job();
+            else if (!jobs_.empty()) cancel_job();
+            else stop_opening();
             break;
         default: break;
     }

@@ -183,6 +183,8 @@ private:
     // File tasks: start, and take what finished.
     void start_save(const std::string& path);
     void poll_file_task();
+    // Esc while a file is read: the result is dropped (a save is never stopped half way).
+    void stop_opening();
     void opened(LoadedDocument loaded, const std::string& path);
     // The recovery copy: written when `force`d or due, if there is unsaved work not yet in it.
     void keep_recovery_copy(bool force);

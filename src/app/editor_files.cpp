@@ -122,6 +122,9 @@ void Editor::start_save(const std::string& path) {
 void Editor::poll_file_task() {
     if (save_when_idle_ && !busy() && !file_task_) start_save(*save_when_idle_);
     if (!file_task_ || !file_task_->done()) return;
+    // A file read while strokes are still being applied waits for them: they belong to the mesh
+    // on screen, and they are what makes it unsaved.
+    if (file_task_->kind() == BackgroundTask::Kind::Open && busy()) return;
     const std::unique_ptr<BackgroundTask> task = std::move(file_task_);
     const bool recovering = std::exchange(recovering_, false);
     if (task->error()) {
@@ -158,7 +161,15 @@ void Editor::poll_file_task() {
     opened(task->take_document(), task->path());
 }
 
+void Editor::stop_opening() {
+    if (!file_task_ || file_task_->kind() != BackgroundTask::Kind::Open) return;
+    report("stopped opening " + file_task_->path(), false);
+    file_task_.reset();
+    recovering_ = false;
+}
+
 void Editor::opened(LoadedDocument loaded, const std::string& path) {
+    cancel_job();  // nothing may go on working on the mesh being replaced
     const std::vector<std::string> warnings = std::move(loaded.warnings);
     document_.adopt(std::move(loaded), path);
     report(warnings.empty() ? "opened " + path : path + ": " + warnings.front() + (warnings.size() > 1 ? " (and more)" : ""), false);

@@ -70,6 +70,34 @@ TEST(EditorFiles, ABackgroundSaveWritesTheMeshAsItWasAndEditingGoesOn) {
     EXPECT_TRUE(rgbtest::same_mesh(rgbio::load_mesh(file.string()), editor.document().mesh()));
 }
 
+// The stroke belongs to the mesh on screen: the file read meanwhile waits for it, then asks.
+TEST(EditorFiles, AFileReadWhileAStrokeIsAppliedWaitsForItAndAsks) {
+    Editor editor(kViewport);
+    ASSERT_TRUE(editor.open(bunny_path()));
+    const std::size_t original = editor.document().mesh().num_faces();
+    editor.request_open(bunny_path());
+    editor.brush().radius_px = 30.0f;
+    editor.mouse_moved({0.4f * kViewport.x, 0.55f * kViewport.y});
+    editor.mouse_pressed(MouseButton::Left, {});
+    editor.mouse_moved({0.6f * kViewport.x, 0.55f * kViewport.y});
+    editor.mouse_released(MouseButton::Left);
+    editor.finish_work();
+    EXPECT_GT(editor.document().mesh().num_faces(), original);
+    EXPECT_EQ(editor.pending(), Pending::DiscardForOpen);
+    editor.answer_pending(true);
+    EXPECT_EQ(editor.document().mesh().num_faces(), original);
+}
+
+TEST(EditorFiles, EscStopsOpeningAFile) {
+    Editor editor(kViewport);
+    editor.request_open(bunny_path());
+    editor.key_pressed(Key::Escape, {});
+    EXPECT_EQ(editor.file_task(), nullptr);
+    editor.finish_work();
+    EXPECT_EQ(editor.document().mesh().num_faces(), 0u);
+    EXPECT_NE(editor.message().find("stopped opening"), std::string::npos) << editor.message();
+}
+
 TEST(EditorFiles, SaveAndQuitQuitsOnceTheFileIsWritten) {
     Editor editor(kViewport);
     const std::filesystem::path file = fresh_folder("save_and_quit") / "mesh.obj";

@@ -4,6 +4,8 @@
 #include <fstream>
 #include <vector>
 
+#include <glm/geometric.hpp>
+
 #include <gtest/gtest.h>
 
 #include "app/editor.h"
@@ -119,6 +121,30 @@ TEST_F(EditorScript, NavigationDragsDoNotPaint) {
     editor.mouse_released(MouseButton::Right);
     EXPECT_EQ(editor.document().mesh().num_faces(), original_faces);
     EXPECT_FALSE(editor.document().history().can_undo());
+}
+
+// The wheel zooms towards the cursor: the surface point under it stays under it.
+TEST_F(EditorScript, ZoomKeepsThePointUnderTheCursor) {
+    const glm::vec2 px{0.3f * kViewport.x, 0.5f * kViewport.y};
+    editor.mouse_moved(px);
+    const std::optional<SurfaceHit> before = editor.cursor_hit();
+    ASSERT_TRUE(before.has_value());
+    const float distance = editor.camera().camera().distance;
+    editor.scrolled(3.0f);
+    EXPECT_LT(editor.camera().camera().distance, distance);
+    const std::optional<SurfaceHit> after = editor.cursor_hit();
+    ASSERT_TRUE(after.has_value());
+    EXPECT_LT(glm::distance(after->point, before->point), 1e-3 * static_cast<double>(distance));
+}
+
+TEST_F(EditorScript, MinusAndEqualStepTheTargetLevel) {
+    editor.brush().target_level = 3;
+    editor.key_pressed(Key::Equal, {});
+    EXPECT_EQ(editor.brush().target_level, 4);
+    for (int i = 0; i < 10; ++i) editor.key_pressed(Key::Minus, {});
+    EXPECT_EQ(editor.brush().target_level, 0);
+    for (int i = 0; i < 20; ++i) editor.key_pressed(Key::Equal, {});
+    EXPECT_EQ(editor.brush().target_level, kMaxBrushLevel);
 }
 
 TEST_F(EditorScript, StrokeOffTheMeshLeavesNoUndoStep) {
