@@ -26,11 +26,6 @@ void for_each_face_around(const rgb::Mesh& mesh, rgb::VertexId v, Fn&& fn) {
     } while (h.valid() && h != start);
 }
 
-template <class Id>
-void sort_unique(std::vector<Id>& ids) {
-    std::sort(ids.begin(), ids.end());
-    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-}
 
 std::vector<SlotRange> coalesce(const std::vector<rgb::FaceId>& sorted_faces) {
     std::vector<SlotRange> ranges;
@@ -120,27 +115,54 @@ void SurfaceGeometry::rebuild(const rgb::Mesh& mesh) {
     for (std::uint32_t f = 0; f < mesh.face_capacity(); ++f) write_slot(mesh, rgb::FaceId(f));
 }
 
+// Marks over slots for one update, so that each vertex and face is handled once (the change lists
+// name most of them several times) without sorting them.
+bool SurfaceGeometry::Marks::mark(std::uint32_t slot) {
+    if (slot >= stamps.size()) stamps.resize(std::max<std::size_t>(slot + 1, 2 * stamps.size()), 0);
+    if (stamps[slot] == current) return false;
+    stamps[slot] = current;
+    return true;
+}
+
+void SurfaceGeometry::Marks::start() {
+    if (++current == 0) {
+        std::fill(stamps.begin(), stamps.end(), 0);
+        current = 1;
+    }
+}
+
 std::vector<SlotRange> SurfaceGeometry::update(const rgb::Mesh& mesh, const MeshChanges& changes) {
+    if (changes.everything()) {
+        rebuild(mesh);
+        return {SlotRange{0, static_cast<std::uint32_t>(face_slots())}};
+    }
     resize(mesh);
+    vertex_marks_.start();
     std::vector<rgb::VertexId> moved;
     for (rgb::VertexId v : changes.moved_vertices())
-        if (mesh.is_live(v)) moved.push_back(v);
-    sort_unique(moved);
+        if (mesh.is_live(v) && vertex_marks_.mark(v.idx)) moved.push_back(v);
     for (rgb::VertexId v : moved) update_position(mesh, v);
 
     // A vertex's normal depends on its one-ring's positions.
-    std::vector<rgb::VertexId> renormal = moved;
+    vertex_marks_.start();
+    std::vector<rgb::VertexId> renormal;
+    for (rgb::VertexId v : moved)
+        if (vertex_marks_.mark(v.idx)) renormal.push_back(v);
     for (rgb::VertexId v : moved)
         for_each_face_around(mesh, v, [&](rgb::FaceId f) {
-            for (rgb::VertexId u : mesh.face_vertices(f)) renormal.push_back(u);
+            for (rgb::VertexId u : mesh.face_vertices(f))
+                if (vertex_marks_.mark(u.idx)) renormal.push_back(u);
         });
-    sort_unique(renormal);
     for (rgb::VertexId v : renormal) update_normal(mesh, v);
 
-    std::vector<rgb::FaceId> dirty = changes.changed_faces();
-    for (rgb::VertexId v : renormal) for_each_face_around(mesh, v, [&](rgb::FaceId f) { dirty.push_back(f); });
-    sort_unique(dirty);
-    std::erase_if(dirty, [&](rgb::FaceId f) { return f.idx >= mesh.face_capacity(); });
+    face_marks_.start();
+    std::vector<rgb::FaceId> dirty;
+    auto add_dirty = [&](rgb::FaceId f) {
+        if (f.idx < mesh.face_capacity() && face_marks_.mark(f.idx)) dirty.push_back(f);
+    };
+    for (rgb::FaceId f : changes.changed_faces()) add_dirty(f);
+    for (rgb::VertexId v : renormal) for_each_face_around(mesh, v, add_dirty);
+    std::sort(dirty.begin(), dirty.end());
     for (rgb::FaceId f : dirty) write_slot(mesh, f);
     return coalesce(dirty);
 }

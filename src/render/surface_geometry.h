@@ -83,7 +83,16 @@ private:
     void write_slot(const rgb::Mesh& mesh, rgb::FaceId f);
     void count(std::uint32_t code, int delta);
 
+    struct Marks {
+        std::vector<std::uint32_t> stamps;
+        std::uint32_t current = 0;
+        void start();
+        // False if the slot was marked already since start().
+        bool mark(std::uint32_t slot);
+    };
+
     PositionSource source_;
+    Marks vertex_marks_, face_marks_;
     std::vector<glm::vec3> positions_;  // by vertex slot
     std::vector<glm::vec3> normals_;    // by vertex slot
     std::vector<SurfaceVertex> vertices_;
