@@ -1,6 +1,7 @@
 #include "rgb/base_mesh.h"
 
 #include <algorithm>
+#include <atomic>
 #include <stdexcept>
 #include <string>
 
@@ -22,10 +23,12 @@ struct Directed {
     bool operator<(const Directed& o) const { return key < o.key; }
 };
 
+std::atomic<std::uint64_t> next_serial{1};
+
 }  // namespace
 
 BaseMesh::BaseMesh(std::span<const glm::dvec3> positions, std::span<const Triangle> triangles)
-    : positions_(positions.begin(), positions.end()), faces_(triangles.begin(), triangles.end()) {
+    : serial_(next_serial++), positions_(positions.begin(), positions.end()), faces_(triangles.begin(), triangles.end()) {
     const auto nv = static_cast<std::uint32_t>(positions_.size());
     if (positions_.size() >= kNone || 3 * faces_.size() >= kNone) reject("the mesh is too large");
     std::vector<Directed> directed;

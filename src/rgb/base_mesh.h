@@ -64,8 +64,12 @@ public:
     double longest_edge() const { return longest_edge_; }
 
     std::size_t memory_bytes() const;
+    // Different for every base mesh a process makes, so that caches of derived values can tell
+    // whether they belong to this one (an address can be reused by a later base mesh).
+    std::uint64_t serial() const { return serial_; }
 
 private:
+    std::uint64_t serial_;
     std::vector<glm::dvec3> positions_;
     std::vector<Triangle> faces_;
     std::vector<std::uint32_t> opposite_;

@@ -28,6 +28,8 @@ public:
     glm::dvec3 limit_position(const SurfacePoint& p);
     // p^k(p) for k >= p.level.
     glm::dvec3 control_point(const SurfacePoint& p, int k);
+    // Values kept from earlier calls.
+    std::size_t cached_values() const { return insertion_.size() + limit_.size(); }
 
 private:
     struct Key {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <memory>
 #include <vector>
 
 #include "rgb/hierarchy_evaluator.h"
@@ -26,12 +27,25 @@ std::optional<glm::dvec3> limit_from_ring(const Mesh& mesh, VertexId v) {
     return interior_limit(centre, points);
 }
 
+// One evaluator per thread and base mesh, kept between calls: neighbouring vertices share most of
+// the hierarchy values they need. Its values are only a cache, so it starts afresh when it grows large.
+HierarchyEvaluator& shared_evaluator(const BaseMesh& base) {
+    constexpr std::size_t kMaxValues = std::size_t(1) << 18;
+    thread_local std::unique_ptr<HierarchyEvaluator> evaluator;
+    thread_local std::uint64_t serial = 0;
+    if (!evaluator || serial != base.serial() || evaluator->cached_values() > kMaxValues) {
+        evaluator = std::make_unique<HierarchyEvaluator>(base);
+        serial = base.serial();
+    }
+    return *evaluator;
+}
+
 }  // namespace
 
 glm::dvec3 limit_position_uncached(const Mesh& mesh, VertexId v) {
     if (auto known = mesh.cached_limit(v)) return *known;
     if (auto limit = limit_from_ring(mesh, v)) return *limit;
-    return HierarchyEvaluator(mesh.base()).limit_position(mesh.address(v));
+    return shared_evaluator(mesh.base()).limit_position(mesh.address(v));
 }
 
 glm::dvec3 limit_position(const Mesh& mesh, VertexId v) {
