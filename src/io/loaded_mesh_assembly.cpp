@@ -43,6 +43,7 @@ void compact_vertices(const ObjRecords& records, TriangleSoup& soup, LoadedMesh&
     for (const rgb::Triangle& t : soup.triangles)
         for (std::uint32_t v : t) new_index[v] = 0;
     std::size_t unused = 0, first_line = 0;
+    mesh.positions.reserve(new_index.size());
     for (std::size_t v = 0; v < new_index.size(); ++v) {
         if (new_index[v] == kNoIndex) {
             if (unused++ == 0) first_line = records.position_lines[soup.vertex_origin[v]];

@@ -28,7 +28,7 @@ bool has_texcoords(const ObjRecords& records) {
 // Appends the triangle of the given corners of polygon p (with_texcoords: some face has them).
 void add_triangle(TriangleSoup& soup, const ObjRecords& records, bool with_texcoords, std::uint32_t p,
                   const std::array<std::uint32_t, 3>& corners) {
-    const ObjPolygon& polygon = records.polygons[p];
+    const ObjPolygon polygon = records.polygons[p];
     soup.triangles.push_back({polygon.vertices[corners[0]], polygon.vertices[corners[1]], polygon.vertices[corners[2]]});
     if (with_texcoords) {
         std::array<std::uint32_t, 3> uv{kNoIndex, kNoIndex, kNoIndex};
@@ -44,9 +44,10 @@ TriangleSoup triangulate(const ObjRecords& records, const std::string& file, std
     TriangleSoup soup = empty_soup(records);
     const bool with_texcoords = has_texcoords(records);
     std::size_t quads = 0, ngons = 0, from_polygons = 0;
+    std::vector<std::uint32_t> sorted;
     for (std::uint32_t p = 0; p < records.polygons.size(); ++p) {
-        const ObjPolygon& polygon = records.polygons[p];
-        std::vector<std::uint32_t> sorted = polygon.vertices;
+        const ObjPolygon polygon = records.polygons[p];
+        sorted.assign(polygon.vertices.begin(), polygon.vertices.end());
         std::sort(sorted.begin(), sorted.end());
         const auto repeated = std::adjacent_find(sorted.begin(), sorted.end());
         if (repeated != sorted.end())
@@ -163,6 +164,11 @@ LoadedMesh validate_mesh(const ObjRecords& records, const std::string& file, con
 LoadedMesh saved_mesh_content(const ObjRecords& records) {
     TriangleSoup soup = empty_soup(records);
     const bool with_texcoords = has_texcoords(records);
+    // One triangle per face (the caller checked): sized once, since a saved file may have millions.
+    soup.triangles.reserve(records.polygons.size());
+    soup.polygons.reserve(records.polygons.size());
+    soup.lines.reserve(records.polygons.size());
+    if (with_texcoords) soup.texcoords.reserve(records.polygons.size());
     for (std::uint32_t p = 0; p < records.polygons.size(); ++p) add_triangle(soup, records, with_texcoords, p, {0, 1, 2});
     return assemble_loaded_mesh(records, std::move(soup), {});
 }

@@ -16,8 +16,6 @@ namespace rgbio {
 
 namespace {
 
-constexpr std::string_view kWhitespace = " \t\r\f\v";
-
 // OBJ statements for free-form geometry, display and rendering attributes: valid OBJ that a
 // triangle-mesh tool has no use for (reported as ignored, unlike keywords that are not OBJ at all).
 constexpr std::array<std::string_view, 28> kUnsupportedStatements = {
@@ -44,17 +42,23 @@ void check_encoding(std::string_view text, const std::string& file) {
     }
 }
 
+// OBJ whitespace within a line, tested directly rather than searched for in a set (this runs for every byte).
+bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
+
 std::string_view trim(std::string_view s) {
-    const std::size_t b = s.find_first_not_of(kWhitespace);
-    if (b == std::string_view::npos) return {};
-    return s.substr(b, s.find_last_not_of(kWhitespace) - b + 1);
+    std::size_t b = 0, e = s.size();
+    while (b < e && is_blank(s[b])) ++b;
+    while (e > b && is_blank(s[e - 1])) --e;
+    return s.substr(b, e - b);
 }
 
 // Splits off the next whitespace-separated token.
 std::string_view next_token(std::string_view& rest) {
-    rest.remove_prefix(std::min(rest.find_first_not_of(kWhitespace), rest.size()));
-    const std::size_t e = std::min(rest.find_first_of(kWhitespace), rest.size());
-    std::string_view token = rest.substr(0, e);
+    std::size_t b = 0;
+    while (b < rest.size() && is_blank(rest[b])) ++b;
+    std::size_t e = b;
+    while (e < rest.size() && !is_blank(rest[e])) ++e;
+    const std::string_view token = rest.substr(b, e - b);
     rest.remove_prefix(e);
     return token;
 }
@@ -198,31 +202,28 @@ private:
     }
 
     void parse_face(std::string_view rest) {
-        ObjPolygon polygon;
-        polygon.line = line_;
+        corners_.clear();
+        corner_texcoords_.clear();
         std::size_t corners = 0;
         for (std::string_view token = next_token(rest); !token.empty(); token = next_token(rest), ++corners) {
             // v, v/vt, v//vn or v/vt/vn; the normal index is not read (input normals are dropped).
             const std::size_t slash = token.find('/');
-            polygon.vertices.push_back(parse_index(token.substr(0, slash), token, out_.positions.size(), "face index", "vertices"));
+            corners_.push_back(parse_index(token.substr(0, slash), token, out_.positions.size(), "face index", "vertices"));
             if (slash == std::string_view::npos) continue;
             const std::string_view after = token.substr(slash + 1);
             if (std::count(after.begin(), after.end(), '/') > 1)
                 fail(ObjProblem::Syntax, "face corner " + quoted_file_text(token) + " is not v, v/vt, v//vn or v/vt/vn");
             const std::string_view texcoord = after.substr(0, after.find('/'));
             if (texcoord.empty()) continue;
-            polygon.texcoords.resize(corners, kNoIndex);
-            polygon.texcoords.push_back(
+            corner_texcoords_.resize(corners, kNoIndex);
+            corner_texcoords_.push_back(
                 parse_index(texcoord, token, out_.texcoords.size(), "texture coordinate index", "texture coordinates (vt)"));
         }
-        if (polygon.vertices.size() < 3)
-            fail(ObjProblem::Syntax, "face has " + std::to_string(polygon.vertices.size()) + " vertices, needs at least 3");
-        if (!polygon.texcoords.empty()) polygon.texcoords.resize(corners, kNoIndex);
-        polygon.material = material_.id(out_.material_names);
-        polygon.group = group_.id(out_.group_names);
-        polygon.object = object_.id(out_.object_names);
-        polygon.smoothing_group = smoothing_group_;
-        out_.polygons.push_back(std::move(polygon));
+        if (corners_.size() < 3)
+            fail(ObjProblem::Syntax, "face has " + std::to_string(corners_.size()) + " vertices, needs at least 3");
+        if (!corner_texcoords_.empty()) corner_texcoords_.resize(corners, kNoIndex);
+        out_.polygons.add(corners_, corner_texcoords_, line_, material_.id(out_.material_names), group_.id(out_.group_names),
+                          object_.id(out_.object_names), smoothing_group_);
     }
 
     void parse_smoothing_group(std::string_view value) {
@@ -243,9 +244,46 @@ private:
     std::size_t line_ = 0;
     CurrentLabel material_, group_, object_;
     std::uint32_t smoothing_group_ = 0;
+    std::vector<std::uint32_t> corners_, corner_texcoords_;  // the face being read
 };
 
 }  // namespace
+
+ObjPolygon ObjPolygons::operator[](std::size_t i) const {
+    ObjPolygon p;
+    const std::size_t first = start_[i], count = start_[i + 1] - first;
+    p.vertices = std::span<const std::uint32_t>(vertices_).subspan(first, count);
+    if (!texcoords_.empty()) {
+        const auto texcoords = std::span<const std::uint32_t>(texcoords_).subspan(first, count);
+        if (std::any_of(texcoords.begin(), texcoords.end(), [](std::uint32_t t) { return t != kNoIndex; })) p.texcoords = texcoords;
+    }
+    p.line = lines_[i];
+    auto label = [i](const std::vector<std::uint32_t>& column, std::uint32_t none) { return column.empty() ? none : column[i]; };
+    p.material = label(material_, kNoIndex);
+    p.group = label(group_, kNoIndex);
+    p.object = label(object_, kNoIndex);
+    p.smoothing_group = label(smoothing_group_, 0);
+    return p;
+}
+
+void ObjPolygons::add(std::span<const std::uint32_t> vertices, std::span<const std::uint32_t> texcoords, std::size_t line,
+                      std::uint32_t material, std::uint32_t group, std::uint32_t object, std::uint32_t smoothing_group) {
+    const std::size_t before = size();
+    if (!texcoords.empty() && texcoords_.empty()) texcoords_.assign(vertices_.size(), kNoIndex);
+    if (!texcoords.empty()) texcoords_.insert(texcoords_.end(), texcoords.begin(), texcoords.end());
+    else if (!texcoords_.empty()) texcoords_.insert(texcoords_.end(), vertices.size(), kNoIndex);
+    vertices_.insert(vertices_.end(), vertices.begin(), vertices.end());
+    start_.push_back(static_cast<std::uint32_t>(vertices_.size()));
+    lines_.push_back(static_cast<std::uint32_t>(line));
+    auto label = [before](std::vector<std::uint32_t>& column, std::uint32_t value, std::uint32_t none) {
+        if (value != none && column.empty()) column.assign(before, none);
+        if (value != none || !column.empty()) column.push_back(value);
+    };
+    label(material_, material, kNoIndex);
+    label(group_, group, kNoIndex);
+    label(object_, object, kNoIndex);
+    label(smoothing_group_, smoothing_group, 0);
+}
 
 void SkippedLines::add(std::size_t line, std::string_view keyword) {
     if (count++ == 0) {

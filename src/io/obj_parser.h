@@ -11,6 +11,8 @@
 // coordinate written with 17 significant digits (or shortest round-trip form) comes back bit for bit.
 #include <cstddef>
 #include <cstdint>
+#include <iterator>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -26,14 +28,58 @@ namespace rgbio {
 // precision in the subdivision arithmetic, and real models are never that large.
 inline constexpr double kMaxCoordinate = 1e12;
 
+// One face as read: views into ObjPolygons' flat arrays, valid while the ObjRecords live.
 struct ObjPolygon {
-    std::vector<std::uint32_t> vertices;   // 0-based, already resolved (negative OBJ indices too)
-    std::vector<std::uint32_t> texcoords;  // empty when no corner names a vt; else per corner, or kNoIndex
+    std::span<const std::uint32_t> vertices;   // 0-based, already resolved (negative OBJ indices too)
+    std::span<const std::uint32_t> texcoords;  // empty when no corner names a vt; else per corner, or kNoIndex
     std::size_t line = 0;
     std::uint32_t material = kNoIndex;  // indices into ObjRecords' name tables
     std::uint32_t group = kNoIndex;
     std::uint32_t object = kNoIndex;
     std::uint32_t smoothing_group = 0;  // 0: off
+};
+
+// The faces of a file in flat arrays: a few allocations for all of them rather than one per face
+// (a saved 6M-triangle file has 6M faces). A label column stays empty while every face has the
+// default label.
+class ObjPolygons {
+public:
+    class iterator {
+    public:
+        using iterator_category = std::input_iterator_tag;
+        using value_type = ObjPolygon;
+        using difference_type = std::ptrdiff_t;
+        using pointer = void;
+        using reference = ObjPolygon;
+        iterator(const ObjPolygons* polygons, std::size_t i) : polygons_(polygons), i_(i) {}
+        ObjPolygon operator*() const { return (*polygons_)[i_]; }
+        iterator& operator++() {
+            ++i_;
+            return *this;
+        }
+        bool operator==(const iterator& o) const { return i_ == o.i_; }
+
+    private:
+        const ObjPolygons* polygons_;
+        std::size_t i_;
+    };
+
+    std::size_t size() const { return lines_.size(); }
+    bool empty() const { return lines_.empty(); }
+    ObjPolygon operator[](std::size_t i) const;
+    iterator begin() const { return {this, 0}; }
+    iterator end() const { return {this, size()}; }
+
+    // `texcoords` is empty or has one entry per vertex (kNoIndex where a corner names none).
+    void add(std::span<const std::uint32_t> vertices, std::span<const std::uint32_t> texcoords, std::size_t line,
+             std::uint32_t material, std::uint32_t group, std::uint32_t object, std::uint32_t smoothing_group);
+
+private:
+    std::vector<std::uint32_t> start_{0};  // polygon i's corners are [start_[i], start_[i + 1])
+    std::vector<std::uint32_t> vertices_;
+    std::vector<std::uint32_t> texcoords_;  // empty, or one per corner
+    std::vector<std::uint32_t> lines_;      // the file is below 4 GiB, so are its line numbers
+    std::vector<std::uint32_t> material_, group_, object_, smoothing_group_;  // empty: all default
 };
 
 struct ObjStateLine {
@@ -58,7 +104,7 @@ struct ObjRecords {
     std::vector<std::uint8_t> has_colour;
     std::vector<glm::dvec2> texcoords;
     SkippedLines texcoord_w;  // vt lines with a non-zero w, which is dropped
-    std::vector<ObjPolygon> polygons;
+    ObjPolygons polygons;
     std::vector<std::string> material_names, group_names, object_names;  // in order of first use by a face
     std::vector<std::string> material_libraries;
     std::size_t line_elements = 0;   // `l` lines, ignored

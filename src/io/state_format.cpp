@@ -26,15 +26,15 @@ public:
     StateLineReader(const ObjStateLine& line, const std::string& file) : rest_(line.text), line_(line.line), file_(file) {}
 
     std::string_view word() {
-        const std::size_t b = std::min(rest_.find_first_not_of(" \t\r"), rest_.size());
-        rest_.remove_prefix(b);
-        const std::size_t e = std::min(rest_.find_first_of(" \t\r"), rest_.size());
+        skip_blanks();
+        std::size_t e = 0;
+        while (e < rest_.size() && !is_blank(rest_[e])) ++e;
         const std::string_view w = rest_.substr(0, e);
         rest_.remove_prefix(e);
         return w;
     }
     bool at_end() {
-        rest_.remove_prefix(std::min(rest_.find_first_not_of(" \t\r"), rest_.size()));
+        skip_blanks();
         return rest_.empty();
     }
     template <class T>
@@ -63,6 +63,14 @@ public:
     }
 
 private:
+    // Tested directly rather than searched for in a set: a saved file has millions of state numbers.
+    static bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+    void skip_blanks() {
+        std::size_t b = 0;
+        while (b < rest_.size() && is_blank(rest_[b])) ++b;
+        rest_.remove_prefix(b);
+    }
+
     std::string_view rest_;
     std::size_t line_;
     const std::string& file_;
@@ -143,6 +151,9 @@ std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const
             // Counts are bounded by what the lines can hold, so a forged count cannot exhaust memory.
             expected[s] = r.number<std::size_t>(kPerLine * lines.size());
             r.expect_end();
+            if (section == Section::BaseVertices) state.base_positions.reserve(expected[s]);
+            if (section == Section::BaseFaces) state.base_triangles.reserve(expected[s]);
+            if (section == Section::Addresses) addresses.reserve(expected[s]);
         } else if (kind == "p") {
             if (section != Section::BaseVertices) r.fail("a base vertex outside its section");
             glm::dvec3 p;
@@ -185,6 +196,7 @@ std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const
             last.fail(std::string("section '") + names[s] + "' " + (seen[s] ? "announces " + std::to_string(expected[s]) +
                       " entries but holds " + std::to_string(got[s]) : std::string("is missing")));
     // A base vertex's address is its corner of a base face that uses it.
+    state.vertices.reserve(state.base_positions.size() + addresses.size());
     state.vertices.assign(state.base_positions.size(), rgb::SurfacePoint{});
     std::vector<bool> placed(state.base_positions.size(), false);
     for (std::uint32_t f = 0; f < state.base_triangles.size(); ++f)
