@@ -14,8 +14,8 @@
 #include "io/obj_parser.h"
 #include "io/state_format.h"
 #include "io/truncation_check.h"
-#include "rgb/loop_geometry.h"
 #include "rgb/mesh.h"
+#include "rgb/position_check.h"
 #include "rgb/state.h"
 
 namespace rgbio {
@@ -73,12 +73,7 @@ std::shared_ptr<rgb::Mesh> adaptive_mesh(SavedState saved, const ObjRecords& rec
         return nullptr;
     }
     // An edit elsewhere (moved or scaled vertices) must win over the state, not be silently undone.
-    std::size_t differing = 0;
-    std::uint32_t i = 0;
-    for (rgb::VertexId v : mesh->vertices()) {
-        const glm::dvec3 p = saved.limit_positions ? rgb::limit_position(*mesh, v) : rgb::displayed_position(*mesh, v);
-        differing += p != records.positions[i++];
-    }
+    const std::size_t differing = rgb::count_differing_positions(*mesh, records.positions, saved.limit_positions);
     if (differing > 0) {
         reason = std::to_string(differing) + " of " + std::to_string(records.positions.size()) +
                  " vertex positions differ from the ones it gives";

@@ -1,0 +1,130 @@
+#include "rgb/hierarchy_positions.h"
+
+#include <array>
+#include <stdexcept>
+
+#include "rgb/address_index.h"
+#include "rgb/base_mesh.h"
+#include "rgb/hierarchy_evaluator.h"
+#include "rgb/loop_rules.h"
+
+namespace rgb {
+
+namespace {
+
+// Vertices ordered by level (what a vertex's values need is coarser), and within a level by base face
+// (its neighbours' table entries are then in cache).
+std::vector<std::uint32_t> level_then_face_order(std::span<const SurfacePoint> points, std::size_t base_faces) {
+    auto counting_sort = [&](const std::vector<std::uint32_t>& in, std::size_t buckets, auto key) {
+        std::vector<std::uint32_t> start(buckets + 1, 0), out(in.size());
+        for (std::uint32_t v : in) ++start[key(v) + 1];
+        for (std::size_t b = 0; b < buckets; ++b) start[b + 1] += start[b];
+        for (std::uint32_t v : in) out[start[key(v)]++] = v;
+        return out;
+    };
+    std::vector<std::uint32_t> all(points.size());
+    for (std::uint32_t v = 0; v < all.size(); ++v) all[v] = v;
+    int top = 0;
+    for (const SurfacePoint& p : points) top = std::max(top, p.level);
+    const auto by_face = counting_sort(all, base_faces, [&](std::uint32_t v) { return points[v].face; });
+    return counting_sort(by_face, static_cast<std::size_t>(top) + 1, [&](std::uint32_t v) { return std::uint32_t(points[v].level); });
+}
+
+class Evaluation {
+public:
+    Evaluation(const BaseMesh& base, std::span<const SurfacePoint> points, const AddressIndex& index)
+        : base_(base), points_(points), index_(index), evaluator_(base) {
+        result_.insertion.resize(points.size());
+        base_gamma_.resize(base.num_vertices());
+        for (std::uint32_t v = 0; v < base.num_vertices(); ++v) base_gamma_[v] = loop_gamma(base.valence(v), base.is_boundary_vertex(v));
+    }
+
+    HierarchyPositions run(std::span<const std::uint8_t> want_limit) {
+        for (std::uint32_t v = 0; v < base_.num_vertices(); ++v) result_.insertion[v] = base_.position(v);
+        const std::vector<std::uint32_t> order = level_then_face_order(points_, base_.num_faces());
+        for (std::uint32_t v : order)
+            if (points_[v].level > 0) result_.insertion[v] = insertion_position(points_[v]);
+        for (std::uint32_t v : order)
+            if (want_limit[v]) limit(v);
+        return std::move(result_);
+    }
+
+private:
+    // Spec §4.4: the odd rule on the vertex's stencil in Σ(l-1).
+    glm::dvec3 insertion_position(const SurfacePoint& p) {
+        const PointStencil st = parent_stencil(base_, p);
+        const int l = p.level - 1;
+        const glm::dvec3 a = control_point(vertex_at(st.ends[0]), l), b = control_point(vertex_at(st.ends[1]), l);
+        if (st.boundary) return boundary_edge_point(a, b);
+        return interior_edge_point(a, b, control_point(vertex_at(st.opposite[0]), l), control_point(vertex_at(st.opposite[1]), l));
+    }
+
+    std::uint32_t vertex_at(const SurfacePoint& p) const {
+        const std::uint32_t v = index_.find(canonical(base_, p));
+        if (v == AddressIndex::kAbsent) throw std::invalid_argument("a vertex's parent triangles are not all present");
+        return v;
+    }
+
+    // p^k(v), k >= level(v), by the closed form of spec §4.2.
+    glm::dvec3 control_point(std::uint32_t v, int k) {
+        const int l = points_[v].level;
+        if (k <= l) return result_.insertion[v];
+        const double gamma = v < base_gamma_.size() ? base_gamma_[v] : loop_gamma(6, is_boundary(base_, points_[v]));
+        return closed_form(result_.insertion[v], limit(v), gamma, k - l);
+    }
+
+    // p^inf(v) from its ring at its own level. A ring vertex the set lacks (at the edge of a refined
+    // region) is computed from the base mesh by the evaluator, which gives the same bits.
+    glm::dvec3 limit(std::uint32_t v) {
+        if (const auto known = result_.limits.find(v)) return *known;
+        const SurfacePoint& p = points_[v];
+        const glm::dvec3& centre = result_.insertion[v];
+        glm::dvec3 value;
+        if (p.level == 0) {
+            const std::vector<std::uint32_t> ring = base_.ring(v);
+            if (base_.is_boundary_vertex(v)) {
+                value = boundary_limit(centre, result_.insertion[ring.front()], result_.insertion[ring.back()]);
+            } else {
+                std::vector<glm::dvec3> around;
+                around.reserve(ring.size());
+                for (std::uint32_t u : ring) around.push_back(result_.insertion[u]);
+                value = interior_limit(centre, around);
+            }
+        } else {
+            const auto ring = ring_at_own_level(base_, p);
+            const bool boundary = is_boundary(base_, p);
+            const std::size_t used = boundary ? 2 : 6;  // a boundary vertex's limit needs its two boundary neighbours
+            std::array<std::uint32_t, 6> members;
+            bool present = true;
+            for (std::size_t r = 0; r < used && present; ++r) {
+                members[r] = index_.find(canonical(base_, ring[r]));
+                present = members[r] != AddressIndex::kAbsent;
+            }
+            if (!present) {
+                value = evaluator_.limit_position(p);
+            } else {
+                std::array<glm::dvec3, 6> around;
+                for (std::size_t r = 0; r < used; ++r) around[r] = control_point(members[r], p.level);
+                value = boundary ? boundary_limit(centre, around[0], around[1]) : interior_limit(centre, around);
+            }
+        }
+        result_.limits.insert(v, value);
+        return value;
+    }
+
+    const BaseMesh& base_;
+    std::span<const SurfacePoint> points_;
+    const AddressIndex& index_;
+    std::vector<double> base_gamma_;
+    HierarchyEvaluator evaluator_;
+    HierarchyPositions result_;
+};
+
+}  // namespace
+
+HierarchyPositions hierarchy_positions(const BaseMesh& base, std::span<const SurfacePoint> points, const AddressIndex& index,
+                                       std::span<const std::uint8_t> want_limit) {
+    return Evaluation(base, points, index).run(want_limit);
+}
+
+}  // namespace rgb

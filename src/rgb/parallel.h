@@ -1,0 +1,52 @@
+#pragma once
+// Data-parallel loops for the linear passes over a whole mesh (loading a saved file checks millions
+// of faces). The range is cut into one contiguous block per hardware thread; each block runs on its
+// own thread, the first on the caller's. Results must not depend on the cut: the body writes only
+// to its own elements, and an exception from the lowest block that threw is the one rethrown, which
+// is the one a plain loop would have met first when blocks stop at their first problem.
+#include <algorithm>
+#include <cstddef>
+#include <exception>
+#include <functional>
+#include <thread>
+#include <vector>
+
+namespace rgb {
+
+// Blocks at most; more would only add start-up cost on the machines rgbsub runs on.
+inline constexpr std::size_t kMaxParallelBlocks = 8;
+
+// How many blocks a loop over n elements gets: one per hardware thread, none smaller than min_block.
+inline std::size_t parallel_blocks(std::size_t n, std::size_t min_block) {
+    const std::size_t threads = std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, kMaxParallelBlocks);
+    return std::clamp<std::size_t>(n / std::max<std::size_t>(min_block, 1), 1, threads);
+}
+
+// Calls body(block, begin, end) for `blocks` contiguous blocks covering [0, n), in parallel.
+template <class Body>
+void parallel_blocks_for(std::size_t n, std::size_t blocks, const Body& body) {
+    blocks = std::max<std::size_t>(blocks, 1);
+    auto run = [&](std::size_t b, std::exception_ptr& error) {
+        try {
+            body(b, n * b / blocks, n * (b + 1) / blocks);
+        } catch (...) {
+            error = std::current_exception();
+        }
+    };
+    std::vector<std::exception_ptr> errors(blocks);
+    std::vector<std::thread> threads;
+    threads.reserve(blocks - 1);
+    for (std::size_t b = 1; b < blocks; ++b) threads.emplace_back(run, b, std::ref(errors[b]));
+    run(0, errors[0]);
+    for (std::thread& t : threads) t.join();
+    for (const std::exception_ptr& e : errors)
+        if (e) std::rethrow_exception(e);
+}
+
+// Calls body(begin, end) on blocks of [0, n), in parallel when n is at least two blocks of min_block.
+template <class Body>
+void parallel_for(std::size_t n, std::size_t min_block, const Body& body) {
+    parallel_blocks_for(n, parallel_blocks(n, min_block), [&](std::size_t, std::size_t begin, std::size_t end) { body(begin, end); });
+}
+
+}  // namespace rgb
