@@ -7,10 +7,12 @@
 #include <limits>
 #include <map>
 
+#include "io/obj_blocks.h"
 #include "io/obj_error.h"
 #include "io/obj_numbers.h"
 #include "io/printable_text.h"
 #include "io/text_lines.h"
+#include "rgb/parallel.h"
 
 namespace rgbio {
 
@@ -87,10 +89,18 @@ private:
 
 class LineParser {
 public:
-    LineParser(const std::string& file, ObjRecords& out) : file_(file), out_(out) {}
+    // The lines to parse come after `before` (the whole file: after nothing); line numbers and
+    // indices are the file's.
+    LineParser(const std::string& file, ObjRecords& out, const LinesBefore& before) : file_(file), out_(out), before_(before) {
+        if (before.material) material_.set(*before.material);
+        if (before.group) group_.set(*before.group);
+        if (before.object) object_.set(*before.object);
+        if (before.smoothing) parse_smoothing_group(*before.smoothing);
+    }
 
-    void parse(std::size_t line, std::string_view content) {
-        line_ = line;
+    // line_in_block: the line's number among the lines given to this parser.
+    void parse(std::size_t line_in_block, std::string_view content) {
+        const std::size_t line = line_ = before_.lines + line_in_block;
         std::string_view rest = content;
         const std::string_view keyword = next_token(rest);
         if (keyword.empty()) return;
@@ -208,7 +218,7 @@ private:
         for (std::string_view token = next_token(rest); !token.empty(); token = next_token(rest), ++corners) {
             // v, v/vt, v//vn or v/vt/vn; the normal index is not read (input normals are dropped).
             const std::size_t slash = token.find('/');
-            corners_.push_back(parse_index(token.substr(0, slash), token, out_.positions.size(), "face index", "vertices"));
+            corners_.push_back(parse_index(token.substr(0, slash), token, before_.positions + out_.positions.size(), "face index", "vertices"));
             if (slash == std::string_view::npos) continue;
             const std::string_view after = token.substr(slash + 1);
             if (std::count(after.begin(), after.end(), '/') > 1)
@@ -217,7 +227,8 @@ private:
             if (texcoord.empty()) continue;
             corner_texcoords_.resize(corners, kNoIndex);
             corner_texcoords_.push_back(
-                parse_index(texcoord, token, out_.texcoords.size(), "texture coordinate index", "texture coordinates (vt)"));
+                parse_index(texcoord, token, before_.texcoords + out_.texcoords.size(), "texture coordinate index",
+                            "texture coordinates (vt)"));
         }
         if (corners_.size() < 3)
             fail(ObjProblem::Syntax, "face has " + std::to_string(corners_.size()) + " vertices, needs at least 3");
@@ -241,6 +252,7 @@ private:
 
     const std::string& file_;
     ObjRecords& out_;
+    const LinesBefore& before_;
     std::size_t line_ = 0;
     CurrentLabel material_, group_, object_;
     std::uint32_t smoothing_group_ = 0;
@@ -285,6 +297,28 @@ void ObjPolygons::add(std::span<const std::uint32_t> vertices, std::span<const s
     label(smoothing_group_, smoothing_group, 0);
 }
 
+void ObjPolygons::append(const ObjPolygons& other, std::span<const std::uint32_t> material, std::span<const std::uint32_t> group,
+                         std::span<const std::uint32_t> object) {
+    const std::size_t before = size(), corners_before = vertices_.size();
+    if (!other.texcoords_.empty() && texcoords_.empty()) texcoords_.assign(corners_before, kNoIndex);
+    if (!other.texcoords_.empty()) texcoords_.insert(texcoords_.end(), other.texcoords_.begin(), other.texcoords_.end());
+    else if (!texcoords_.empty()) texcoords_.insert(texcoords_.end(), other.vertices_.size(), kNoIndex);
+    vertices_.insert(vertices_.end(), other.vertices_.begin(), other.vertices_.end());
+    for (std::size_t i = 1; i < other.start_.size(); ++i) start_.push_back(static_cast<std::uint32_t>(corners_before + other.start_[i]));
+    lines_.insert(lines_.end(), other.lines_.begin(), other.lines_.end());
+    auto label = [&](std::vector<std::uint32_t>& column, const std::vector<std::uint32_t>& added, std::span<const std::uint32_t> id,
+                     std::uint32_t none) {
+        if (added.empty() && column.empty()) return;
+        column.resize(before, none);
+        if (added.empty()) column.resize(size(), none);
+        for (std::uint32_t x : added) column.push_back(x == none || id.empty() ? x : id[x]);
+    };
+    label(material_, other.material_, material, kNoIndex);
+    label(group_, other.group_, group, kNoIndex);
+    label(object_, other.object_, object, kNoIndex);
+    label(smoothing_group_, other.smoothing_group_, {}, 0);
+}
+
 void SkippedLines::add(std::size_t line, std::string_view keyword) {
     if (count++ == 0) {
         first_line = line;
@@ -292,15 +326,72 @@ void SkippedLines::add(std::size_t line, std::string_view keyword) {
     }
 }
 
+namespace {
+
+// The lines of `text`, which come after `before`.
+ObjRecords parse_lines(std::string_view text, const LinesBefore& before, const std::string& file) {
+    ObjRecords records;
+    LineParser parser(file, records, before);
+    for_each_line(text, [&](std::size_t line, std::string_view content) { parser.parse(line, content); });
+    return records;
+}
+
+// What the lines of `text` define for later ones, by the keywords LineParser reads them with.
+LinesBefore summarize_lines(std::string_view text) {
+    LinesBefore summary;
+    for_each_line(text, [&](std::size_t, std::string_view content) {
+        ++summary.lines;
+        std::string_view rest = content;
+        const std::string_view keyword = next_token(rest);
+        if (keyword == "v") ++summary.positions;
+        else if (keyword == "vt") ++summary.texcoords;
+        else if (keyword == "usemtl") summary.material = trim(rest);
+        else if (keyword == "g") summary.group = trim(rest);
+        else if (keyword == "o") summary.object = trim(rest);
+        else if (keyword == "s") summary.smoothing = trim(rest);
+    });
+    return summary;
+}
+
+// Below this many bytes per thread, starting threads costs more than it saves.
+constexpr std::size_t kBlockBytes = std::size_t(4) << 20;
+
+}  // namespace
+
+ObjRecords parse_obj_in_blocks(std::string_view text, const std::string& file, std::size_t count) {
+    const std::vector<std::string_view> blocks = line_blocks(text, count);
+    if (blocks.size() <= 1) return parse_lines(text, {}, file);
+    // Each block is parsed knowing what the blocks before it define; that takes a quick pass over
+    // them first, itself in parallel.
+    std::vector<LinesBefore> summaries(blocks.size() - 1);
+    rgb::parallel_blocks_for(summaries.size(), summaries.size(),
+                             [&](std::size_t b, std::size_t, std::size_t) { summaries[b] = summarize_lines(blocks[b]); });
+    std::vector<LinesBefore> before(blocks.size());
+    for (std::size_t b = 1; b < blocks.size(); ++b) before[b] = before[b - 1].then(summaries[b - 1]);
+    std::vector<ObjRecords> parsed(blocks.size());
+    std::vector<std::uint8_t> failed(blocks.size(), 0);
+    rgb::parallel_blocks_for(blocks.size(), blocks.size(), [&](std::size_t b, std::size_t, std::size_t) {
+        try {
+            parsed[b] = parse_lines(blocks[b], before[b], file);
+        } catch (const ObjError&) {
+            if (b == 0) throw;
+            failed[b] = 1;
+        }
+    });
+    // A later block's error message may depend on lines before it (the hint about unknown keywords
+    // before a bad index): the whole text, read in one piece, says it exactly as usual.
+    if (std::find(failed.begin(), failed.end(), 1) != failed.end()) return parse_lines(text, {}, file);
+    ObjRecords records = std::move(parsed[0]);
+    for (std::size_t b = 1; b < blocks.size(); ++b) append_records(records, parsed[b]);
+    return records;
+}
+
 ObjRecords parse_obj(std::string_view text, const std::string& file) {
     if (text.starts_with("\xef\xbb\xbf")) text.remove_prefix(3);  // UTF-8 byte order mark
     check_encoding(text, file);
     if (text.size() >= std::numeric_limits<std::uint32_t>::max())
         throw ObjError(ObjProblem::Unreadable, file, 0, "the file is larger than 4 GiB");
-    ObjRecords records;
-    LineParser parser(file, records);
-    for_each_line(text, [&](std::size_t line, std::string_view content) { parser.parse(line, content); });
-    return records;
+    return parse_obj_in_blocks(text, file, rgb::parallel_blocks(text.size(), kBlockBytes));
 }
 
 }  // namespace rgbio

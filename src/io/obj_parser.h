@@ -73,6 +73,10 @@ public:
     // `texcoords` is empty or has one entry per vertex (kNoIndex where a corner names none).
     void add(std::span<const std::uint32_t> vertices, std::span<const std::uint32_t> texcoords, std::size_t line,
              std::uint32_t material, std::uint32_t group, std::uint32_t object, std::uint32_t smoothing_group);
+    // Appends the faces of a later part of the file, their label ids mapped through the tables (the
+    // new id of each of `other`'s ids).
+    void append(const ObjPolygons& other, std::span<const std::uint32_t> material, std::span<const std::uint32_t> group,
+                std::span<const std::uint32_t> object);
 
 private:
     std::vector<std::uint32_t> start_{0};  // polygon i's corners are [start_[i], start_[i + 1])
