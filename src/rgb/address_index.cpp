@@ -2,16 +2,6 @@
 
 namespace rgb {
 
-std::size_t AddressIndex::home(const SurfacePoint& p) const {
-    std::uint32_t h = p.a[0] * 0x9e3779b1u ^ a1_level(p) * 0x85ebca77u;
-    h ^= h >> 15;
-    h *= 0x2c1b3c6du;
-    h ^= h >> 13;
-    // Lemire's range reduction: uniform over a region of any size, without a division.
-    const std::size_t size = region_start_[p.face + 1] - region_start_[p.face];
-    return region_start_[p.face] + static_cast<std::size_t>((std::uint64_t(h) * size) >> 32);
-}
-
 AddressIndex::AddressIndex(std::span<const SurfacePoint> points, std::size_t num_base_faces) {
     // Two slots per vertex of the face: probe sequences stay short.
     region_start_.assign(num_base_faces + 1, 0);
@@ -27,7 +17,7 @@ AddressIndex::AddressIndex(std::span<const SurfacePoint> points, std::size_t num
         const SurfacePoint& p = points[v];
         const std::size_t begin = region_start_[p.face], end = region_start_[p.face + 1];
         const std::uint32_t a1l = a1_level(p);
-        for (std::size_t s = home(p);; s = s + 1 == end ? begin : s + 1) {
+        for (std::size_t s = home(p, begin, end);; s = s + 1 == end ? begin : s + 1) {
             Entry& e = entries_[s];
             if (e.vertex == kAbsent) {
                 e = {p.a[0], a1l, v};
@@ -38,17 +28,6 @@ AddressIndex::AddressIndex(std::span<const SurfacePoint> points, std::size_t num
                 break;
             }
         }
-    }
-}
-
-std::uint32_t AddressIndex::find(const SurfacePoint& p) const {
-    const std::size_t begin = region_start_[p.face], end = region_start_[p.face + 1];
-    if (begin == end) return kAbsent;
-    const std::uint32_t a1l = a1_level(p);
-    for (std::size_t s = home(p);; s = s + 1 == end ? begin : s + 1) {
-        const Entry& e = entries_[s];
-        if (e.vertex == kAbsent) return kAbsent;
-        if (e.a0 == p.a[0] && e.a1_level == a1l) return e.vertex;
     }
 }
 

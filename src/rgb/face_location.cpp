@@ -18,9 +18,11 @@ std::optional<CornerNumerators> corners_in(const Mesh& mesh, FaceId f, std::uint
     CornerNumerators out;
     const auto& fv = mesh.face_vertices(f);
     for (int c = 0; c < 3; ++c) {
-        const auto p = in_face(mesh.base(), mesh.address(fv[c]), g);
+        const SurfacePoint a = mesh.address(fv[c]);
+        // Most corners are given in g itself: no conversion (this runs for every face loaded).
+        const auto p = a.face == g ? std::optional<SurfacePoint>(a) : in_face(mesh.base(), a, g);
         if (!p) return std::nullopt;
-        out[c] = numerators_at(*p, level);
+        for (int i = 0; i < 3; ++i) out[c][i] = p->a[i] << (level - p->level);
     }
     // All three corners on g's boundary does not put f inside g: its centroid must be interior.
     for (int i = 0; i < 3; ++i)
