@@ -33,6 +33,8 @@ void join_skipped(SkippedLines& into, const SkippedLines& later) {
 
 template <class T>
 void append(std::vector<T>& into, const std::vector<T>& later) {
+    // Exactly the room needed: growth by doubling would fault in up to twice the pages.
+    into.reserve(into.size() + later.size());
     into.insert(into.end(), later.begin(), later.end());
 }
 

@@ -300,6 +300,9 @@ void ObjPolygons::add(std::span<const std::uint32_t> vertices, std::span<const s
 void ObjPolygons::append(const ObjPolygons& other, std::span<const std::uint32_t> material, std::span<const std::uint32_t> group,
                          std::span<const std::uint32_t> object) {
     const std::size_t before = size(), corners_before = vertices_.size();
+    vertices_.reserve(corners_before + other.vertices_.size());
+    start_.reserve(start_.size() + other.size());
+    lines_.reserve(before + other.size());
     if (!other.texcoords_.empty() && texcoords_.empty()) texcoords_.assign(corners_before, kNoIndex);
     if (!other.texcoords_.empty()) texcoords_.insert(texcoords_.end(), other.texcoords_.begin(), other.texcoords_.end());
     else if (!texcoords_.empty()) texcoords_.insert(texcoords_.end(), other.vertices_.size(), kNoIndex);

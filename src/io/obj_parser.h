@@ -67,6 +67,8 @@ public:
     std::size_t size() const { return lines_.size(); }
     bool empty() const { return lines_.empty(); }
     ObjPolygon operator[](std::size_t i) const;
+    // Every face's vertices one after the other (3 per face where all are triangles).
+    std::span<const std::uint32_t> all_vertices() const { return vertices_; }
     iterator begin() const { return {this, 0}; }
     iterator end() const { return {this, size()}; }
 

@@ -57,14 +57,17 @@ std::shared_ptr<rgb::Mesh> adaptive_mesh(SavedState saved, const ObjRecords& rec
                  std::to_string(records.positions.size());
         return nullptr;
     }
-    saved.mesh.faces.reserve(records.polygons.size());
-    for (const ObjPolygon& p : records.polygons) {
-        if (p.vertices.size() != 3) {
-            reason = "the file has a face with " + std::to_string(p.vertices.size()) + " vertices (line " + std::to_string(p.line) + ")";
-            return nullptr;
-        }
-        saved.mesh.faces.push_back({p.vertices[0], p.vertices[1], p.vertices[2]});
+    const std::span<const std::uint32_t> corners = records.polygons.all_vertices();
+    if (corners.size() != 3 * records.polygons.size()) {
+        for (const ObjPolygon& p : records.polygons)
+            if (p.vertices.size() != 3) {
+                reason = "the file has a face with " + std::to_string(p.vertices.size()) + " vertices (line " + std::to_string(p.line) + ")";
+                return nullptr;
+            }
     }
+    // All triangles: their corners are the faces, three by three.
+    saved.mesh.faces.resize(records.polygons.size());
+    std::memcpy(saved.mesh.faces.data(), corners.data(), corners.size_bytes());
     std::shared_ptr<rgb::Mesh> mesh;
     try {
         mesh = std::make_shared<rgb::Mesh>(rgb::restore_state(saved.mesh));

@@ -238,6 +238,23 @@ TEST(SavedStateTampering, AFlippedEdgeBetweenGreensIsDropped) {
     }
 }
 
+TEST(SavedStateTampering, TwoTrianglesJoinedIntoAQuadAreDropped) {
+    const rgb::Mesh mesh = adaptive_octahedron();
+    SavedFile file(format_obj(mesh, {}));
+    // Another program merged two triangles into the quadrilateral they form, and kept the header's
+    // face count true.
+    const EdgePair pair = pairs(mesh, false).front();
+    file.lines[file.first_f + pair.f] = "f " + std::to_string(pair.a + 1) + " " + std::to_string(pair.y + 1) + " " +
+                                        std::to_string(pair.b + 1) + " " + std::to_string(pair.x + 1);
+    file.lines[file.first_f + pair.g] = "# f removed";
+    const std::string count = std::to_string(mesh.num_faces()) + " triangles";
+    file.lines[0].replace(file.lines[0].find(count), count.size(), std::to_string(mesh.num_faces() - 1) + " triangles");
+    const LoadedMesh loaded = read_obj_text(file.text(), "quad.obj");
+    EXPECT_FALSE(loaded.adaptive);
+    EXPECT_TRUE(test::has_warning(loaded.warnings, "a face with 4 vertices (line " + std::to_string(file.first_f + pair.f + 1) + ")"))
+        << (loaded.warnings.empty() ? "" : loaded.warnings[0]);
+}
+
 TEST(SavedStateTampering, ACoordinateOneUlpOffIsDropped) {
     SavedFile file(format_obj(adaptive_octahedron(), {}));
     const LoadedMesh original = read_obj_text(file.text(), "saved.obj");
