@@ -49,4 +49,27 @@ void parallel_for(std::size_t n, std::size_t min_block, const Body& body) {
     parallel_blocks_for(n, parallel_blocks(n, min_block), [&](std::size_t, std::size_t begin, std::size_t end) { body(begin, end); });
 }
 
+// Runs a() on this thread and b() on another, and waits for both; rethrows a's exception if it threw,
+// else b's (the order in which a plain a(); b(); would have met them).
+template <class A, class B>
+void parallel_invoke(const A& a, const B& b) {
+    std::exception_ptr b_error;
+    std::thread other([&] {
+        try {
+            b();
+        } catch (...) {
+            b_error = std::current_exception();
+        }
+    });
+    std::exception_ptr a_error;
+    try {
+        a();
+    } catch (...) {
+        a_error = std::current_exception();
+    }
+    other.join();
+    if (a_error) std::rethrow_exception(a_error);
+    if (b_error) std::rethrow_exception(b_error);
+}
+
 }  // namespace rgb

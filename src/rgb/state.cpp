@@ -141,6 +141,56 @@ std::optional<FaceType> type_from_corners(const Mesh& m, FaceId face) {
     return std::nullopt;
 }
 
+// Vertices: addresses checked and made canonical (points), so that equal points compare equal. The
+// first problem in vertex order is reported, a bad address or a repeated one.
+AddressIndex checked_addresses(const BaseMesh& base, const std::vector<SurfacePoint>& vertices, std::vector<SurfacePoint>& points) {
+    const std::size_t nv = vertices.size();
+    std::optional<std::string> problem;
+    std::uint32_t checked = 0;
+    for (; checked < nv && !problem; ++checked) {
+        problem = address_problem(base, checked, vertices[checked]);
+        if (!problem) points[checked] = canonical(base, vertices[checked]);
+    }
+    if (problem) --checked;
+    AddressIndex index(std::span<const SurfacePoint>(points).first(checked), base.num_faces());
+    if (const auto repeat = index.first_repeat()) fail("vertex " + std::to_string(*repeat) + " repeats another vertex");
+    if (problem) fail(*problem);
+    return index;
+}
+
+// The faces checked, and their adjacency: each halfedge's opposite (3f+i: corner i of face f), and
+// the outgoing halfedges grouped by vertex for the vertices' own halfedges.
+OutgoingHalfedges matched_halfedges(const std::vector<Triangle>& faces, std::size_t nv, std::vector<HalfedgeId>& opposite) {
+    const std::size_t nf = faces.size();
+    for (std::uint32_t f = 0; f < nf; ++f)
+        for (std::uint32_t v : faces[f])
+            if (v >= nv) fail("face " + std::to_string(f) + " uses a missing vertex");
+    for (std::uint32_t f = 0; f < nf; ++f) {
+        const Triangle& t = faces[f];
+        if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) fail("face " + std::to_string(f) + " repeats a vertex");
+    }
+    OutgoingHalfedges out = outgoing_halfedges(faces, nv);
+    for (std::uint32_t v = 0; v < nv; ++v) {
+        const auto group = out.of(v);
+        for (std::size_t k = 1; k < group.size(); ++k)
+            if (OutgoingHalfedges::end_vertex(group[k]) == OutgoingHalfedges::end_vertex(group[k - 1]))
+                fail("face " + std::to_string(Mesh::face(OutgoingHalfedges::halfedge(group[k])).idx) +
+                     " repeats a directed edge (non-manifold)");
+    }
+    opposite.assign(3 * nf, HalfedgeId());
+    parallel_for(nv, 1 << 15, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t a = begin; a < end; ++a)
+            for (std::uint64_t e : out.of(static_cast<std::uint32_t>(a))) {
+                const auto back = out.of(OutgoingHalfedges::end_vertex(e));
+                const std::uint64_t key = std::uint64_t(a) << 32;
+                const auto it = std::lower_bound(back.begin(), back.end(), key);
+                if (it != back.end() && OutgoingHalfedges::end_vertex(*it) == a)
+                    opposite[OutgoingHalfedges::halfedge(e).idx] = OutgoingHalfedges::halfedge(*it);
+            }
+    });
+    return out;
+}
+
 }  // namespace
 
 // Rebuilt into the members the operators use, so the restored mesh is indistinguishable from one the
@@ -156,69 +206,39 @@ Mesh restore_state(const MeshState& s) {
     }
     const BaseMesh& base = *base_mesh;
     Mesh m(base_mesh);
-    const std::size_t n0 = base.num_vertices(), nv = s.vertices.size();
+    const std::size_t n0 = base.num_vertices(), nv = s.vertices.size(), nf = s.faces.size();
     if (nv < n0) fail("fewer vertices than the base mesh has");
-    // Vertices: addresses checked and made canonical, so equal points compare equal. The first problem
-    // in vertex order is reported, be it a bad address or a repeated one.
+    // Vertices and faces are checked and stored side by side (they meet only in the vertices'
+    // halfedges below); a problem with the vertices is reported first, as in a plain sequence.
     std::vector<SurfacePoint> points(nv);
-    std::optional<std::string> problem;
-    std::uint32_t checked = 0;
-    for (; checked < nv && !problem; ++checked) {
-        problem = address_problem(base, checked, s.vertices[checked]);
-        if (!problem) points[checked] = canonical(base, s.vertices[checked]);
-    }
-    if (problem) --checked;
-    const AddressIndex index(std::span<const SurfacePoint>(points).first(checked), base.num_faces());
-    if (const auto repeat = index.first_repeat()) fail("vertex " + std::to_string(*repeat) + " repeats another vertex");
-    if (problem) fail(*problem);
-    m.vertex_halfedge_.assign(nv, HalfedgeId());
-    m.vertex_info_.resize(nv);
-    m.address_.resize(nv);
-    for (std::uint32_t i = 0; i < nv; ++i) {
-        m.vertex_info_[i] = static_cast<std::uint8_t>(points[i].level | (is_boundary(base, points[i]) ? Mesh::kBoundaryBit : 0));
-        m.address_[i] = {points[i].face, points[i].a[1], points[i].a[2]};
-    }
-    m.vertex_count_ = nv;
-    // Faces and their adjacency.
-    const std::size_t nf = s.faces.size();
-    for (std::uint32_t f = 0; f < nf; ++f)
-        for (std::uint32_t v : s.faces[f])
-            if (v >= nv) fail("face " + std::to_string(f) + " uses a missing vertex");
-    for (std::uint32_t f = 0; f < nf; ++f) {
-        const Triangle& t = s.faces[f];
-        if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) fail("face " + std::to_string(f) + " repeats a vertex");
-    }
-    m.face_vertices_.resize(nf);
-    for (std::uint32_t f = 0; f < nf; ++f)
-        for (int c = 0; c < 3; ++c) m.face_vertices_[f][c] = VertexId(s.faces[f][c]);
-    m.face_code_.assign(nf, 0);  // live; typed below
-    m.face_count_ = nf;
-    m.opposite_.assign(3 * nf, HalfedgeId());
-    {
-        const OutgoingHalfedges out = outgoing_halfedges(s.faces, nv);
-        for (std::uint32_t v = 0; v < nv; ++v) {
-            const auto group = out.of(v);
-            for (std::size_t k = 1; k < group.size(); ++k)
-                if (OutgoingHalfedges::end_vertex(group[k]) == OutgoingHalfedges::end_vertex(group[k - 1]))
-                    fail("face " + std::to_string(Mesh::face(OutgoingHalfedges::halfedge(group[k])).idx) +
-                         " repeats a directed edge (non-manifold)");
-        }
-        parallel_for(nv, 1 << 15, [&](std::size_t begin, std::size_t end) {
-            for (std::size_t a = begin; a < end; ++a)
-                for (std::uint64_t e : out.of(static_cast<std::uint32_t>(a))) {
-                    const auto back = out.of(OutgoingHalfedges::end_vertex(e));
-                    const std::uint64_t key = std::uint64_t(a) << 32;
-                    const auto it = std::lower_bound(back.begin(), back.end(), key);
-                    if (it != back.end() && OutgoingHalfedges::end_vertex(*it) == a)
-                        m.opposite_[OutgoingHalfedges::halfedge(e).idx] = OutgoingHalfedges::halfedge(*it);
-                }
+    std::optional<AddressIndex> index;
+    OutgoingHalfedges out;
+    parallel_invoke(
+        [&] {
+            index.emplace(checked_addresses(base, s.vertices, points));
+            m.vertex_halfedge_.assign(nv, HalfedgeId());
+            m.vertex_info_.resize(nv);
+            m.address_.resize(nv);
+            for (std::uint32_t i = 0; i < nv; ++i) {
+                m.vertex_info_[i] = static_cast<std::uint8_t>(points[i].level | (is_boundary(base, points[i]) ? Mesh::kBoundaryBit : 0));
+                m.address_[i] = {points[i].face, points[i].a[1], points[i].a[2]};
+            }
+            m.vertex_count_ = nv;
+        },
+        [&] {
+            out = matched_halfedges(s.faces, nv, m.opposite_);
+            m.face_vertices_.resize(nf);
+            for (std::uint32_t f = 0; f < nf; ++f)
+                for (int c = 0; c < 3; ++c) m.face_vertices_[f][c] = VertexId(s.faces[f][c]);
+            m.face_code_.assign(nf, 0);  // live; typed below
+            m.face_count_ = nf;
         });
-        for (std::uint32_t v = 0; v < nv; ++v) {
-            const auto group = out.of(v);
-            if (group.empty()) fail("vertex " + std::to_string(v) + " is used by no face");
-            m.set_vertex_halfedge(VertexId(v), OutgoingHalfedges::halfedge(group.front()));
-        }
+    for (std::uint32_t v = 0; v < nv; ++v) {
+        const auto group = out.of(v);
+        if (group.empty()) fail("vertex " + std::to_string(v) + " is used by no face");
+        m.set_vertex_halfedge(VertexId(v), OutgoingHalfedges::halfedge(group.front()));
     }
+    out = {};
     // Faces: their colour, level and red edge follow from where their corners are (spec §1.3).
     std::vector<std::uint32_t> untyped(parallel_blocks(nf, 1 << 14), BaseMesh::kNone);
     parallel_blocks_for(nf, untyped.size(), [&](std::size_t block, std::size_t begin, std::size_t end) {
@@ -244,7 +264,7 @@ Mesh restore_state(const MeshState& s) {
         }
     });
     try {
-        HierarchyPositions positions = hierarchy_positions(base, points, index, displayed_above_own_level);
+        HierarchyPositions positions = hierarchy_positions(base, points, *index, displayed_above_own_level);
         m.insertion_position_ = std::move(positions.insertion);
         m.limits_ = std::move(positions.limits);
     } catch (const std::invalid_argument& e) {
