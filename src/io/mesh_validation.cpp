@@ -1,6 +1,7 @@
 #include "io/mesh_validation.h"
 
 #include <algorithm>
+#include <cstring>
 #include <numeric>
 
 #include "io/loaded_mesh_assembly.h"
@@ -21,8 +22,12 @@ TriangleSoup empty_soup(const ObjRecords& records) {
     return soup;
 }
 
-bool has_texcoords(const ObjRecords& records) {
-    return std::any_of(records.polygons.begin(), records.polygons.end(), [](const ObjPolygon& p) { return !p.texcoords.empty(); });
+// The texture coordinates of the given corners of a polygon (kNoIndex where it has none).
+std::array<std::uint32_t, 3> corner_texcoords(const ObjPolygon& polygon, const std::array<std::uint32_t, 3>& corners) {
+    std::array<std::uint32_t, 3> uv{kNoIndex, kNoIndex, kNoIndex};
+    if (!polygon.texcoords.empty())
+        for (int i = 0; i < 3; ++i) uv[i] = polygon.texcoords[corners[i]];
+    return uv;
 }
 
 // Appends the triangle of the given corners of polygon p (with_texcoords: some face has them).
@@ -30,19 +35,14 @@ void add_triangle(TriangleSoup& soup, const ObjRecords& records, bool with_texco
                   const std::array<std::uint32_t, 3>& corners) {
     const ObjPolygon polygon = records.polygons[p];
     soup.triangles.push_back({polygon.vertices[corners[0]], polygon.vertices[corners[1]], polygon.vertices[corners[2]]});
-    if (with_texcoords) {
-        std::array<std::uint32_t, 3> uv{kNoIndex, kNoIndex, kNoIndex};
-        if (!polygon.texcoords.empty())
-            for (int i = 0; i < 3; ++i) uv[i] = polygon.texcoords[corners[i]];
-        soup.texcoords.push_back(uv);
-    }
+    if (with_texcoords) soup.texcoords.push_back(corner_texcoords(polygon, corners));
     soup.polygons.push_back(p);
     soup.lines.push_back(polygon.line);
 }
 
 TriangleSoup triangulate(const ObjRecords& records, const std::string& file, std::vector<std::string>& warnings) {
     TriangleSoup soup = empty_soup(records);
-    const bool with_texcoords = has_texcoords(records);
+    const bool with_texcoords = records.polygons.has_texcoords();
     std::size_t quads = 0, ngons = 0, from_polygons = 0;
     std::vector<std::uint32_t> sorted;
     for (std::uint32_t p = 0; p < records.polygons.size(); ++p) {
@@ -163,13 +163,17 @@ LoadedMesh validate_mesh(const ObjRecords& records, const std::string& file, con
 
 LoadedMesh saved_mesh_content(const ObjRecords& records) {
     TriangleSoup soup = empty_soup(records);
-    const bool with_texcoords = has_texcoords(records);
-    // One triangle per face (the caller checked): sized once, since a saved file may have millions.
-    soup.triangles.reserve(records.polygons.size());
-    soup.polygons.reserve(records.polygons.size());
-    soup.lines.reserve(records.polygons.size());
-    if (with_texcoords) soup.texcoords.reserve(records.polygons.size());
-    for (std::uint32_t p = 0; p < records.polygons.size(); ++p) add_triangle(soup, records, with_texcoords, p, {0, 1, 2});
+    // One triangle per face (the caller checked): the flat corners are the triangles, copied in one
+    // piece (a saved file may have millions). Lines stay empty: only repairs report them.
+    const std::span<const std::uint32_t> corners = records.polygons.all_vertices();
+    soup.triangles.resize(records.polygons.size());
+    std::memcpy(soup.triangles.data(), corners.data(), corners.size_bytes());
+    soup.polygons.resize(records.polygons.size());
+    std::iota(soup.polygons.begin(), soup.polygons.end(), 0u);
+    if (records.polygons.has_texcoords()) {
+        soup.texcoords.reserve(records.polygons.size());
+        for (std::uint32_t p = 0; p < records.polygons.size(); ++p) soup.texcoords.push_back(corner_texcoords(records.polygons[p], {0, 1, 2}));
+    }
     return assemble_loaded_mesh(records, std::move(soup), {});
 }
 

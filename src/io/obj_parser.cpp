@@ -278,6 +278,14 @@ ObjPolygon ObjPolygons::operator[](std::size_t i) const {
     return p;
 }
 
+bool ObjPolygons::has_labels(std::uint32_t ObjPolygon::*field) const {
+    // A column is filled from the first face with a label other than the default on.
+    if (field == &ObjPolygon::material) return !material_.empty();
+    if (field == &ObjPolygon::group) return !group_.empty();
+    if (field == &ObjPolygon::object) return !object_.empty();
+    return !smoothing_group_.empty();
+}
+
 void ObjPolygons::add(std::span<const std::uint32_t> vertices, std::span<const std::uint32_t> texcoords, std::size_t line,
                       std::uint32_t material, std::uint32_t group, std::uint32_t object, std::uint32_t smoothing_group) {
     const std::size_t before = size();

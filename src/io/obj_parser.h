@@ -69,6 +69,10 @@ public:
     ObjPolygon operator[](std::size_t i) const;
     // Every face's vertices one after the other (3 per face where all are triangles).
     std::span<const std::uint32_t> all_vertices() const { return vertices_; }
+    // Whether some face has a texture coordinate, or a label other than the default in the given
+    // field (material, group, object or smoothing_group), without looking at every face.
+    bool has_texcoords() const { return !texcoords_.empty(); }
+    bool has_labels(std::uint32_t ObjPolygon::*field) const;
     iterator begin() const { return {this, 0}; }
     iterator end() const { return {this, size()}; }
 

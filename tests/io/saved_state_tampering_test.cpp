@@ -255,6 +255,26 @@ TEST(SavedStateTampering, TwoTrianglesJoinedIntoAQuadAreDropped) {
         << (loaded.warnings.empty() ? "" : loaded.warnings[0]);
 }
 
+TEST(SavedStateTampering, LabelsAndTextureCoordinatesAddedElsewhereKeepTheState) {
+    const rgb::Mesh mesh = adaptive_octahedron();
+    SavedFile file(format_obj(mesh, {}));
+    // Another program added a material and a texture coordinate for one face: the mesh is the same.
+    file.lines[file.first_f - 1] += "\nvt 0.25 0.75\nusemtl shiny";
+    const auto c = file.face(2);
+    file.lines[file.first_f + 2] = "f " + std::to_string(c[0] + 1) + "/1 " + std::to_string(c[1] + 1) + "/1 " + std::to_string(c[2] + 1) + "/1";
+    const LoadedMesh loaded = read_obj_text(file.text(), "labelled.obj");
+    ASSERT_TRUE(loaded.adaptive) << (loaded.warnings.empty() ? "" : loaded.warnings[0]);
+    EXPECT_TRUE(rgbtest::same_mesh(*loaded.adaptive, mesh));
+    EXPECT_EQ(loaded.face_materials.names, std::vector<std::string>{"shiny"});
+    EXPECT_EQ(loaded.face_materials.of_triangle, std::vector<std::uint32_t>(mesh.num_faces(), 0u));
+    EXPECT_EQ(loaded.texcoords, std::vector<glm::dvec2>{glm::dvec2(0.25, 0.75)});
+    ASSERT_EQ(loaded.triangle_texcoords.size(), mesh.num_faces());
+    for (std::size_t t = 0; t < mesh.num_faces(); ++t) {
+        const std::uint32_t want = t == 2 ? 0 : kNoIndex;
+        EXPECT_EQ(loaded.triangle_texcoords[t], (std::array<std::uint32_t, 3>{want, want, want})) << "triangle " << t;
+    }
+}
+
 TEST(SavedStateTampering, ACoordinateOneUlpOffIsDropped) {
     SavedFile file(format_obj(adaptive_octahedron(), {}));
     const LoadedMesh original = read_obj_text(file.text(), "saved.obj");
