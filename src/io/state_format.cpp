@@ -6,6 +6,7 @@
 
 #include "io/number_format.h"
 #include "io/obj_error.h"
+#include "rgb/mesh.h"
 
 namespace rgbio {
 
@@ -78,37 +79,44 @@ private:
 
 }  // namespace
 
-void write_state(const rgb::MeshState& state, bool limit_positions, std::string& out, const std::function<void()>& flush_if_full) {
-    const std::size_t n0 = state.base_positions.size();
+void write_state(const rgb::Mesh& mesh, bool limit_positions, std::string& out, const std::function<void()>& flush_if_full) {
+    const rgb::BaseMesh& base = mesh.base();
+    const std::size_t n0 = base.num_vertices();
     out += "# rgbsub adaptive state: the #rgb lines restore the exact RGB mesh; other readers ignore them\n";
     out += "#rgb state " + std::to_string(kStateFormatVersion) + "\n";
     out += limit_positions ? "#rgb positions limit\n" : "#rgb positions displayed\n";
     out += "#rgb section base-vertices " + std::to_string(n0) + "\n";
-    for (const glm::dvec3& p : state.base_positions) {
+    for (const glm::dvec3& p : base.positions()) {
         out += "#rgb p";
         for (int i = 0; i < 3; ++i) append_double(out, p[i]);
         out += '\n';
     }
-    out += "#rgb section base-faces " + std::to_string(state.base_triangles.size()) + "\n";
-    for (std::size_t i = 0; i < state.base_triangles.size(); i += kPerLine) {
+    const std::span<const rgb::Triangle> triangles = base.faces();
+    out += "#rgb section base-faces " + std::to_string(triangles.size()) + "\n";
+    for (std::size_t i = 0; i < triangles.size(); i += kPerLine) {
         out += "#rgb t";
-        for (std::size_t k = i; k < std::min(state.base_triangles.size(), i + kPerLine); ++k)
-            for (std::uint32_t v : state.base_triangles[k]) append_number(out, v);
+        for (std::size_t k = i; k < std::min(triangles.size(), i + kPerLine); ++k)
+            for (std::uint32_t v : triangles[k]) append_number(out, v);
         out += '\n';
         flush_if_full();
     }
-    const std::size_t addresses = state.vertices.size() - std::min(n0, state.vertices.size());
-    out += "#rgb section addresses " + std::to_string(addresses) + "\n";
-    for (std::size_t i = n0; i < state.vertices.size(); i += kPerLine) {
-        out += "#rgb a";
-        for (std::size_t k = i; k < std::min(state.vertices.size(), i + kPerLine); ++k) {
-            const rgb::SurfacePoint& p = state.vertices[k];
-            for (std::uint64_t x : {std::uint64_t(p.face), std::uint64_t(p.a[1]), std::uint64_t(p.a[2]), std::uint64_t(p.level)})
-                append_number(out, x);
+    // Live vertices in slot order, as capture_state lists them: the base vertices (always live, in
+    // slots 0..n0-1) first, then one address per other vertex.
+    out += "#rgb section addresses " + std::to_string(mesh.num_vertices() - n0) + "\n";
+    std::size_t on_line = 0, index = 0;
+    for (rgb::VertexId v : mesh.vertices()) {
+        if (index++ < n0) continue;
+        if (on_line == 0) out += "#rgb a";
+        const rgb::SurfacePoint p = mesh.address(v);
+        for (std::uint64_t x : {std::uint64_t(p.face), std::uint64_t(p.a[1]), std::uint64_t(p.a[2]), std::uint64_t(p.level)})
+            append_number(out, x);
+        if (++on_line == kPerLine) {
+            out += '\n';
+            on_line = 0;
+            flush_if_full();
         }
-        out += '\n';
-        flush_if_full();
     }
+    if (on_line > 0) out += '\n';
     out += "#rgb end\n";
 }
 

@@ -32,9 +32,10 @@ struct SavedState {
     bool limit_positions = false;  // the v lines hold limit positions, not displayed ones
 };
 
-// Appends the state's lines to `out`, calling flush_if_full() between lines so that a file writer can
-// empty the buffer (the state of a large mesh is tens of megabytes).
-void write_state(const rgb::MeshState& state, bool limit_positions, std::string& out, const std::function<void()>& flush_if_full);
+// Appends the lines of the mesh's state (rgb::capture_state's, read from the mesh as they are
+// written) to `out`, calling flush_if_full() between lines so that a file writer can empty the buffer
+// (the state of a large mesh is tens of megabytes).
+void write_state(const rgb::Mesh& mesh, bool limit_positions, std::string& out, const std::function<void()>& flush_if_full);
 
 // The #rgb lines of a file, or nothing when they are not an rgbsub state at all (no `#rgb state`
 // header first: some other program's comments). Throws ObjError(BadState) naming the offending line,
