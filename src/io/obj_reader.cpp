@@ -57,6 +57,10 @@ std::shared_ptr<rgb::Mesh> adaptive_mesh(SavedState saved, const ObjRecords& rec
                  std::to_string(records.positions.size());
         return nullptr;
     }
+    if (std::optional<std::string> missing = take_from_body(saved, records.positions, records.polygons)) {
+        reason = std::move(*missing);
+        return nullptr;
+    }
     const std::span<const std::uint32_t> corners = records.polygons.all_vertices();
     if (corners.size() != 3 * records.polygons.size()) {
         for (const ObjPolygon& p : records.polygons)
@@ -89,7 +93,7 @@ std::shared_ptr<rgb::Mesh> adaptive_mesh(SavedState saved, const ObjRecords& rec
 LoadedMesh read_records(const ObjRecords& records, const std::string& name, const ReadOptions& options) {
     std::vector<std::string> warnings;
     if (!records.state.empty()) {
-        std::optional<SavedState> saved = parse_state(records.state, name);
+        std::optional<SavedState> saved = parse_state(records.state, name, records.positions.size(), records.polygons.size());
         std::string reason;
         if (!saved) {
             warnings.push_back("ignored " + std::to_string(records.state.size()) +

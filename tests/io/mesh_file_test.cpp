@@ -210,6 +210,10 @@ TEST(MeshFile, ReorderedFacesStillRestore) {
     edit(mesh, 0);
     std::string text = format_obj(mesh, {});
     // Another program re-saved the faces in a different order but kept the comments: the same mesh.
+    // (These two faces are refined ones; untouched base faces the state takes from their f lines
+    // must keep their place: state_format_test.)
+    ASSERT_EQ(text.find("#rgb t-as-f 0 "), std::string::npos);
+    ASSERT_EQ(text.find("#rgb t-as-f 1 "), std::string::npos);
     const std::size_t first_face = text.find("\nf ") + 1;
     const std::size_t second_face = text.find("\nf ", first_face) + 1;
     const std::size_t third_face = text.find("\nf ", second_face) + 1;
