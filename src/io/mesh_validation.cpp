@@ -1,7 +1,6 @@
 #include "io/mesh_validation.h"
 
 #include <algorithm>
-#include <cstring>
 #include <numeric>
 
 #include "io/loaded_mesh_assembly.h"
@@ -161,13 +160,10 @@ LoadedMesh validate_mesh(const ObjRecords& records, const std::string& file, con
     return assemble_loaded_mesh(records, std::move(soup), std::move(warnings));
 }
 
-LoadedMesh saved_mesh_content(const ObjRecords& records) {
+LoadedMesh saved_mesh_content(const ObjRecords& records, std::vector<rgb::Triangle> triangles) {
     TriangleSoup soup = empty_soup(records);
-    // One triangle per face (the caller checked): the flat corners are the triangles, copied in one
-    // piece (a saved file may have millions). Lines stay empty: only repairs report them.
-    const std::span<const std::uint32_t> corners = records.polygons.all_vertices();
-    soup.triangles.resize(records.polygons.size());
-    std::memcpy(soup.triangles.data(), corners.data(), corners.size_bytes());
+    // Lines stay empty: only repairs report them.
+    soup.triangles = std::move(triangles);
     soup.polygons.resize(records.polygons.size());
     std::iota(soup.polygons.begin(), soup.polygons.end(), 0u);
     if (records.polygons.has_texcoords()) {

@@ -45,6 +45,7 @@ LinesBefore LinesBefore::then(const LinesBefore& later) const {
     both.lines += later.lines;
     both.positions += later.positions;
     both.texcoords += later.texcoords;
+    both.faces += later.faces;
     for (auto member : {&LinesBefore::material, &LinesBefore::group, &LinesBefore::object, &LinesBefore::smoothing})
         if (later.*member) both.*member = later.*member;
     return both;

@@ -14,7 +14,7 @@ namespace rgbio {
 
 // What the lines of a part of a file define that later lines depend on.
 struct LinesBefore {
-    std::size_t lines = 0, positions = 0, texcoords = 0;  // how many lines, v lines, vt lines
+    std::size_t lines = 0, positions = 0, texcoords = 0, faces = 0;  // how many lines, v, vt and f lines
     // The values of the last usemtl, g, o and s lines, if any.
     std::optional<std::string_view> material, group, object, smoothing;
 

@@ -286,6 +286,12 @@ bool ObjPolygons::has_labels(std::uint32_t ObjPolygon::*field) const {
     return !smoothing_group_.empty();
 }
 
+void ObjPolygons::reserve(std::size_t faces, std::size_t corners) {
+    start_.reserve(faces + 1);
+    lines_.reserve(faces);
+    vertices_.reserve(corners);
+}
+
 void ObjPolygons::add(std::span<const std::uint32_t> vertices, std::span<const std::uint32_t> texcoords, std::size_t line,
                       std::uint32_t material, std::uint32_t group, std::uint32_t object, std::uint32_t smoothing_group) {
     const std::size_t before = size();
@@ -339,9 +345,14 @@ void SkippedLines::add(std::size_t line, std::string_view keyword) {
 
 namespace {
 
-// The lines of `text`, which come after `before`.
-ObjRecords parse_lines(std::string_view text, const LinesBefore& before, const std::string& file) {
+// The lines of `text`, which come after `before`; `room` (if known): what the records are to hold
+// in the end (the whole file's counts), reserved at once.
+ObjRecords parse_lines(std::string_view text, const LinesBefore& before, const std::string& file, const LinesBefore& room = {}) {
     ObjRecords records;
+    records.positions.reserve(room.positions);
+    records.position_lines.reserve(room.positions);
+    records.texcoords.reserve(room.texcoords);
+    records.polygons.reserve(room.faces, 3 * room.faces);  // exact for triangles
     LineParser parser(file, records, before);
     for_each_line(text, [&](std::size_t line, std::string_view content) { parser.parse(line, content); });
     return records;
@@ -356,6 +367,7 @@ LinesBefore summarize_lines(std::string_view text) {
         const std::string_view keyword = next_token(rest);
         if (keyword == "v") ++summary.positions;
         else if (keyword == "vt") ++summary.texcoords;
+        else if (keyword == "f") ++summary.faces;
         else if (keyword == "usemtl") summary.material = trim(rest);
         else if (keyword == "g") summary.group = trim(rest);
         else if (keyword == "o") summary.object = trim(rest);
@@ -373,17 +385,18 @@ ObjRecords parse_obj_in_blocks(std::string_view text, const std::string& file, s
     const std::vector<std::string_view> blocks = line_blocks(text, count);
     if (blocks.size() <= 1) return parse_lines(text, {}, file);
     // Each block is parsed knowing what the blocks before it define; that takes a quick pass over
-    // them first, itself in parallel.
-    std::vector<LinesBefore> summaries(blocks.size() - 1);
+    // them first, itself in parallel. The first block's records, which the others join, are sized
+    // for the whole file at once.
+    std::vector<LinesBefore> summaries(blocks.size());
     rgb::parallel_blocks_for(summaries.size(), summaries.size(),
                              [&](std::size_t b, std::size_t, std::size_t) { summaries[b] = summarize_lines(blocks[b]); });
-    std::vector<LinesBefore> before(blocks.size());
-    for (std::size_t b = 1; b < blocks.size(); ++b) before[b] = before[b - 1].then(summaries[b - 1]);
+    std::vector<LinesBefore> before(blocks.size() + 1);
+    for (std::size_t b = 1; b <= blocks.size(); ++b) before[b] = before[b - 1].then(summaries[b - 1]);
     std::vector<ObjRecords> parsed(blocks.size());
     std::vector<std::uint8_t> failed(blocks.size(), 0);
     rgb::parallel_blocks_for(blocks.size(), blocks.size(), [&](std::size_t b, std::size_t, std::size_t) {
         try {
-            parsed[b] = parse_lines(blocks[b], before[b], file);
+            parsed[b] = parse_lines(blocks[b], before[b], file, b == 0 ? before.back() : LinesBefore{});
         } catch (const ObjError&) {
             if (b == 0) throw;
             failed[b] = 1;

@@ -76,6 +76,7 @@ public:
     iterator begin() const { return {this, 0}; }
     iterator end() const { return {this, size()}; }
 
+    void reserve(std::size_t faces, std::size_t corners);
     // `texcoords` is empty or has one entry per vertex (kNoIndex where a corner names none).
     void add(std::span<const std::uint32_t> vertices, std::span<const std::uint32_t> texcoords, std::size_t line,
              std::uint32_t material, std::uint32_t group, std::uint32_t object, std::uint32_t smoothing_group);

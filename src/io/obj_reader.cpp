@@ -50,8 +50,9 @@ std::string read_text_file(const std::string& path) {
 namespace {
 
 // The mesh the state describes, if it is the body's own: one address per v line, only triangles, a
-// valid RGB mesh with these faces, and exactly these positions. Otherwise the reason it is not.
-std::shared_ptr<rgb::Mesh> adaptive_mesh(SavedState saved, const ObjRecords& records, std::string& reason) {
+// valid RGB mesh with these faces, and exactly these positions. Otherwise the reason it is not. The
+// state is completed on the way (its faces are the f lines').
+std::shared_ptr<rgb::Mesh> adaptive_mesh(SavedState& saved, const ObjRecords& records, std::string& reason) {
     if (saved.mesh.vertices.size() != records.positions.size()) {
         reason = "it describes " + std::to_string(saved.mesh.vertices.size()) + " vertices, the file has " +
                  std::to_string(records.positions.size());
@@ -99,8 +100,8 @@ LoadedMesh read_records(const ObjRecords& records, const std::string& name, cons
             warnings.push_back("ignored " + std::to_string(records.state.size()) +
                                " comment lines starting with #rgb (the first on line " + std::to_string(records.state.front().line) +
                                "): they are not an rgbsub state, which starts with '#rgb state'");
-        } else if (std::shared_ptr<rgb::Mesh> mesh = adaptive_mesh(std::move(*saved), records, reason)) {
-            LoadedMesh loaded = saved_mesh_content(records);
+        } else if (std::shared_ptr<rgb::Mesh> mesh = adaptive_mesh(*saved, records, reason)) {
+            LoadedMesh loaded = saved_mesh_content(records, std::move(saved->mesh.faces));
             loaded.adaptive = std::move(mesh);
             return loaded;
         } else {
