@@ -18,19 +18,20 @@ namespace {
 // Vertices ordered by level (what a vertex's values need is coarser), and within a level by base face
 // (its neighbours' table entries are then in cache).
 std::vector<std::uint32_t> level_then_face_order(std::span<const SurfacePoint> points, std::size_t base_faces) {
-    auto counting_sort = [&](const std::vector<std::uint32_t>& in, std::size_t buckets, auto key) {
-        std::vector<std::uint32_t> start(buckets + 1, 0), out(in.size());
-        for (std::uint32_t v : in) ++start[key(v) + 1];
+    // Two stable counting sorts: by face, then by level.
+    auto counting_sort = [&](std::size_t count, std::size_t buckets, auto vertex, auto key) {
+        std::vector<std::uint32_t> start(buckets + 1, 0), out(count);
+        for (std::size_t i = 0; i < count; ++i) ++start[key(vertex(i)) + 1];
         for (std::size_t b = 0; b < buckets; ++b) start[b + 1] += start[b];
-        for (std::uint32_t v : in) out[start[key(v)]++] = v;
+        for (std::size_t i = 0; i < count; ++i) out[start[key(vertex(i))]++] = vertex(i);
         return out;
     };
-    std::vector<std::uint32_t> all(points.size());
-    for (std::uint32_t v = 0; v < all.size(); ++v) all[v] = v;
     int top = 0;
     for (const SurfacePoint& p : points) top = std::max(top, p.level);
-    const auto by_face = counting_sort(all, base_faces, [&](std::uint32_t v) { return points[v].face; });
-    return counting_sort(by_face, static_cast<std::size_t>(top) + 1, [&](std::uint32_t v) { return std::uint32_t(points[v].level); });
+    const auto by_face = counting_sort(points.size(), base_faces, [](std::size_t i) { return static_cast<std::uint32_t>(i); },
+                                       [&](std::uint32_t v) { return points[v].face; });
+    return counting_sort(points.size(), static_cast<std::size_t>(top) + 1, [&](std::size_t i) { return by_face[i]; },
+                         [&](std::uint32_t v) { return std::uint32_t(points[v].level); });
 }
 
 // Vertices of one level need only coarser values, so each level is computed in parallel. A limit is
