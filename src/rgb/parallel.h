@@ -1,7 +1,7 @@
 #pragma once
 // Data-parallel loops for the linear passes over a whole mesh (loading a saved file checks millions
 // of faces). The range is cut into one contiguous block per hardware thread; each block runs on its
-// own thread, the first on the caller's. Results must not depend on the cut: the body writes only
+// own thread, the first on the caller's (and any whose thread cannot start, on the caller's too). Results must not depend on the cut: the body writes only
 // to its own elements, and an exception from the lowest block that threw is the one rethrown, which
 // is the one a plain loop would have met first when blocks stop at their first problem.
 #include <algorithm>
@@ -36,8 +36,19 @@ void parallel_blocks_for(std::size_t n, std::size_t blocks, const Body& body) {
     std::vector<std::exception_ptr> errors(blocks);
     std::vector<std::thread> threads;
     threads.reserve(blocks - 1);
-    for (std::size_t b = 1; b < blocks; ++b) threads.emplace_back(run, b, std::ref(errors[b]));
+    std::size_t started = 1;
+    for (; started < blocks; ++started) {
+        // A thread that cannot start (no memory left for its stack, a process limit) leaves its
+        // blocks to this one: slower, never a failure of its own (nor, with threads running, a
+        // std::terminate).
+        try {
+            threads.emplace_back(run, started, std::ref(errors[started]));
+        } catch (...) {
+            break;
+        }
+    }
     run(0, errors[0]);
+    for (std::size_t b = started; b < blocks; ++b) run(b, errors[b]);
     for (std::thread& t : threads) t.join();
     for (const std::exception_ptr& e : errors)
         if (e) std::rethrow_exception(e);
@@ -54,20 +65,27 @@ void parallel_for(std::size_t n, std::size_t min_block, const Body& body) {
 template <class A, class B>
 void parallel_invoke(const A& a, const B& b) {
     std::exception_ptr b_error;
-    std::thread other([&] {
+    auto run_b = [&] {
         try {
             b();
         } catch (...) {
             b_error = std::current_exception();
         }
-    });
+    };
+    std::thread other;
+    try {
+        other = std::thread(run_b);
+    } catch (...) {
+        // No thread to be had (see parallel_blocks_for): b runs after a.
+    }
     std::exception_ptr a_error;
     try {
         a();
     } catch (...) {
         a_error = std::current_exception();
     }
-    other.join();
+    if (other.joinable()) other.join();
+    else run_b();
     if (a_error) std::rethrow_exception(a_error);
     if (b_error) std::rethrow_exception(b_error);
 }
