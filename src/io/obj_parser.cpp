@@ -217,7 +217,10 @@ private:
         std::size_t corners = 0;
         for (std::string_view token = next_token(rest); !token.empty(); token = next_token(rest), ++corners) {
             // v, v/vt, v//vn or v/vt/vn; the normal index is not read (input normals are dropped).
-            const std::size_t slash = token.find('/');
+            // A loop, not find(): memchr's call costs more than a face corner's few bytes.
+            std::size_t slash = 0;
+            while (slash < token.size() && token[slash] != '/') ++slash;
+            if (slash == token.size()) slash = std::string_view::npos;
             corners_.push_back(parse_index(token.substr(0, slash), token, before_.positions + out_.positions.size(), "face index", "vertices"));
             if (slash == std::string_view::npos) continue;
             const std::string_view after = token.substr(slash + 1);
