@@ -1,5 +1,6 @@
 #include "io/obj_blocks.h"
 
+#include <algorithm>
 #include <cstring>
 #include <map>
 #include <string>
@@ -96,6 +97,9 @@ void append_records(ObjRecords& into, const ObjRecords& block) {
     join_skipped(into.unsupported, block.unsupported);
     join_skipped(into.unknown, block.unknown);
     append(into.state, block.state);
+    into.v_line_starts += block.v_line_starts;
+    into.f_line_starts += block.f_line_starts;
+    into.last_line = std::max(into.last_line, block.last_line);
 }
 
 }  // namespace rgbio

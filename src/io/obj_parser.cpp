@@ -100,7 +100,9 @@ public:
 
     // line_in_block: the line's number among the lines given to this parser.
     void parse(std::size_t line_in_block, std::string_view content) {
-        const std::size_t line = line_ = before_.lines + line_in_block;
+        const std::size_t line = line_ = out_.last_line = before_.lines + line_in_block;
+        out_.v_line_starts += content.starts_with("v ");
+        out_.f_line_starts += content.starts_with("f ");
         std::string_view rest = content;
         const std::string_view keyword = next_token(rest);
         if (keyword.empty()) return;

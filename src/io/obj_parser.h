@@ -102,7 +102,7 @@ struct ObjStateLine {
 struct SkippedLines {
     std::size_t count = 0;
     std::size_t first_line = 0;
-    std::string_view first_keyword;  // a view into the parsed text
+    std::string first_keyword;  // a copy: the records outlive the text when a saved file is loaded
     void add(std::size_t line, std::string_view keyword);
 };
 
@@ -124,6 +124,9 @@ struct ObjRecords {
     SkippedLines unsupported;        // OBJ statements rgbsub does not use (free-form geometry, ...)
     SkippedLines unknown;            // keywords that are not OBJ
     std::vector<ObjStateLine> state;  // views into the text passed to parse_obj
+    // Lines starting "v " and "f " exactly, and the number of the last line: what a truncation check
+    // counts (truncation_check.h), gathered on the way so that it needs no second pass over the text.
+    std::size_t v_line_starts = 0, f_line_starts = 0, last_line = 0;
 };
 
 // Throws ObjError (Empty, Binary, Utf16, Syntax, FaceIndexZero, FaceIndexOutOfRange,

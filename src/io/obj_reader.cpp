@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -91,20 +92,24 @@ std::shared_ptr<rgb::Mesh> adaptive_mesh(SavedState& saved, const ObjRecords& re
 }
 
 // A state's mesh, or the plain mesh with a warning saying why the state was not used.
-LoadedMesh read_records(const ObjRecords& records, const std::string& name, const ReadOptions& options) {
+// release_text() is called once a state is parsed: nothing after needs the text.
+LoadedMesh read_records(const ObjRecords& records, const std::string& name, const ReadOptions& options,
+                        const std::function<void()>& release_text) {
     std::vector<std::string> warnings;
     if (!records.state.empty()) {
         std::optional<SavedState> saved = parse_state(records.state, name, records.positions.size(), records.polygons.size());
-        std::string reason;
         if (!saved) {
             warnings.push_back("ignored " + std::to_string(records.state.size()) +
                                " comment lines starting with #rgb (the first on line " + std::to_string(records.state.front().line) +
                                "): they are not an rgbsub state, which starts with '#rgb state'");
-        } else if (std::shared_ptr<rgb::Mesh> mesh = adaptive_mesh(*saved, records, reason)) {
-            LoadedMesh loaded = saved_mesh_content(records, std::move(saved->mesh.faces));
-            loaded.adaptive = std::move(mesh);
-            return loaded;
         } else {
+            release_text();
+            std::string reason;
+            if (std::shared_ptr<rgb::Mesh> mesh = adaptive_mesh(*saved, records, reason)) {
+                LoadedMesh loaded = saved_mesh_content(records, std::move(saved->mesh.faces));
+                loaded.adaptive = std::move(mesh);
+                return loaded;
+            }
             warnings.push_back("the rgbsub state (#rgb lines) does not match the file, which was probably edited by another "
                                "program: " + reason + "; it is loaded as a plain mesh");
         }
@@ -116,20 +121,40 @@ LoadedMesh read_records(const ObjRecords& records, const std::string& name, cons
 
 }  // namespace
 
-LoadedMesh read_obj_text(std::string_view text, const std::string& name, const ReadOptions& options) {
+namespace {
+
+// What read_obj_text does; `owned`, when not null, is the text itself, given up by the caller and
+// released once a saved file's state is parsed (its mesh is built without the text, which for a
+// 6M-triangle file is 370 MB).
+LoadedMesh read_text(std::string_view text, std::string* owned, const std::string& name, const ReadOptions& options) {
     const std::optional<SavedFileHeader> header = read_saved_file_header(text);
-    if (!header) return read_records(parse_obj(text, name), name, options);
+    if (!header) return read_records(parse_obj(text, name), name, options, [] {});
+    ObjRecords records;
     try {
-        const ObjRecords records = parse_obj(text, name);
+        records = parse_obj(text, name);
         check_saved_file_complete(*header, records, text, name);
-        return read_records(records, name, options);
     } catch (const ObjError& error) {
         throw truncation_or(error, *header, text, name);
     }
+    const TextEnd end = text_end(records, text);
+    try {
+        return read_records(records, name, options, [owned] {
+            if (owned) std::string().swap(*owned);
+        });
+    } catch (const ObjError& error) {
+        throw truncation_or(error, *header, end, name);
+    }
+}
+
+}  // namespace
+
+LoadedMesh read_obj_text(std::string_view text, const std::string& name, const ReadOptions& options) {
+    return read_text(text, nullptr, name, options);
 }
 
 LoadedMesh read_obj_file(const std::string& path, const ReadOptions& options) {
-    LoadedMesh loaded = read_obj_text(read_text_file(path), path, options);
+    std::string text = read_text_file(path);
+    LoadedMesh loaded = read_text(text, &text, path, options);
     loaded.materials = read_material_libraries(loaded.material_libraries, std::filesystem::path(path).parent_path(),
                                                loaded.face_materials, loaded.warnings);
     return loaded;
