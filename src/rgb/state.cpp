@@ -10,6 +10,7 @@
 #include "rgb/loop_geometry.h"
 #include "rgb/loop_rules.h"
 #include "rgb/mesh.h"
+#include "rgb/vertex_rules.h"
 
 namespace rgb {
 
@@ -17,6 +18,7 @@ MeshState capture_state(const Mesh& mesh) {
     MeshState s;
     s.base_positions.assign(mesh.base().positions().begin(), mesh.base().positions().end());
     s.base_triangles.assign(mesh.base().faces().begin(), mesh.base().faces().end());
+    s.sharp_features = mesh.base().sharp_features();
     std::vector<std::uint32_t> index(mesh.vertex_capacity(), BaseMesh::kNone);
     s.vertices.reserve(mesh.num_vertices());
     for (VertexId v : mesh.vertices()) {
@@ -55,7 +57,7 @@ struct AddressHash {
 Mesh restore_state(const MeshState& s) {
     std::shared_ptr<const BaseMesh> base_mesh;
     try {
-        base_mesh = std::make_shared<const BaseMesh>(s.base_positions, s.base_triangles);
+        base_mesh = std::make_shared<const BaseMesh>(s.base_positions, s.base_triangles, s.sharp_features);
     } catch (const std::invalid_argument& e) {
         fail(std::string("base mesh: ") + e.what());
     }
@@ -198,7 +200,8 @@ Mesh restore_state(const MeshState& s) {
         const PointStencil st = parent_stencil(base, points[i]);
         const int l = points[i].level - 1;
         const glm::dvec3 a = control_point(m, vertex_at(st.ends[0]), l), b = control_point(m, vertex_at(st.ends[1]), l);
-        m.insertion_position_[i] = st.boundary ? boundary_edge_point(a, b)
+        const bool midpoint = st.boundary || (base.has_sharp_features() && inserted_at_midpoint(base, points[i]));
+        m.insertion_position_[i] = midpoint ? boundary_edge_point(a, b)
                                                : interior_edge_point(a, b, control_point(m, vertex_at(st.opposite[0]), l),
                                                                      control_point(m, vertex_at(st.opposite[1]), l));
     }
