@@ -1,4 +1,5 @@
 // Edge splits (spec §2.1, §2.2) and the Loop position of the inserted vertex (§4.4).
+#include <algorithm>
 #include <array>
 #include <stdexcept>
 
@@ -51,8 +52,8 @@ bool on_sharp_edge(const Mesh& mesh, VertexId a, VertexId b) {
     const BaseMesh& base = mesh.base();
     if (!base.has_sharp_features()) return false;
     const SurfacePoint pa = mesh.address(a), pb = mesh.address(b);
-    if (!on_base_edge_or_vertex(pa) || !on_base_edge_or_vertex(pb)) return false;
-    return inserted_at_midpoint(base, midpoint(base, pa, pb));
+    const auto on = base_edge_between(base, pa, pb);
+    return on && sharp_at_level(base.edge_sharpness(*on), std::max(pa.level, pb.level));
 }
 
 }  // namespace

@@ -51,6 +51,14 @@ struct AddressHash {
 
 }  // namespace
 
+Mesh with_sharp_features(const Mesh& mesh, const SharpFeatures& features) {
+    // Checked up front, so that a bad tag is reported as such and not as an invalid state.
+    const BaseMesh check(mesh.base().positions(), mesh.base().faces(), features);
+    MeshState state = capture_state(mesh);
+    state.sharp_features = features;
+    return restore_state(state);
+}
+
 // Rebuilt through the same members the operators use, so the restored mesh is indistinguishable from
 // one the operators made: faces typed by their place in the hierarchy, insertion positions by the
 // split formula level by level.

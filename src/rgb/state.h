@@ -29,4 +29,9 @@ MeshState capture_state(const Mesh& mesh);
 // of its base mesh in the normal form the core keeps (io turns that into a file error).
 Mesh restore_state(const MeshState& state);
 
+// The same vertex set over the same base mesh with other crease and corner tags (the editor's crease
+// tool, the CLI's --sharp-angle): every value follows the new rules. Throws std::invalid_argument
+// for tags BaseMesh refuses.
+Mesh with_sharp_features(const Mesh& mesh, const SharpFeatures& features);
+
 }  // namespace rgb

@@ -101,6 +101,13 @@ bool inserted_at_midpoint(const BaseMesh& base, const SurfacePoint& p) {
 
 bool on_base_edge_or_vertex(const SurfacePoint& p) { return p.level == 0 || base_edge_of(p).has_value(); }
 
+std::optional<std::uint32_t> base_edge_between(const BaseMesh& base, const SurfacePoint& a, const SurfacePoint& b) {
+    // The midpoint of an edge inside a base face has no zero coordinate; only both ends on the same
+    // base edge give one.
+    if (!on_base_edge_or_vertex(a) || !on_base_edge_or_vertex(b)) return std::nullopt;
+    return base_edge_of(midpoint(base, a, b));
+}
+
 std::vector<SurfacePoint> ring_at(const BaseMesh& base, const SurfacePoint& p, int k) {
     if (const auto v = base_vertex(base, p)) {
         std::vector<SurfacePoint> ring;

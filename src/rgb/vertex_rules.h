@@ -12,6 +12,7 @@
 //    level by level (corner, crease, dart, smooth), and can change several times.
 // With integer sharpness a rule applies unblended from the level where it starts (§2).
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "rgb/inline_vector.h"
@@ -47,6 +48,8 @@ bool inserted_at_midpoint(const BaseMesh& base, const SurfacePoint& p);
 
 // Whether p lies on a base edge or is a base vertex, the only points a sharp edge can join.
 bool on_base_edge_or_vertex(const SurfacePoint& p);
+// The base halfedge (of some face) whose edge the hierarchy edge (a, b) lies on, if it lies on one.
+std::optional<std::uint32_t> base_edge_between(const BaseMesh& base, const SurfacePoint& a, const SurfacePoint& b);
 
 // The neighbours of p in Σk (k >= p.level). For a base vertex: one per base edge, counter-clockwise
 // from its vertex halfedge (a boundary vertex's two boundary neighbours first and last, as

@@ -2,13 +2,16 @@
 // checked and normalised, the boundary option, the rule regimes they give each vertex, and the dart
 // masks against the exact fractions of the note. Agreement of the refined surfaces with OpenSubdiv is
 // tests/oracle/sharp_refinement_test.cpp.
+#include <cmath>
 #include <stdexcept>
 
 #include <gtest/gtest.h>
 
 #include "rgb/base_mesh.h"
 #include "rgb/dart_masks.h"
+#include "rgb/sharp_angle.h"
 #include "rgb/vertex_rules.h"
+#include "support/obj_reader.h"
 #include "support/test_meshes.h"
 
 namespace rgbtest {
@@ -122,6 +125,33 @@ TEST(SharpFeatures, RegimesChangeWhereSemiSharpTagsRunOut) {
     EXPECT_EQ(rgb::vertex_regimes(base, mid)[0].rule, rgb::VertexRule::Smooth);
     EXPECT_FALSE(rgb::follows_untagged_rules(base, vertex_point(m, 5)));
     EXPECT_TRUE(rgb::follows_untagged_rules(base, mid));
+}
+
+// assets/machined_part.obj (made by make_machined_part.py): every wall meets the caps and its
+// neighbours at 90 degrees, the chamfer meets its two walls at 45; every other edge is flat. Seven
+// upright corners of two edges each and two rims of fifteen: 40 edges at 90 degrees, 4 at 45.
+TEST(SharpAngle, MachinedPartEdgesAreTaggedByTheirDihedralAngle) {
+    const TestMesh part = read_obj(RGBSUB_ASSETS_DIR "/machined_part.obj");
+    const rgb::BaseMesh base(part.positions, part.triangles);
+    std::size_t right = 0, chamfer = 0, flat = 0;
+    for (std::uint32_t h = 0; h < 3 * part.triangles.size(); ++h) {
+        if (base.opposite(h) < h) continue;
+        const double angle = rgb::dihedral_angle_degrees(base, h);
+        right += std::abs(angle - 90.0) < 1e-9;
+        chamfer += std::abs(angle - 45.0) < 1e-9;
+        flat += std::abs(angle) < 1e-9;
+    }
+    EXPECT_EQ(right, 40u);
+    EXPECT_EQ(chamfer, 4u);
+    EXPECT_EQ(right + chamfer + flat, 3 * part.triangles.size() / 2) << "the part is closed";
+    EXPECT_EQ(rgb::edges_sharper_than(base, 30.0).size(), 44u);
+    EXPECT_EQ(rgb::edges_sharper_than(base, 60.0).size(), 40u);
+    EXPECT_EQ(rgb::edges_sharper_than(base, 100.0).size(), 0u);
+    EXPECT_EQ(rgb::edges_sharper_than(base, 0.0).size(), 44u) << "a flat edge has angle 0, not above 0";
+    for (const rgb::EdgeSharpness& e : rgb::edges_sharper_than(base, 30.0)) {
+        EXPECT_LT(e.a, e.b);
+        EXPECT_EQ(e.sharpness, rgb::kInfiniteSharpness);
+    }
 }
 
 // docs/loop-creases.md §4.4: where beta_n is rational the dart's limit mask is too.
