@@ -5,7 +5,7 @@
 // whole-mesh checks are in mesh_validation.h.
 //
 // Read: v (x y z [w] or x y z r g b), vt (u [v [w]]), f (v, v/vt, v//vn, v/vt/vn corners), usemtl,
-// g, o, s, mtllib, #rgb. Counted and reported: vn (dropped: normals of the input surface do not
+// g, o, s, mtllib, #rgb, t (OpenSubdiv tags, collected for crease_tags.h). Counted and reported: vn (dropped: normals of the input surface do not
 // belong to the subdivided one), l, p, free-form statements and unknown keywords. Lines end at LF,
 // CRLF or a lone CR. Numbers are parsed with std::from_chars, which is correctly rounded, so a
 // coordinate written with 17 significant digits (or shortest round-trip form) comes back bit for bit.
@@ -67,6 +67,7 @@ struct ObjRecords {
     SkippedLines unsupported;        // OBJ statements rgbsub does not use (free-form geometry, ...)
     SkippedLines unknown;            // keywords that are not OBJ
     std::vector<ObjStateLine> state;  // views into the text passed to parse_obj
+    std::vector<ObjStateLine> tags;   // OpenSubdiv tag lines (t), after "t "; read by crease_tags.h
 };
 
 // Throws ObjError (Empty, Binary, Utf16, Syntax, FaceIndexZero, FaceIndexOutOfRange,

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "io/crease_tags.h"
 #include "io/number_format.h"
 #include "io/obj_error.h"
 
@@ -73,7 +74,9 @@ private:
 void write_state(const rgb::MeshState& state, bool limit_positions, std::string& out, const std::function<void()>& flush_if_full) {
     const std::size_t n0 = state.base_positions.size();
     out += "# rgbsub adaptive state: the #rgb lines restore the exact RGB mesh; other readers ignore them\n";
-    out += "#rgb state " + std::to_string(kStateFormatVersion) + "\n";
+    std::string tag_records;
+    append_state_tag_records(state.sharp_features, tag_records);
+    out += "#rgb state " + std::to_string(tag_records.empty() ? kStateFormatVersion : kTaggedStateFormatVersion) + "\n";
     out += limit_positions ? "#rgb positions limit\n" : "#rgb positions displayed\n";
     out += "#rgb section base-vertices " + std::to_string(n0) + "\n";
     for (const glm::dvec3& p : state.base_positions) {
@@ -101,6 +104,7 @@ void write_state(const rgb::MeshState& state, bool limit_positions, std::string&
         out += '\n';
         flush_if_full();
     }
+    out += tag_records;
     out += "#rgb end\n";
 }
 
@@ -110,9 +114,9 @@ std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const
     // Another program's comments that happen to start with "#rgb": not a state at all.
     if (header.word() != "state") return std::nullopt;
     const unsigned version = header.number<unsigned>();
-    if (version != kStateFormatVersion)
-        header.fail("state format version " + std::to_string(version) + " (this rgbsub reads version " +
-                    std::to_string(kStateFormatVersion) + ")");
+    if (version != kStateFormatVersion && version != kTaggedStateFormatVersion)
+        header.fail("state format version " + std::to_string(version) + " (this rgbsub reads versions " +
+                    std::to_string(kStateFormatVersion) + " and " + std::to_string(kTaggedStateFormatVersion) + ")");
     header.expect_end();
 
     SavedState saved;
@@ -121,6 +125,7 @@ std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const
     std::size_t expected[4] = {0, 0, 0, 0};
     bool seen[4] = {false, false, false, false};
     std::vector<rgb::SurfacePoint> addresses;
+    std::vector<ObjStateLine> tag_records;  // version 3
     bool ended = false;
     for (const ObjStateLine& line : lines.subspan(1)) {
         StateLineReader r(line, file);
@@ -169,6 +174,8 @@ std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const
                 p.a[0] = static_cast<std::uint32_t>(total - p.a[1] - p.a[2]);
                 addresses.push_back(p);
             }
+        } else if (version == kTaggedStateFormatVersion && is_state_tag_record(kind)) {
+            tag_records.push_back(line);
         } else if (kind == "end") {
             r.expect_end();
             ended = true;
@@ -195,6 +202,7 @@ std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const
             placed[v] = true;
         }
     state.vertices.insert(state.vertices.end(), addresses.begin(), addresses.end());
+    state.sharp_features = parse_state_tag_records(tag_records, file);
     return saved;
 }
 

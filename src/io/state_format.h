@@ -13,6 +13,9 @@
 //                                      one address per non-base vertex, in v-line order after the
 //                                      base vertices (which come first, in base order)
 //   #rgb end
+// Version 3 is version 2 plus the base mesh's crease and corner tags (crease_tags.h), records before
+// '#rgb end'; it is written only for a base mesh with tags, so untagged files stay version 2 and
+// readable by older rgbsub, which refuse a version-3 file naming its version.
 // A later version adds sections; a reader refuses a section it does not know, naming it.
 #include <functional>
 #include <optional>
@@ -26,6 +29,7 @@
 namespace rgbio {
 
 inline constexpr unsigned kStateFormatVersion = 2;
+inline constexpr unsigned kTaggedStateFormatVersion = 3;
 
 struct SavedState {
     rgb::MeshState mesh;           // faces are not part of the state: the reader takes the f lines
