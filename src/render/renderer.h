@@ -37,6 +37,7 @@ struct RenderOptions {
     float wire_width_px = 1.0f;
     PositionSource positions = PositionSource::Displayed;
     bool base_mesh_overlay = false;
+    bool sharp_edges = true;  // edges along tagged base edges as coloured lines (when there are any)
     bool level_legend = true;  // shown with Colouring::Level
     std::optional<BrushCursor> brush;
     glm::vec3 background{1.0f};

@@ -72,6 +72,8 @@ public:
     // Live triangles of each colour and the highest face level present.
     std::size_t triangles_of(rgb::Colour colour) const { return colour_counts_[static_cast<int>(colour)]; }
     int max_face_level() const;
+    // The position shown for vertex slot v (live).
+    const glm::vec3& position(rgb::VertexId v) const { return positions_[v.idx]; }
     // The positions of the live vertices, and their bounding sphere.
     std::vector<glm::vec3> live_positions(const rgb::Mesh& mesh) const;
     BoundingSphere bounds(const rgb::Mesh& mesh) const { return bounding_sphere(live_positions(mesh)); }
