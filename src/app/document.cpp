@@ -3,6 +3,8 @@
 #include <filesystem>
 #include <utility>
 
+#include "rgb/state.h"
+
 namespace app {
 
 Document::Document() : changes_(std::make_unique<render::MeshChanges>(mesh_)) { geometry_.rebuild(mesh_); }
@@ -58,6 +60,13 @@ bool Document::redo() {
     replace_mesh(std::move(*after));
     dirty_ = true;
     return true;
+}
+
+void Document::set_sharp_features(const rgb::SharpFeatures& features, std::string label) {
+    rgb::Mesh retagged = rgb::with_sharp_features(mesh_, features);
+    begin_edit(std::move(label));
+    replace_mesh(std::move(retagged));
+    end_edit(true);
 }
 
 const render::SurfaceGeometry& Document::geometry() {

@@ -45,6 +45,10 @@ public:
     bool abandon_edit();
     bool undo();
     bool redo();
+    // The base mesh with other crease and corner tags, as one undoable edit labelled `label`: the
+    // vertex set stays, every position follows the new rules. Throws std::invalid_argument for tags
+    // the base mesh refuses (the document is unchanged then).
+    void set_sharp_features(const rgb::SharpFeatures& features, std::string label);
     UndoHistory& history() { return history_; }
     const UndoHistory& history() const { return history_; }
 

@@ -35,6 +35,7 @@ void Editor::mouse_moved(glm::vec2 px) {
     if (drag_ == Drag::Orbit) camera_.orbit(delta);
     if (drag_ == Drag::Pan) camera_.pan(delta, viewport_);
     if (painting_) continue_stroke(px);
+    if (crease_drag_) crease_drag_to(px);
 }
 
 void Editor::mouse_pressed(MouseButton button, Modifiers mods) {
@@ -46,12 +47,14 @@ void Editor::mouse_pressed(MouseButton button, Modifiers mods) {
     } else if (button == MouseButton::Middle || (button == MouseButton::Left && mods.alt && mods.shift)) {
         drag_ = Drag::Pan;
     } else if (button == MouseButton::Left && job_ == nullptr && pending_ == Pending::None) {
-        begin_stroke(mouse_);
+        if (crease_tool_.active) begin_crease_drag(mods.shift);
+        else begin_stroke(mouse_);
     }
 }
 
 void Editor::mouse_released(MouseButton button) {
     if (button == MouseButton::Left && painting_) end_stroke();
+    if (button == MouseButton::Left && crease_drag_) end_crease_drag();
     if (button != MouseButton::Left || drag_ != Drag::None) drag_ = Drag::None;
 }
 

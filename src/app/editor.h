@@ -19,6 +19,7 @@
 
 #include "app/auto_lod.h"
 #include "app/brush.h"
+#include "app/crease_tool.h"
 #include "app/document.h"
 #include "app/input.h"
 #include "app/mesh_job.h"
@@ -84,6 +85,11 @@ public:
     // The level of the face under the cursor becomes the brush's target level.
     bool sample_level_under_cursor();
 
+    // ---- crease tool (crease_tool.h; editor_creases.cpp) ----
+    CreaseToolSettings& crease_tool() { return crease_tool_; }
+    // Gives the base mesh other crease tags as one undoable step; false (with a message) if refused.
+    bool set_sharp_features(const rgb::SharpFeatures& features, std::string label);
+
     // ---- files ----
     // Each returns false and sets an error message when it cannot proceed.
     bool open(const std::string& path);  // no questions asked
@@ -124,11 +130,14 @@ private:
     // The surface under px, searched near `previous` first when given (spec §3.4).
     std::optional<SurfaceHit> pick(glm::vec2 px, const std::optional<SurfaceHit>& previous, double reach);
     void reseed_after_dab(const std::array<rgb::VertexId, 3>& corners);
+    void begin_crease_drag(bool untag);
+    void crease_drag_to(glm::vec2 px);
+    void end_crease_drag();
     void finish_job();
     void remember_recent(const std::string& path);
     void report(std::string message, bool error);
     void recover_from(const std::exception& failure);
-    bool busy() const { return job_ != nullptr || painting_; }
+    bool busy() const { return job_ != nullptr || painting_ || crease_drag_.has_value(); }
 
     Document document_;
     ViewCamera camera_;
@@ -148,6 +157,10 @@ private:
     std::optional<SurfaceHit> cursor_hit_;
     double last_radius_ = 0.0;
     DabTiming timing_;
+
+    CreaseToolSettings crease_tool_;
+    std::optional<CreaseDrag> crease_drag_;
+    glm::vec2 crease_last_px_{0.0f};
 
     std::unique_ptr<MeshJob> job_;
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "app/crease_panel.h"
 #include "app/editor.h"
 #include "rgb/mesh.h"
 
@@ -220,6 +221,8 @@ void draw_panels(Editor& editor, PanelState& state, render::RenderOptions& optio
     ImGui::Begin("rgbsub");
     ImGui::PushItemWidth(-110.0f);
     brush_panel(editor);
+    ImGui::Separator();
+    crease_panel(editor);
     ImGui::Separator();
     actions_panel(editor, state);
     ImGui::Separator();
