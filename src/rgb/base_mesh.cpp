@@ -153,7 +153,12 @@ void BaseMesh::set_sharp_features(const SharpFeatures& features) {
     if (!any) return;  // untagged Loop everywhere: keep the fast answers of the accessors
     edge_sharpness_ = std::move(edge_sharpness);
     corner_sharpness_ = std::move(corner_sharpness);
-    sharp_rules_ = std::move(sharp_rules);
+    sharp_rules_.assign(nv, 0);
+    for (std::uint32_t v = 0; v < nv; ++v) {
+        if (!sharp_rules[v]) continue;
+        sharp_regimes_.push_back(base_vertex_regimes(*this, v));
+        sharp_rules_[v] = static_cast<std::uint32_t>(sharp_regimes_.size());
+    }
 }
 
 BaseMesh::~BaseMesh() = default;
@@ -181,7 +186,8 @@ std::vector<std::uint32_t> BaseMesh::ring(std::uint32_t v) const {
 std::size_t BaseMesh::memory_bytes() const {
     return positions_.size() * sizeof(glm::dvec3) + faces_.size() * sizeof(Triangle) +
            (opposite_.size() + vertex_halfedge_.size() + valence_.size()) * sizeof(std::uint32_t) + boundary_.size() +
-           edge_sharpness_.size() + corner_sharpness_.size() + sharp_rules_.size() +
+           edge_sharpness_.size() + corner_sharpness_.size() + sharp_rules_.size() * sizeof(std::uint32_t) +
+           sharp_regimes_.size() * sizeof(Regimes) +
            features_.edges.size() * sizeof(EdgeSharpness) + features_.corners.size() * sizeof(VertexSharpness);
 }
 

@@ -18,6 +18,7 @@
 #include <glm/vec3.hpp>
 
 #include "rgb/sharp_features.h"
+#include "rgb/vertex_rules.h"
 
 namespace rgb {
 
@@ -82,6 +83,11 @@ public:
     int corner_sharpness(std::uint32_t v) const { return edge_sharpness_.empty() ? 0 : corner_sharpness_[v]; }
     // Whether v is a corner or has a sharp interior edge, so its rules are not untagged Loop's.
     bool has_sharp_rules(std::uint32_t v) const { return !edge_sharpness_.empty() && sharp_rules_[v] != 0; }
+    // The rule regimes of a vertex with sharp rules (vertex_rules.h), kept because every value of it
+    // and of its neighbourhood needs them; nullptr for any other vertex.
+    const Regimes* sharp_vertex_regimes(std::uint32_t v) const {
+        return has_sharp_rules(v) ? &sharp_regimes_[sharp_rules_[v] - 1] : nullptr;
+    }
 
     // Bounding-volume hierarchy over the base triangles, built on first use.
     const BaseFaceIndex& face_index() const;
@@ -104,8 +110,11 @@ private:
     std::vector<std::uint8_t> boundary_;
     double longest_edge_ = 0.0;
     SharpFeatures features_;
-    // Empty without sharp features; otherwise per halfedge, per vertex, per vertex.
-    std::vector<std::uint8_t> edge_sharpness_, corner_sharpness_, sharp_rules_;
+    // Empty without sharp features; otherwise per halfedge and per vertex.
+    std::vector<std::uint8_t> edge_sharpness_, corner_sharpness_;
+    // Per vertex: 0, or 1 + the index of its regimes in sharp_regimes_.
+    std::vector<std::uint32_t> sharp_rules_;
+    std::vector<Regimes> sharp_regimes_;
     mutable std::once_flag index_built_;
     mutable std::unique_ptr<BaseFaceIndex> index_;
 };

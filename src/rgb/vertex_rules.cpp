@@ -51,6 +51,8 @@ Regime regime_at(int level, int corner_sharpness, const std::vector<int>& edge_s
     return r;
 }
 
+}  // namespace
+
 Regimes base_vertex_regimes(const BaseMesh& base, std::uint32_t v) {
     std::vector<int> sharpness;
     for (const BaseDirection& d : base_directions(base, v)) sharpness.push_back(base.edge_sharpness(d.halfedge));
@@ -73,10 +75,11 @@ Regimes base_vertex_regimes(const BaseMesh& base, std::uint32_t v) {
     return regimes;
 }
 
-}  // namespace
-
 Regimes vertex_regimes(const BaseMesh& base, const SurfacePoint& p) {
-    if (const auto v = base_vertex(base, p)) return base_vertex_regimes(base, *v);
+    if (const auto v = base_vertex(base, p)) {
+        if (const Regimes* kept = base.sharp_vertex_regimes(*v)) return *kept;
+        return base_vertex_regimes(base, *v);
+    }
     const auto h = base_edge_of(p);
     if (!h || !sharp_at_level(base.edge_sharpness(*h), p.level)) return {Regime{p.level, VertexRule::Smooth, {0, 0}}};
     // On a base edge still sharp at p's level: a crease along it (its two neighbours on the edge come

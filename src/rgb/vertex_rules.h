@@ -37,6 +37,8 @@ using Regimes = InlineVector<Regime, 11>;
 
 // The regimes of p from its own level on (the first starts at p.level).
 Regimes vertex_regimes(const BaseMesh& base, const SurfacePoint& p);
+// The same for base vertex v, computed from its tags (BaseMesh keeps them for its tagged vertices).
+Regimes base_vertex_regimes(const BaseMesh& base, std::uint32_t v);
 
 // Whether p moves as in untagged Loop: smooth for ever (interior) or the boundary rule for ever
 // (boundary). Cheap; true for every vertex of a base mesh without sharp features.
