@@ -142,6 +142,29 @@ TEST_P(SharpRefinement, SavedStateKeepsTheTagsAndRestoresTheSameMesh) {
 INSTANTIATE_TEST_SUITE_P(TaggedMeshes, SharpRefinement, testing::ValuesIn(crease_cases()),
                          [](const testing::TestParamInfo<CreaseCase>& info) { return info.param.name; });
 
+// Deep small regions at tagged vertices (a dart, a semi-sharp chain's end, a crease meeting an
+// edge-and-corner boundary): every vertex down to level 6 equals Far's.
+TEST(SharpRefinementDeep, SmallRegionsAtTaggedVerticesEqualFarToLevelSix) {
+    constexpr int deep = 6;
+    for (const CreaseCase& c : crease_cases()) {
+        if (c.name != "chain_ending_in_darts" && c.name != "semi_sharp_chain_1_3_2_and_corner_2" &&
+            c.name != "creases_meeting_boundary_edge_and_corner")
+            continue;
+        const FarByIdentity far(c.input, deep);
+        rgb::Mesh mesh(tagged_base(c.input));
+        rgbtest::IdentityTracker ids(mesh, far.oracle());
+        const glm::dvec3 a = c.input.positions[c.input.creases.front().a], b = c.input.positions[c.input.creases.front().b];
+        for (const glm::dvec3& centre : {a, b, 0.5 * (a + b)}) {
+            rgb::set_level(mesh, deep, rgb::Sphere{centre, 0.05 * glm::distance(a, b)});
+            ASSERT_TRUE(rgbtest::invariants_hold(mesh)) << c.name;
+            ASSERT_TRUE(agrees_with_far(mesh, ids, far, &worst_adaptive)) << c.name;
+        }
+        int finest = 0;
+        for (rgb::FaceId f : mesh.faces()) finest = std::max(finest, mesh.level(f));
+        EXPECT_EQ(finest, deep) << c.name;
+    }
+}
+
 // Without tags, with only zero-sharpness tags, or with edge-and-corner boundaries on a mesh that has
 // no boundary vertex with a single face, the base mesh has no sharp features: every value is the
 // untagged one, bit for bit.
