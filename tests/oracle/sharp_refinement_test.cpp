@@ -34,8 +34,8 @@ double worst_uniform = 0.0, worst_adaptive = 0.0;
 class SharpRefinement : public testing::TestWithParam<CreaseCase> {
 protected:
     static void TearDownTestSuite() {
-        std::printf("[ far ] largest distance to Far: uniform %.3g, adaptive %.3g (relative to each case's diagonal "
-                    "tolerance 1e-12)\n",
+        std::printf("[ far ] largest distance to Far: uniform %.3g, adaptive %.3g (the tolerance is 1e-12 of each "
+                    "case's bounding-box diagonal)\n",
                     worst_uniform, worst_adaptive);
     }
     const FarInput& input = GetParam().input;
