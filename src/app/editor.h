@@ -23,6 +23,7 @@
 #include "app/auto_lod.h"
 #include "app/background_task.h"
 #include "app/brush.h"
+#include "app/crease_tool.h"
 #include "app/document.h"
 #include "app/input.h"
 #include "app/mesh_job.h"
@@ -121,6 +122,11 @@ public:
     // The level of the face under the cursor becomes the brush's target level.
     bool sample_level_under_cursor();
 
+    // ---- crease tool (crease_tool.h; editor_creases.cpp) ----
+    CreaseToolSettings& crease_tool() { return crease_tool_; }
+    // Gives the base mesh other crease tags as one undoable step; false (with a message) if refused.
+    bool set_sharp_features(const rgb::SharpFeatures& features, std::string label);
+
     // ---- files ----
     // Right away, on this thread (tests, headless frames); each returns false and sets an error
     // message when it cannot proceed.
@@ -191,10 +197,13 @@ private:
     void poll_recovery_task();
     // Ends the job at the front (its edit with it) and starts on the next.
     void finish_front();
+    void begin_crease_drag(bool untag);
+    void crease_drag_to(glm::vec2 px);
+    void end_crease_drag();
     void remember_recent(const std::string& path);
     void report(std::string message, bool error);
     void recover_from(const std::exception& failure);
-    bool busy() const { return !jobs_.empty() || painting_; }
+    bool busy() const { return !jobs_.empty() || painting_ || crease_drag_.has_value(); }
     // Refuse (with a message) while work is under way / while a whole-mesh job is (strokes queue
     // behind strokes).
     bool refuse_if_busy(const char* action);
@@ -244,6 +253,11 @@ private:
     float covered_right_ = 0.0f;
     Browse browse_request_ = Browse::None;
     std::uint64_t open_failures_ = 0;
+
+    CreaseToolSettings crease_tool_;
+    std::optional<CreaseDrag> crease_drag_;
+    glm::vec2 crease_last_px_{0.0f};
+    std::optional<SurfaceHit> crease_hit_;  // the last sample's hit
 
     Pending pending_ = Pending::None;
     std::string pending_path_;

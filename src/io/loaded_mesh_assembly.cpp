@@ -54,6 +54,7 @@ void compact_vertices(const ObjRecords& records, TriangleSoup& soup, LoadedMesh&
         soup.vertex_origin[mesh.positions.size() - 1] = soup.vertex_origin[v];
     }
     soup.vertex_origin.resize(mesh.positions.size());
+    mesh.file_vertex = soup.vertex_origin;
     for (rgb::Triangle& t : soup.triangles)
         for (std::uint32_t& v : t) v = new_index[v];
     mesh.triangles = std::move(soup.triangles);

@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "io/atomic_file.h"
+#include "io/crease_tags.h"
 #include "io/number_format.h"
 #include "io/obj_error.h"
 #include "io/obj_reader.h"
@@ -37,7 +38,7 @@ std::vector<glm::dvec3> vertex_normals(const std::vector<glm::dvec3>& positions,
 
 rgb::Mesh build_mesh(const LoadedMesh& loaded) {
     if (loaded.adaptive) return *loaded.adaptive;
-    return rgb::Mesh(loaded.positions, loaded.triangles);
+    return rgb::Mesh(std::make_shared<const rgb::BaseMesh>(loaded.positions, loaded.triangles, loaded.sharp_features));
 }
 
 rgb::Mesh load_mesh(const std::string& path, std::vector<std::string>* warnings, const ReadOptions& options) {
@@ -104,6 +105,7 @@ void write_obj(const rgb::Mesh& mesh, const SaveOptions& options, Output& output
         out += '\n';
         output.flush_if_full();
     }
+    append_tag_lines(mesh, obj_index, out);
     if (options.state) write_state(mesh, options.positions == SavedPositions::Limit, out, [&] { output.flush_if_full(); });
 }
 

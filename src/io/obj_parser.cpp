@@ -118,6 +118,7 @@ public:
         else if (keyword == "l") ++out_.line_elements;
         else if (keyword == "p") ++out_.point_elements;
         else if (keyword == "#rgb") out_.state.push_back({trim(rest), line});
+        else if (keyword == "t") out_.tags.push_back({trim(rest), line});
         else if (keyword[0] == '#') return;
         else if (std::find(kUnsupportedStatements.begin(), kUnsupportedStatements.end(), keyword) != kUnsupportedStatements.end())
             out_.unsupported.add(line, keyword);

@@ -5,7 +5,7 @@
 // whole-mesh checks are in mesh_validation.h.
 //
 // Read: v (x y z [w] or x y z r g b), vt (u [v [w]]), f (v, v/vt, v//vn, v/vt/vn corners), usemtl,
-// g, o, s, mtllib, #rgb. Counted and reported: vn (dropped: normals of the input surface do not
+// g, o, s, mtllib, #rgb, t (OpenSubdiv tags, collected for crease_tags.h). Counted and reported: vn (dropped: normals of the input surface do not
 // belong to the subdivided one), l, p, free-form statements and unknown keywords. Lines end at LF,
 // CRLF or a lone CR. Numbers are parsed with std::from_chars, which is correctly rounded, so a
 // coordinate written with 17 significant digits (or shortest round-trip form) comes back bit for bit.
@@ -127,6 +127,7 @@ struct ObjRecords {
     // Lines starting "v " and "f " exactly, and the number of the last line: what a truncation check
     // counts (truncation_check.h), gathered on the way so that it needs no second pass over the text.
     std::size_t v_line_starts = 0, f_line_starts = 0, last_line = 0;
+    std::vector<ObjStateLine> tags;   // OpenSubdiv tag lines (t), after "t "; read by crease_tags.h
 };
 
 // Throws ObjError (Empty, Binary, Utf16, Syntax, FaceIndexZero, FaceIndexOutOfRange,

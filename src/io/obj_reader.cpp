@@ -9,6 +9,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "io/crease_tags.h"
 #include "io/material_library.h"
 #include "io/mesh_validation.h"
 #include "io/obj_error.h"
@@ -115,6 +116,7 @@ LoadedMesh read_records(const ObjRecords& records, const std::string& name, cons
         }
     }
     LoadedMesh loaded = validate_mesh(records, name, options);
+    attach_file_tags(parse_tag_lines(records.tags, records.positions.size(), name), loaded, name);
     loaded.warnings.insert(loaded.warnings.begin(), warnings.begin(), warnings.end());
     return loaded;
 }

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <limits>
 
+#include "io/crease_tags.h"
 #include "io/number_format.h"
 #include "io/obj_error.h"
 #include "rgb/loop_geometry.h"
@@ -109,7 +110,9 @@ void write_state(const rgb::Mesh& mesh, bool limit_positions, std::string& out, 
     const rgb::BaseMesh& base = mesh.base();
     const std::size_t n0 = base.num_vertices();
     out += "# rgbsub adaptive state: the #rgb lines restore the exact RGB mesh; other readers ignore them\n";
-    out += "#rgb state " + std::to_string(kStateFormatVersion) + "\n";
+    std::string tag_records;
+    append_state_tag_records(base.sharp_features(), tag_records);
+    out += "#rgb state " + std::to_string(tag_records.empty() ? kStateFormatVersion : kTaggedStateFormatVersion) + "\n";
     out += limit_positions ? "#rgb positions limit\n" : "#rgb positions displayed\n";
     out += "#rgb section base-vertices " + std::to_string(n0) + "\n";
     std::size_t run = 0;
@@ -177,6 +180,7 @@ void write_state(const rgb::Mesh& mesh, bool limit_positions, std::string& out, 
         }
     }
     if (on_line > 0) out += '\n';
+    out += tag_records;
     out += "#rgb end\n";
 }
 
@@ -187,9 +191,9 @@ std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const
     // Another program's comments that happen to start with "#rgb": not a state at all.
     if (header.word() != "state") return std::nullopt;
     const unsigned version = header.number<unsigned>();
-    if (version < kOldestStateFormatVersion || version > kStateFormatVersion)
+    if (version < kOldestStateFormatVersion || version > kTaggedStateFormatVersion)
         header.fail("state format version " + std::to_string(version) + " (this rgbsub reads versions " +
-                    std::to_string(kOldestStateFormatVersion) + " to " + std::to_string(kStateFormatVersion) + ")");
+                    std::to_string(kOldestStateFormatVersion) + " to " + std::to_string(kTaggedStateFormatVersion) + ")");
     header.expect_end();
 
     SavedState saved;
@@ -198,6 +202,7 @@ std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const
     std::size_t expected[4] = {0, 0, 0, 0};
     bool seen[4] = {false, false, false, false};
     std::vector<rgb::SurfacePoint> addresses;
+    std::vector<ObjStateLine> tag_records;  // version 4
     bool ended = false;
     for (const ObjStateLine& line : lines.subspan(1)) {
         StateLineReader r(line, file);
@@ -261,6 +266,8 @@ std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const
                 p.a[0] = static_cast<std::uint32_t>(total - p.a[1] - p.a[2]);
                 addresses.push_back(p);
             }
+        } else if (version == kTaggedStateFormatVersion && is_state_tag_record(kind)) {
+            tag_records.push_back(line);
         } else if (kind == "end") {
             r.expect_end();
             ended = true;
@@ -283,6 +290,7 @@ std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const
     state.vertices.reserve(state.base_positions.size() + addresses.size());
     state.vertices.assign(state.base_positions.size(), rgb::SurfacePoint{});
     state.vertices.insert(state.vertices.end(), addresses.begin(), addresses.end());
+    state.sharp_features = parse_state_tag_records(tag_records, file);
     return saved;
 }
 

@@ -25,6 +25,9 @@
 // level 0 and an untouched base face are in the body already): the state stays a small fraction of
 // the v and f lines. Whatever they take from the body is checked with the rest (the restored mesh
 // must give back every v and f line), so an edited body cannot pass as the saved mesh.
+// Version 4 is version 3 plus the base mesh's crease and corner tags (crease_tags.h), records before
+// '#rgb end'; it is written only for a base mesh with tags, so untagged files stay version 3 and
+// readable by older rgbsub, which refuse a version-4 file naming its version.
 // A later version adds sections; a reader refuses a section it does not know, naming it.
 #include <functional>
 #include <optional>
@@ -38,6 +41,8 @@
 namespace rgbio {
 
 inline constexpr unsigned kStateFormatVersion = 3;
+// Written instead for a base mesh with crease or corner tags.
+inline constexpr unsigned kTaggedStateFormatVersion = 4;
 // The oldest version still read.
 inline constexpr unsigned kOldestStateFormatVersion = 2;
 

@@ -10,6 +10,7 @@
 #include "rgb/hierarchy_evaluator.h"
 #include "rgb/loop_rules.h"
 #include "rgb/parallel.h"
+#include "rgb/vertex_rules.h"
 
 namespace rgb {
 
@@ -43,6 +44,10 @@ public:
         : base_(base), points_(points), index_(index), limit_(points.size()),
           limit_state_(new std::atomic<std::uint8_t>[points.size()]()), blocks_(parallel_blocks(points.size(), 1 << 14)) {
         insertion_.resize(points.size());
+        if (base.has_sharp_features()) {
+            tagged_.resize(points.size());
+            for (std::size_t v = 0; v < points.size(); ++v) tagged_[v] = !follows_untagged_rules(base, points[v]);
+        }
         base_gamma_.resize(base.num_vertices());
         for (std::uint32_t v = 0; v < base.num_vertices(); ++v) base_gamma_[v] = loop_gamma(base.valence(v), base.is_boundary_vertex(v));
         for (std::size_t b = 0; b < blocks_; ++b) evaluators_.emplace_back(base);
@@ -85,7 +90,7 @@ private:
         const PointStencil st = parent_stencil(base_, p);
         const int l = p.level - 1;
         const glm::dvec3 a = control_point(vertex_at(st.ends[0]), l, block), b = control_point(vertex_at(st.ends[1]), l, block);
-        if (st.boundary) return boundary_edge_point(a, b);
+        if (st.boundary || (!tagged_.empty() && inserted_at_midpoint(base_, p))) return boundary_edge_point(a, b);
         return interior_edge_point(a, b, control_point(vertex_at(st.opposite[0]), l, block),
                                    control_point(vertex_at(st.opposite[1]), l, block));
     }
@@ -96,10 +101,12 @@ private:
         return v;
     }
 
-    // p^k(v), k >= level(v), by the closed form of spec §4.2.
+    // p^k(v), k >= level(v), by the closed form of spec §4.2. A vertex whose rules the tags change
+    // takes it from the evaluator, as loop_geometry does: the same bits as the operators' mesh.
     glm::dvec3 control_point(std::uint32_t v, int k, std::size_t block) {
         const int l = points_[v].level;
         if (k <= l) return insertion_[v];
+        if (is_tagged(v)) return evaluators_[block].control_point(points_[v], k);
         const double gamma = v < base_gamma_.size() ? base_gamma_[v] : loop_gamma(6, is_boundary(base_, points_[v]));
         return closed_form(insertion_[v], limit(v, block), gamma, k - l);
     }
@@ -112,7 +119,9 @@ private:
         const SurfacePoint& p = points_[v];
         const glm::dvec3& centre = insertion_[v];
         glm::dvec3 value;
-        if (p.level == 0) {
+        if (is_tagged(v)) {
+            value = evaluators_[block].limit_position(p);
+        } else if (p.level == 0) {
             const std::vector<std::uint32_t> ring = base_.ring(v);
             if (base_.is_boundary_vertex(v)) {
                 value = boundary_limit(centre, insertion_[ring.front()], insertion_[ring.back()]);
@@ -148,8 +157,11 @@ private:
         return value;
     }
 
+    bool is_tagged(std::uint32_t v) const { return !tagged_.empty() && tagged_[v]; }
+
     const BaseMesh& base_;
     std::span<const SurfacePoint> points_;
+    std::vector<bool> tagged_;  // per vertex, whether the tags change its rules; empty without tags
     const AddressIndex& index_;
     std::vector<double> base_gamma_;
     std::vector<glm::dvec3> insertion_;

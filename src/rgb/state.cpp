@@ -8,6 +8,7 @@
 
 #include "rgb/address_index.h"
 #include "rgb/face_location.h"
+#include "rgb/hierarchy_evaluator.h"
 #include "rgb/hierarchy_positions.h"
 #include "rgb/invariants.h"
 #include "rgb/loop_geometry.h"
@@ -20,6 +21,7 @@ MeshState capture_state(const Mesh& mesh) {
     MeshState s;
     s.base_positions.assign(mesh.base().positions().begin(), mesh.base().positions().end());
     s.base_triangles.assign(mesh.base().faces().begin(), mesh.base().faces().end());
+    s.sharp_features = mesh.base().sharp_features();
     std::vector<std::uint32_t> index(mesh.vertex_capacity(), BaseMesh::kNone);
     s.vertices.reserve(mesh.num_vertices());
     for (VertexId v : mesh.vertices()) {
@@ -193,6 +195,34 @@ OutgoingHalfedges matched_halfedges(const std::vector<Triangle>& faces, std::siz
 
 }  // namespace
 
+void set_sharp_features(Mesh& mesh, const SharpFeatures& features) {
+    auto base = std::make_shared<const BaseMesh>(mesh.base().positions(), mesh.base().faces(), features);
+    // Insertion positions by the new rules, from the base mesh (the evaluator caches what a vertex's
+    // parents need, so this is linear in the vertices).
+    std::vector<glm::dvec3> insertion = mesh.insertion_position_;
+    {
+        HierarchyEvaluator evaluator(*base);
+        for (VertexId v : mesh.vertices()) insertion[v.idx] = evaluator.insertion_position(mesh.address(v));
+    }
+    mesh.base_ = std::move(base);
+    mesh.insertion_position_ = std::move(insertion);
+    // Every cached limit followed the old rules.
+    for (VertexId v : mesh.vertices())
+        if (mesh.vertex_info_[v.idx] & Mesh::kLimitBit) {
+            mesh.limits_.erase(v.idx);
+            mesh.vertex_info_[v.idx] &= static_cast<std::uint8_t>(~Mesh::kLimitBit);
+        }
+    // As restore_state leaves it: the limits the displayed positions need are cached.
+    for (VertexId v : mesh.vertices())
+        if (display_level(mesh, v) > mesh.level(v)) limit_position(mesh, v);
+}
+
+Mesh with_sharp_features(const Mesh& mesh, const SharpFeatures& features) {
+    Mesh copy = mesh;
+    set_sharp_features(copy, features);
+    return copy;
+}
+
 // Rebuilt into the members the operators use, so the restored mesh is indistinguishable from one the
 // operators made: faces typed by their place in the hierarchy, insertion positions by the split
 // formula level by level. Every pass is linear (a table of addresses, halfedges grouped by vertex),
@@ -200,7 +230,7 @@ OutgoingHalfedges matched_halfedges(const std::vector<Triangle>& faces, std::siz
 Mesh restore_state(const MeshState& s) {
     std::shared_ptr<const BaseMesh> base_mesh;
     try {
-        base_mesh = std::make_shared<const BaseMesh>(s.base_positions, s.base_triangles);
+        base_mesh = std::make_shared<const BaseMesh>(s.base_positions, s.base_triangles, s.sharp_features);
     } catch (const std::invalid_argument& e) {
         fail(std::string("base mesh: ") + e.what());
     }
