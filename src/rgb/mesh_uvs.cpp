@@ -7,20 +7,33 @@
 
 namespace rgb {
 
-glm::dvec2 displayed_uv(const Mesh& mesh, UvEvaluator& uvs, FaceId f, int corner) {
+namespace {
+
+// The address of a corner's vertex in the base face of the corner's triangle: it names the corner's
+// UV value (uv_evaluator.h).
+SurfacePoint corner_address(const Mesh& mesh, FaceId f, int corner) {
     const VertexId v = mesh.face_vertices(f)[static_cast<std::size_t>(corner)];
-    const auto p = in_face(mesh.base(), mesh.address(v), base_face_of(mesh, f));
-    return uvs.control_uv(*p, display_level(mesh, v));
+    return *in_face(mesh.base(), mesh.address(v), base_face_of(mesh, f));
 }
 
-MeshUvs displayed_uvs(const Mesh& mesh, UvEvaluator& uvs) {
+}  // namespace
+
+glm::dvec2 displayed_uv(const Mesh& mesh, UvEvaluator& uvs, FaceId f, int corner) {
+    return uvs.control_uv(corner_address(mesh, f, corner), display_level(mesh, mesh.face_vertices(f)[static_cast<std::size_t>(corner)]));
+}
+
+glm::dvec2 limit_uv(const Mesh& mesh, UvEvaluator& uvs, FaceId f, int corner) {
+    return uvs.limit_uv(corner_address(mesh, f, corner));
+}
+
+MeshUvs mesh_uvs(const Mesh& mesh, UvEvaluator& uvs, bool limit) {
     MeshUvs out;
     // Per vertex slot, the values given to its corners so far (more than one only on seams).
     std::vector<std::vector<std::uint32_t>> of_vertex(mesh.vertex_capacity());
     out.corners.assign(mesh.face_capacity(), {0, 0, 0});
     for (FaceId f : mesh.faces()) {
         for (int c = 0; c < 3; ++c) {
-            const glm::dvec2 uv = displayed_uv(mesh, uvs, f, c);
+            const glm::dvec2 uv = limit ? limit_uv(mesh, uvs, f, c) : displayed_uv(mesh, uvs, f, c);
             std::vector<std::uint32_t>& known = of_vertex[mesh.face_vertices(f)[static_cast<std::size_t>(c)].idx];
             std::uint32_t id = static_cast<std::uint32_t>(out.values.size());
             for (std::uint32_t k : known)

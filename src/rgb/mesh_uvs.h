@@ -15,6 +15,8 @@ class Mesh;
 class UvEvaluator;
 
 glm::dvec2 displayed_uv(const Mesh& mesh, UvEvaluator& uvs, FaceId f, int corner);
+// The same corner's UV on the limit surface (beside limit positions).
+glm::dvec2 limit_uv(const Mesh& mesh, UvEvaluator& uvs, FaceId f, int corner);
 
 // The UVs of a mesh as face-varying data: distinct values, and per face slot (dead slots included)
 // the value of each corner. Corners of one vertex share a value where their UVs are the same bits.
@@ -22,6 +24,7 @@ struct MeshUvs {
     std::vector<glm::dvec2> values;
     std::vector<std::array<std::uint32_t, 3>> corners;
 };
-MeshUvs displayed_uvs(const Mesh& mesh, UvEvaluator& uvs);
+// `limit`: limit UVs instead of displayed ones.
+MeshUvs mesh_uvs(const Mesh& mesh, UvEvaluator& uvs, bool limit = false);
 
 }  // namespace rgb

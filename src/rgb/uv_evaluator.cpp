@@ -30,6 +30,14 @@ SurfacePoint UvEvaluator::representative(const SurfacePoint& p) const {
     return canonical(base_, p);
 }
 
+glm::dvec2 UvEvaluator::limit_uv(const SurfacePoint& p) {
+    const SurfacePoint q = representative(p);
+    const UvRegimes r = regimes(q);
+    const std::size_t last = r.size() - 1;
+    const glm::dvec3 uv = regime_limit(q, r[last], regime_start_value(q, r, last));
+    return {uv.x, uv.y};
+}
+
 UvEvaluator::Key UvEvaluator::key(const SurfacePoint& p) const {
     if (p.level == 0) {
         const SurfacePoint c = canonical(base_, p);

@@ -31,6 +31,9 @@ public:
     // uv^k of p's value on the side of base face p.face, for k >= p.level: the UV that the corners
     // of p in that face carry in Σk.
     glm::dvec2 control_uv(const SurfacePoint& p, int k);
+    // uv^inf: the limit of the value's last regime, with exact weights (Far's LimitFaceVarying uses
+    // float weights at UV creases, docs/loop-face-varying.md §5).
+    glm::dvec2 limit_uv(const SurfacePoint& p);
     std::size_t cached_values() const { return insertion_.size() + regime_start_.size() + regime_limit_.size(); }
 
 private:

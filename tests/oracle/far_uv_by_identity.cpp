@@ -48,18 +48,29 @@ FarUvByIdentity::FarUvByIdentity(const FarByIdentity& far) {
                 }
             }
         }
-        std::map<std::pair<rgbtest::Identity, std::uint32_t>, glm::dvec2> by_key;
-        for (std::size_t t = 0; t < level.triangles.size(); ++t) {
-            const auto base_face = static_cast<std::uint32_t>(t >> (2 * k));
-            for (int c = 0; c < 3; ++c) {
-                const rgbtest::Identity id = identities[k][static_cast<std::size_t>(level.triangles[t][c])];
-                const auto [it, added] = by_key.emplace(std::pair{id, base_face}, level.uv[t][c]);
-                if (!added && it->second != level.uv[t][c])
-                    throw std::logic_error("Far has two UVs for one vertex inside one base face");
-            }
-        }
-        uv_.push_back(std::move(by_key));
+        uv_.push_back(by_corner(level, identities[k], static_cast<int>(k), level.uv));
     }
+    const int last = static_cast<int>(r.levels.size()) - 1;
+    limit_ = by_corner(r.levels.back(), identities.back(), last, r.limit_uv);
+}
+
+FarUvByIdentity::ByCorner FarUvByIdentity::by_corner(const FarLevel& level, const std::vector<rgbtest::Identity>& identities,
+                                                     int k, const std::vector<std::array<glm::dvec2, 3>>& values) {
+    ByCorner by_key;
+    for (std::size_t t = 0; t < level.triangles.size(); ++t) {
+        const auto base_face = static_cast<std::uint32_t>(t >> (2 * k));
+        for (int c = 0; c < 3; ++c) {
+            const rgbtest::Identity id = identities[static_cast<std::size_t>(level.triangles[t][c])];
+            const auto [it, added] = by_key.emplace(std::pair{id, base_face}, values[t][c]);
+            if (!added && it->second != values[t][c]) throw std::logic_error("Far has two UVs for one vertex inside one base face");
+        }
+    }
+    return by_key;
+}
+
+const glm::dvec2* FarUvByIdentity::limit_uv(rgbtest::Identity id, std::uint32_t base_face) const {
+    const auto it = limit_.find({id, base_face});
+    return it == limit_.end() ? nullptr : &it->second;
 }
 
 const glm::dvec2* FarUvByIdentity::uv(int k, rgbtest::Identity id, std::uint32_t base_face) const {

@@ -26,10 +26,17 @@ public:
     // Far's UV of level k at the vertex with identity `id`, in triangles of base face `base_face`;
     // nullptr if no triangle of that level and face has the vertex.
     const glm::dvec2* uv(int k, rgbtest::Identity id, std::uint32_t base_face) const;
+    // Far's LimitFaceVarying of the finest level, named the same way.
+    const glm::dvec2* limit_uv(rgbtest::Identity id, std::uint32_t base_face) const;
     double tolerance() const { return tolerance_; }  // 1e-12 of the UV bounding-box diagonal
 
 private:
-    std::vector<std::map<std::pair<rgbtest::Identity, std::uint32_t>, glm::dvec2>> uv_;  // [level]
+    using ByCorner = std::map<std::pair<rgbtest::Identity, std::uint32_t>, glm::dvec2>;
+    // Per triangle corner values of level k (Far's triangle order) by identity and base face.
+    static ByCorner by_corner(const FarLevel& level, const std::vector<rgbtest::Identity>& identities, int k,
+                              const std::vector<std::array<glm::dvec2, 3>>& values);
+    std::vector<ByCorner> uv_;  // [level]
+    ByCorner limit_;
     double tolerance_ = 0.0;
 };
 

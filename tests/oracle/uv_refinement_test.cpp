@@ -135,6 +135,23 @@ TEST_P(UvRefinement, UniformRefinementEqualsFarAtEveryLevel) {
     }
 }
 
+TEST_P(UvRefinement, LimitUvsEqualFarsLimitFaceVaryingToItsFloatWeights) {
+    // docs/loop-face-varying.md §5: Far's UV crease limit weights are floats (relative error 3e-8);
+    // at level 4 no case has a dart left, where Far's limit mask would not be the limit.
+    rgb::Mesh mesh = fresh();
+    rgbtest::IdentityTracker ids(mesh, far.oracle());
+    rgb::refine_uniform(mesh, kFarLevels);
+    rgb::UvEvaluator uvs(*base, layout);
+    for (rgb::FaceId f : mesh.faces())
+        for (int c = 0; c < 3; ++c) {
+            const rgb::VertexId v = mesh.face_vertices(f)[static_cast<std::size_t>(c)];
+            const glm::dvec2* expected = far_uv.limit_uv(ids.identity(v), rgb::base_face_of(mesh, f));
+            ASSERT_NE(expected, nullptr);
+            EXPECT_LE(glm::distance(rgb::limit_uv(mesh, uvs, f, c), *expected), 1e-7 * std::max(1.0, glm::length(*expected)))
+                << "corner " << c << " of face " << f.idx << " (vertex " << v.idx << ")";
+        }
+}
+
 TEST_P(UvRefinement, EveryCornerOfRandomAdaptiveMeshesEqualsFarsUvOfItsDisplayLevel) {
     std::mt19937 rng(151);
     for (int trial = 0; trial < 4; ++trial) {
