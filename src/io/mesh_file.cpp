@@ -13,6 +13,8 @@
 #include "io/state_format.h"
 #include "io/truncation_check.h"
 #include "rgb/loop_geometry.h"
+#include "rgb/mesh_uvs.h"
+#include "rgb/uv_evaluator.h"
 
 namespace rgbio {
 
@@ -80,6 +82,18 @@ void write_obj(const rgb::Mesh& mesh, const SaveOptions& options, Output& output
         out += '\n';
         output.flush_if_full();
     }
+    rgb::MeshUvs uvs;
+    if (options.uvs) {
+        rgb::UvEvaluator evaluator(mesh.base(), *options.uvs);
+        uvs = rgb::mesh_uvs(mesh, evaluator, options.positions == SavedPositions::Limit);
+        for (const glm::dvec2& uv : uvs.values) {
+            out += "vt";
+            append_double(out, uv.x);
+            append_double(out, uv.y);
+            out += '\n';
+            output.flush_if_full();
+        }
+    }
     auto triangle = [&](rgb::FaceId f) {
         const auto& v = mesh.face_vertices(f);
         return rgb::Triangle{obj_index[v[0].idx], obj_index[v[1].idx], obj_index[v[2].idx]};
@@ -97,16 +111,20 @@ void write_obj(const rgb::Mesh& mesh, const SaveOptions& options, Output& output
     }
     for (rgb::FaceId f : mesh.faces()) {
         out += 'f';
-        for (std::uint32_t v : triangle(f)) {
-            const std::string index = std::to_string(std::size_t(v) + 1);
+        const rgb::Triangle t = triangle(f);
+        for (std::size_t c = 0; c < 3; ++c) {
+            const std::string index = std::to_string(std::size_t(t[c]) + 1);
             out += ' ' + index;
-            if (options.normals) out += "//" + index;
+            if (options.uvs) out += '/' + std::to_string(std::size_t(uvs.corners[f.idx][c]) + 1);
+            if (options.normals) out += (options.uvs ? "/" : "//") + index;
         }
         out += '\n';
         output.flush_if_full();
     }
     append_tag_lines(mesh, obj_index, out);
-    if (options.state) write_state(mesh, options.positions == SavedPositions::Limit, out, [&] { output.flush_if_full(); });
+    if (options.state)
+        write_state(mesh, options.positions == SavedPositions::Limit, out, [&] { output.flush_if_full(); },
+                    options.uvs ? &options.uvs->channel() : nullptr);
 }
 
 }  // namespace

@@ -5,11 +5,13 @@
 // exact adaptive state in "#rgb" comment lines (state_format.h). Loading such a file restores the
 // adaptive mesh slot for slot; a plain OBJ loads as a base mesh (all green, level 0).
 #include <cstddef>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "io/loaded_mesh.h"
 #include "rgb/mesh.h"
+#include "rgb/uv_layout.h"
 
 namespace rgbio {
 
@@ -28,6 +30,10 @@ struct SaveOptions {
     SavedPositions positions = SavedPositions::Displayed;
     bool normals = false;      // area-weighted vertex normals of the written positions
     bool state = true;         // the #rgb lines that make the file resumable
+    // Texture coordinates (io/base_uvs.h): vt lines with every corner's exact UV (at its vertex's
+    // display level, or the limit beside limit positions) and f v/vt corners; the state keeps the
+    // base channel. Must have been built over the saved mesh's base mesh. Null: none.
+    std::shared_ptr<const rgb::UvLayout> uvs = nullptr;
 };
 
 // The file content. The mesh is not modified (limit positions may be cached, see loop_geometry.h).

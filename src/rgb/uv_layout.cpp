@@ -19,7 +19,17 @@ struct FanSpan {
     bool pinned = false;              // a seam inside it, or its value in another span too
 };
 
+constexpr const char* kOptionNames[] = {"none", "corners", "boundaries", "all"};
+
 }  // namespace
+
+const char* uv_interpolation_name(UvInterpolation option) { return kOptionNames[static_cast<int>(option)]; }
+
+std::optional<UvInterpolation> parse_uv_interpolation(std::string_view name) {
+    for (int i = 0; i < 4; ++i)
+        if (name == kOptionNames[i]) return static_cast<UvInterpolation>(i);
+    return std::nullopt;
+}
 
 UvLayout::UvLayout(const BaseMesh& base, UvChannel channel) : channel_(std::move(channel)) {
     if (channel_.corners.size() != base.num_faces())

@@ -6,7 +6,8 @@
 // hierarchy's UVs need beyond the base mesh (uv_evaluator.h) is here; it never changes once built.
 #include <array>
 #include <cstdint>
-#include <span>
+#include <optional>
+#include <string_view>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -20,6 +21,9 @@ class BaseMesh;
 
 // OpenSubdiv's Sdc::Options::FVAR_LINEAR_NONE, _CORNERS_ONLY, _BOUNDARIES, _ALL.
 enum class UvInterpolation : std::uint8_t { None, Corners, Boundaries, All };
+
+const char* uv_interpolation_name(UvInterpolation option);  // "none", "corners", "boundaries", "all"
+std::optional<UvInterpolation> parse_uv_interpolation(std::string_view name);
 
 struct UvChannel {
     std::vector<glm::dvec2> values;
