@@ -3,6 +3,8 @@
 #include <iostream>
 
 #include "cli/commands.h"
+#include "io/base_uvs.h"
+#include "io/obj_reader.h"
 #include "rgb/sharp_angle.h"
 #include "rgb/state.h"
 
@@ -31,6 +33,22 @@ rgb::Mesh with_sharp_options(const Arguments& arguments, rgb::Mesh mesh) {
     }
     if (features == mesh.base().sharp_features()) return mesh;
     return rgb::with_sharp_features(mesh, features);
+}
+
+InputMesh load_input(const Arguments& arguments, const std::string& path, std::vector<std::string>& warnings) {
+    std::optional<rgb::UvInterpolation> interpolation;
+    if (const std::optional<std::string> value = arguments.value(kUvInterpolationOption)) {
+        interpolation = rgb::parse_uv_interpolation(*value);
+        if (!interpolation)
+            throw UsageError("--uv-interpolation must be 'none', 'corners', 'boundaries' or 'all', not '" + *value + "'");
+    }
+    rgbio::LoadedMesh loaded = rgbio::read_obj_file(path, read_options(arguments));
+    warnings.insert(warnings.end(), loaded.warnings.begin(), loaded.warnings.end());
+    // A saved mesh is moved out rather than copied (it can be large). The layout is classified by the
+    // final base mesh's tags, so it follows the crease options.
+    rgb::Mesh mesh = with_sharp_options(arguments, loaded.adaptive ? std::move(*loaded.adaptive) : rgbio::build_mesh(loaded));
+    auto uvs = rgbio::uv_layout(rgbio::base_uv_channel(loaded, mesh, warnings), mesh, interpolation);
+    return {std::move(mesh), std::move(uvs)};
 }
 
 rgbio::SavedPositions parse_positions(const std::string& value) {

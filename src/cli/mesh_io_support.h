@@ -1,6 +1,8 @@
 #pragma once
 // What the mesh commands (info, refine, apply, render, edit) share: `--strict`, printing loader
-// warnings, reading `--positions`, and the crease options `--sharp-angle` and `--boundary`.
+// warnings, reading `--positions`, the crease options `--sharp-angle` and `--boundary`, and
+// `--uv-interpolation` for the commands that save.
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -25,6 +27,24 @@ inline constexpr std::string_view kSharpHelp =
     "  --boundary edge-only|edge-and-corner\n"
     "                      OpenSubdiv's boundary rule: edge-and-corner keeps boundary vertices with a\n"
     "                      single face fixed (default: the file's, else edge-only)\n";
+
+// How texture coordinates are subdivided (rgb/uv_layout.h), for the commands that save a mesh.
+inline constexpr std::string_view kUvInterpolationOption = "--uv-interpolation";
+inline constexpr std::string_view kUvHelp =
+    "  --uv-interpolation none|corners|boundaries|all\n"
+    "                      how texture coordinates (vt) are subdivided, as OpenSubdiv's FVAR_LINEAR_*:\n"
+    "                      none smooths them but at seams' ends, corners also keeps UV corners in place,\n"
+    "                      boundaries keeps seams and borders on their input lines, all is linear\n"
+    "                      (default: the file's, else corners)\n";
+
+// The input of a command that saves: the mesh with the crease options applied, and the layout of
+// its texture coordinates (null without them) under --uv-interpolation. Throws UsageError for a bad
+// value; appends loader warnings.
+struct InputMesh {
+    rgb::Mesh mesh;
+    std::shared_ptr<const rgb::UvLayout> uvs;
+};
+InputMesh load_input(const Arguments& arguments, const std::string& path, std::vector<std::string>& warnings);
 
 // The mesh with the tags these options add to its base mesh's (the file's t lines or saved state);
 // the mesh itself when neither is given. Throws UsageError for a bad value.
