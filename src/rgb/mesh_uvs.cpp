@@ -4,6 +4,7 @@
 #include "rgb/loop_geometry.h"
 #include "rgb/mesh.h"
 #include "rgb/uv_evaluator.h"
+#include "rgb/vertex_rules.h"
 
 namespace rgb {
 
@@ -28,14 +29,20 @@ glm::dvec2 limit_uv(const Mesh& mesh, UvEvaluator& uvs, FaceId f, int corner) {
 
 MeshUvs mesh_uvs(const Mesh& mesh, UvEvaluator& uvs, bool limit) {
     MeshUvs out;
-    // Per vertex slot, the values given to its corners so far (more than one only on seams).
+    // Per vertex slot, the values given to its corners so far: one for a vertex inside a base face,
+    // whose corners all share it (computed once), more only on seams.
     std::vector<std::vector<std::uint32_t>> of_vertex(mesh.vertex_capacity());
     out.corners.assign(mesh.face_capacity(), {0, 0, 0});
     for (FaceId f : mesh.faces()) {
         for (int c = 0; c < 3; ++c) {
+            const VertexId v = mesh.face_vertices(f)[static_cast<std::size_t>(c)];
+            std::vector<std::uint32_t>& known = of_vertex[v.idx];
+            if (!known.empty() && !on_base_edge_or_vertex(mesh.address(v))) {
+                out.corners[f.idx][static_cast<std::size_t>(c)] = known.front();
+                continue;
+            }
             const glm::dvec2 uv = limit ? limit_uv(mesh, uvs, f, c) : displayed_uv(mesh, uvs, f, c);
-            std::vector<std::uint32_t>& known = of_vertex[mesh.face_vertices(f)[static_cast<std::size_t>(c)].idx];
-            std::uint32_t id = static_cast<std::uint32_t>(out.values.size());
+            auto id = static_cast<std::uint32_t>(out.values.size());
             for (std::uint32_t k : known)
                 if (out.values[k] == uv) id = k;
             if (id == out.values.size()) {

@@ -34,7 +34,7 @@ glm::dvec2 UvEvaluator::limit_uv(const SurfacePoint& p) {
     const SurfacePoint q = representative(p);
     const UvRegimes r = regimes(q);
     const std::size_t last = r.size() - 1;
-    const glm::dvec3 uv = regime_limit(q, r[last], regime_start_value(q, r, last));
+    const glm::dvec3 uv = regime_limit(q, r[last], regime_start_value(q, r, last), last == 0 ? &values(q) : nullptr);
     return {uv.x, uv.y};
 }
 
@@ -82,30 +82,36 @@ UvRegimes UvEvaluator::regimes(const SurfacePoint& p) const {
     return own;
 }
 
-glm::dvec3 UvEvaluator::insertion(const SurfacePoint& p) {
-    if (p.level == 0) return lifted(layout_.corner_uv(p.face, corner_of_base_vertex(p)));
+UvEvaluator::Values& UvEvaluator::values(const SurfacePoint& p) {
     const Key k = key(p);
-    if (const auto it = insertion_.find(k); it != insertion_.end()) return it->second;
-    // §3's edge points: the stencil is read in p's face, so a seam's ends are on p's side.
-    const PointStencil s = parent_stencil(base_, p);
-    const int l = p.level - 1;
-    auto at = [&](const SurfacePoint& q) { return control(representative(reduced(q)), l); };
-    const glm::dvec3 a = at(s.ends[0]), b = at(s.ends[1]);
-    const auto h = base_edge_of(p);
-    const bool midpoint = s.boundary || layout_.interpolation() == UvInterpolation::All || (h && layout_.is_seam(*h)) ||
-                          (base_.has_sharp_features() && inserted_at_midpoint(base_, p));
-    const glm::dvec3 value = midpoint ? boundary_edge_point(a, b)
-                                      : interior_edge_point(a, b, at(s.opposite[0]), at(s.opposite[1]));
-    insertion_.emplace(k, value);
-    return value;
+    if (const auto it = values_.find(k); it != values_.end()) return it->second;
+    Values v;
+    if (p.level == 0) {
+        v.insertion = lifted(layout_.corner_uv(p.face, corner_of_base_vertex(p)));
+    } else {
+        // §3's edge points: the stencil is read in p's face, so a seam's ends are on p's side.
+        const PointStencil s = parent_stencil(base_, p);
+        const int l = p.level - 1;
+        auto at = [&](const SurfacePoint& q) { return control(representative(reduced(q)), l); };
+        const glm::dvec3 a = at(s.ends[0]), b = at(s.ends[1]);
+        const auto h = base_edge_of(p);
+        const bool midpoint = s.boundary || layout_.interpolation() == UvInterpolation::All || (h && layout_.is_seam(*h)) ||
+                              (base_.has_sharp_features() && inserted_at_midpoint(base_, p));
+        v.insertion = midpoint ? boundary_edge_point(a, b) : interior_edge_point(a, b, at(s.opposite[0]), at(s.opposite[1]));
+    }
+    return values_.emplace(k, v).first->second;
 }
 
+glm::dvec3 UvEvaluator::insertion(const SurfacePoint& p) { return values(p).insertion; }
+
 glm::dvec3 UvEvaluator::control(const SurfacePoint& p, int k) {
-    if (k <= p.level) return insertion(p);
+    Values& own = values(p);
+    if (k <= p.level) return own.insertion;
     const UvRegimes r = regimes(p);
     std::size_t i = 0;
     while (i + 1 < r.size() && r[i + 1].start <= k) ++i;
-    return regime_value(p, r[i], regime_start_value(p, r, i), k);
+    if (i == 0) return regime_value(p, r[0], own.insertion, k, &own);
+    return regime_value(p, r[i], regime_start_value(p, r, i), k, nullptr);
 }
 
 glm::dvec3 UvEvaluator::regime_start_value(const SurfacePoint& p, const UvRegimes& regimes, std::size_t i) {
@@ -113,26 +119,29 @@ glm::dvec3 UvEvaluator::regime_start_value(const SurfacePoint& p, const UvRegime
     Key k = key(p);
     k.regime = regimes[i].start;
     if (const auto it = regime_start_.find(k); it != regime_start_.end()) return it->second;
-    const glm::dvec3 value = regime_value(p, regimes[i - 1], regime_start_value(p, regimes, i - 1), regimes[i].start);
+    const glm::dvec3 value = regime_value(p, regimes[i - 1], regime_start_value(p, regimes, i - 1), regimes[i].start,
+                                          i == 1 ? &values(p) : nullptr);
     regime_start_.emplace(k, value);
     return value;
 }
 
-glm::dvec3 UvEvaluator::regime_value(const SurfacePoint& p, const UvRegime& r, const glm::dvec3& start, int k) {
+glm::dvec3 UvEvaluator::regime_value(const SurfacePoint& p, const UvRegime& r, const glm::dvec3& start, int k, Values* first) {
     const int steps = k - r.start;
     if (steps <= 0 || r.rule == VertexRule::Corner) return start;
     if (r.rule == VertexRule::Dart) {
         const std::vector<glm::dvec3> ring = ring_values(p, r.start);
         return apply_dart_mask(dart_mask(static_cast<int>(ring.size()), steps), start, ring, r.sharp[0]);
     }
-    return closed_form(start, regime_limit(p, r, start), regime_gamma(p, r.rule), steps);
+    return closed_form(start, regime_limit(p, r, start, first), regime_gamma(p, r.rule), steps);
 }
 
-glm::dvec3 UvEvaluator::regime_limit(const SurfacePoint& p, const UvRegime& r, const glm::dvec3& start) {
+glm::dvec3 UvEvaluator::regime_limit(const SurfacePoint& p, const UvRegime& r, const glm::dvec3& start, Values* first) {
     if (r.rule == VertexRule::Corner) return start;
+    if (first && first->first_limit_known) return first->first_limit;
     Key k = key(p);
     k.regime = r.start;
-    if (const auto it = regime_limit_.find(k); it != regime_limit_.end()) return it->second;
+    if (!first)
+        if (const auto it = regime_limit_.find(k); it != regime_limit_.end()) return it->second;
     glm::dvec3 value;
     if (r.rule == VertexRule::Crease) {
         const std::vector<SurfacePoint> ring = ring_at(base_, p, r.start);
@@ -144,7 +153,12 @@ glm::dvec3 UvEvaluator::regime_limit(const SurfacePoint& p, const UvRegime& r, c
                     ? apply_dart_mask(dart_limit_mask(static_cast<int>(ring.size())), start, ring, r.sharp[0])
                     : interior_limit(start, ring);
     }
-    regime_limit_.emplace(k, value);
+    if (first) {
+        first->first_limit = value;
+        first->first_limit_known = true;
+    } else {
+        regime_limit_.emplace(k, value);
+    }
     return value;
 }
 

@@ -34,7 +34,7 @@ public:
     // uv^inf: the limit of the value's last regime, with exact weights (Far's LimitFaceVarying uses
     // float weights at UV creases, docs/loop-face-varying.md §5).
     glm::dvec2 limit_uv(const SurfacePoint& p);
-    std::size_t cached_values() const { return insertion_.size() + regime_start_.size() + regime_limit_.size(); }
+    std::size_t cached_values() const { return values_.size() + regime_start_.size() + regime_limit_.size(); }
 
 private:
     struct Key {
@@ -46,9 +46,13 @@ private:
     };
     struct KeyHash {
         std::size_t operator()(const Key& k) const noexcept {
-            std::uint64_t h = (std::uint64_t(k.face) << 32) ^ (std::uint64_t(k.a0) * 0x9e3779b97f4a7c15ull) ^
-                              (std::uint64_t(k.a1) << 17) ^ static_cast<std::uint64_t>(k.level) ^
-                              (static_cast<std::uint64_t>(k.regime + 1) << 8) ^ (std::uint64_t(k.value) * 0xff51afd7ed558ccdull);
+            // Every field multiplied by its own odd constant, then a 64-bit finaliser: the addresses of
+            // one level differ in few low bits, which a plain shift-and-xor leaves clustered.
+            std::uint64_t h = k.face * 0x9e3779b97f4a7c15ull ^ k.a0 * 0xc2b2ae3d27d4eb4full ^ k.a1 * 0x165667b19e3779f9ull ^
+                              static_cast<std::uint64_t>(k.level * 64 + k.regime + 1) * 0x27d4eb2f165667c5ull ^
+                              k.value * 0xff51afd7ed558ccdull;
+            h ^= h >> 31;
+            h *= 0x94d049bb133111ebull;
             return static_cast<std::size_t>(h ^ (h >> 29));
         }
     };
@@ -59,12 +63,22 @@ private:
     Key key(const SurfacePoint& p) const;
     UvRegimes regimes(const SurfacePoint& p) const;
 
+    // A value's UV at its own level and, once needed, the limit of its first regime: kept together so
+    // that a neighbour's UV at any level of that regime costs one lookup.
+    struct Values {
+        glm::dvec3 insertion{0.0}, first_limit{0.0};
+        bool first_limit_known = false;
+    };
+    // The entry of p's value, its insertion UV computed if new. References stay valid (node map).
+    Values& values(const SurfacePoint& p);
+
     // UVs are carried as (u, v, 0) so that loop_rules.h's formulas apply unchanged; p is a representative.
     glm::dvec3 insertion(const SurfacePoint& p);
     glm::dvec3 control(const SurfacePoint& p, int k);
     glm::dvec3 regime_start_value(const SurfacePoint& p, const UvRegimes& regimes, std::size_t i);
-    glm::dvec3 regime_value(const SurfacePoint& p, const UvRegime& r, const glm::dvec3& start, int k);
-    glm::dvec3 regime_limit(const SurfacePoint& p, const UvRegime& r, const glm::dvec3& start);
+    // `first`: p's entry when r is p's first regime (its limit is kept there), else nullptr.
+    glm::dvec3 regime_value(const SurfacePoint& p, const UvRegime& r, const glm::dvec3& start, int k, Values* first);
+    glm::dvec3 regime_limit(const SurfacePoint& p, const UvRegime& r, const glm::dvec3& start, Values* first);
     // uv^t of p's neighbours in Σt, in ring_at's order, each on p's side.
     std::vector<glm::dvec3> ring_values(const SurfacePoint& p, int t);
     // uv^t of ring entry q of p, read in base face `face` (kNone: the face q is given in, which joins
@@ -74,7 +88,9 @@ private:
 
     const BaseMesh& base_;
     const UvLayout& layout_;
-    std::unordered_map<Key, glm::dvec3, KeyHash> insertion_, regime_start_, regime_limit_;
+    std::unordered_map<Key, Values, KeyHash> values_;
+    // Later regimes of values with several (semi-sharp and tagged vertices): their start and limit.
+    std::unordered_map<Key, glm::dvec3, KeyHash> regime_start_, regime_limit_;
 };
 
 }  // namespace rgb

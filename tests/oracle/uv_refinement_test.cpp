@@ -102,8 +102,9 @@ protected:
     }
     // Every face's UVs keyed by its corners' displayed positions (rotated to start at the smallest),
     // which survive any slot order.
-    std::map<std::array<double, 9>, std::array<glm::dvec2, 3>> uvs_by_position(const rgb::Mesh& m) {
-        rgb::UvEvaluator uvs(*base, layout);
+    std::map<std::array<double, 9>, std::array<glm::dvec2, 3>> uvs_by_position(const rgb::Mesh& m) { return uvs_by_position(m, layout); }
+    static std::map<std::array<double, 9>, std::array<glm::dvec2, 3>> uvs_by_position(const rgb::Mesh& m, const rgb::UvLayout& layout) {
+        rgb::UvEvaluator uvs(m.base(), layout);
         std::map<std::array<double, 9>, std::array<glm::dvec2, 3>> by_face;
         for (rgb::FaceId f : m.faces()) {
             std::array<glm::dvec3, 3> p;
@@ -192,6 +193,39 @@ TEST_P(UvRefinement, UndoingRequestsGivesBackIdenticalUvs) {
     const rgb::JournalRecord record = journal.stop();
     journal.revert(record);
     EXPECT_TRUE(uvs_by_position(mesh) == before);
+}
+
+// The input stored differently: vertices and triangles in reverse order, each triangle starting at
+// its second corner. Canonical addresses then name other faces and corners; no UV may change a bit.
+FarInput restored_differently(const FarInput& in) {
+    FarInput out = in;
+    const int n = static_cast<int>(in.positions.size());
+    auto moved = [&](int v) { return n - 1 - v; };
+    std::reverse(out.positions.begin(), out.positions.end());
+    out.triangles.clear();
+    out.uv->corners.clear();
+    for (std::size_t t = in.triangles.size(); t-- > 0;) {
+        const auto& tri = in.triangles[t];
+        const auto& uv = in.uv->corners[t];
+        out.triangles.push_back({moved(tri[1]), moved(tri[2]), moved(tri[0])});
+        out.uv->corners.push_back({uv[1], uv[2], uv[0]});
+    }
+    for (SharpEdge& e : out.creases) e = {moved(e.a), moved(e.b), e.sharpness};
+    for (SharpVertex& c : out.corners) c.vertex = moved(c.vertex);
+    return out;
+}
+
+TEST_P(UvRefinement, AnotherStorageOrderGivesIdenticalUvs) {
+    const FarInput other = restored_differently(input);
+    const auto other_base = tagged_base(other);
+    const rgb::UvLayout other_layout(*other_base, uv_channel_of(other));
+    std::mt19937 rng(154);
+    rgb::Mesh a = fresh(), b(other_base);
+    for (const rgb::LevelRequest& r : random_requests(input, rng, 4, 0)) {
+        rgb::apply_request(a, r);
+        rgb::apply_request(b, r);
+    }
+    EXPECT_TRUE(uvs_by_position(a) == uvs_by_position(b, other_layout));
 }
 
 INSTANTIATE_TEST_SUITE_P(UvMeshes, UvRefinement, testing::ValuesIn(cases_and_options()),
