@@ -58,6 +58,12 @@ public:
     // vertex set stays, every position follows the new rules. Throws std::invalid_argument for tags
     // the base mesh refuses (the document is unchanged then).
     void set_sharp_features(const rgb::SharpFeatures& features, std::string label);
+    // Texture coordinates: the base mesh's UV channel if the file had one, and its layout over the
+    // current base mesh (rebuilt after a retag), for saving; null without.
+    std::shared_ptr<const rgb::UvLayout> uv_layout();
+    std::optional<rgb::UvInterpolation> uv_interpolation() const;
+    // Another OpenSubdiv face-varying option for the UVs: a setting of the file, not an undoable edit.
+    void set_uv_interpolation(rgb::UvInterpolation interpolation);
     UndoHistory& history() { return history_; }
     const UndoHistory& history() const { return history_; }
 
@@ -88,6 +94,9 @@ private:
     std::string path_;
     bool dirty_ = false;
     std::uint64_t changes_count_ = 0;
+    std::optional<rgb::UvChannel> uv_channel_;
+    std::shared_ptr<const rgb::UvLayout> uv_layout_;
+    std::uint64_t uv_layout_base_ = 0;  // BaseMesh::serial of the base uv_layout_ was built over
     render::SurfaceGeometry geometry_;
     SurfaceIndex index_;
     std::unique_ptr<render::MeshChanges> changes_;

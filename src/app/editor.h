@@ -208,6 +208,8 @@ private:
     // behind strokes).
     bool refuse_if_busy(const char* action);
     bool refuse_if_whole_mesh_job(const char* action);
+    // save_options_ with the document's texture coordinates.
+    rgbio::SaveOptions document_save_options();
 
     Document document_;
     ViewCamera camera_;

@@ -32,6 +32,12 @@ void Editor::load(const std::string& path) {
     if (recovery_) recovery_->remove_own();
 }
 
+rgbio::SaveOptions Editor::document_save_options() {
+    rgbio::SaveOptions options = save_options_;
+    options.uvs = document_.uv_layout();
+    return options;
+}
+
 bool Editor::save() {
     if (document_.path().empty()) {
         report("the mesh has no file yet: use Save as", true);
@@ -43,7 +49,7 @@ bool Editor::save() {
 bool Editor::save_as(const std::string& path) {
     if (refuse_if_busy("save")) return false;
     try {
-        document_.save(path, save_options_);
+        document_.save(path, document_save_options());
         report("saved " + path, false);
     } catch (const rgbio::SaveError& error) {
         report(error.what(), true);
@@ -115,7 +121,7 @@ void Editor::start_save(const std::string& path) {
     }
     save_when_idle_.reset();
     saved_changes_ = document_.changes();
-    file_task_ = BackgroundTask::save(document_.mesh(), path, save_options_);
+    file_task_ = BackgroundTask::save(document_.mesh(), path, document_save_options());
     report("saving " + path + " ...", false);
 }
 
@@ -239,7 +245,9 @@ void Editor::keep_recovery_copy(bool force) {
         return;
     }
     recovery_changes_ = document_.changes();
-    recovery_task_ = BackgroundTask::save(document_.mesh(), recovery_->mesh_file().string(), rgbio::SaveOptions{});
+    rgbio::SaveOptions recovery_options;
+    recovery_options.uvs = document_.uv_layout();
+    recovery_task_ = BackgroundTask::save(document_.mesh(), recovery_->mesh_file().string(), recovery_options);
     recovery_due_ = std::chrono::steady_clock::now() + recovery_interval_;
 }
 

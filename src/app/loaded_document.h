@@ -1,12 +1,14 @@
 #pragma once
 // A mesh read from a file with everything the editor shows and picks on already built, so that
 // reading can happen away from the window's thread and handing it over costs nothing.
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "app/surface_index.h"
 #include "render/surface_geometry.h"
 #include "rgb/mesh.h"
+#include "rgb/uv_layout.h"
 
 namespace app {
 
@@ -15,6 +17,7 @@ struct LoadedDocument {
     render::SurfaceGeometry geometry;
     SurfaceIndex index;
     std::vector<std::string> warnings;
+    std::optional<rgb::UvChannel> uvs;  // the base mesh's texture coordinates (io/base_uvs.h)
 };
 
 // Reads `path` (throws rgbio::ObjError) and builds its geometry at `source` positions and its index.

@@ -4,7 +4,6 @@
 
 #include "cli/commands.h"
 #include "io/base_uvs.h"
-#include "io/obj_reader.h"
 #include "rgb/sharp_angle.h"
 #include "rgb/state.h"
 
@@ -42,12 +41,10 @@ InputMesh load_input(const Arguments& arguments, const std::string& path, std::v
         if (!interpolation)
             throw UsageError("--uv-interpolation must be 'none', 'corners', 'boundaries' or 'all', not '" + *value + "'");
     }
-    rgbio::LoadedMesh loaded = rgbio::read_obj_file(path, read_options(arguments));
-    warnings.insert(warnings.end(), loaded.warnings.begin(), loaded.warnings.end());
-    // A saved mesh is moved out rather than copied (it can be large). The layout is classified by the
-    // final base mesh's tags, so it follows the crease options.
-    rgb::Mesh mesh = with_sharp_options(arguments, loaded.adaptive ? std::move(*loaded.adaptive) : rgbio::build_mesh(loaded));
-    auto uvs = rgbio::uv_layout(rgbio::base_uv_channel(loaded, mesh, warnings), mesh, interpolation);
+    rgbio::MeshWithUvs loaded = rgbio::load_mesh_with_uvs(path, warnings, read_options(arguments));
+    // The layout is classified by the final base mesh's tags, so it follows the crease options.
+    rgb::Mesh mesh = with_sharp_options(arguments, std::move(loaded.mesh));
+    auto uvs = rgbio::uv_layout(loaded.uvs, mesh, interpolation);
     return {std::move(mesh), std::move(uvs)};
 }
 

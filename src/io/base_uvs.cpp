@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "io/mesh_file.h"
+#include "io/obj_reader.h"
 #include "rgb/face_location.h"
 
 namespace rgbio {
@@ -53,6 +55,14 @@ std::optional<rgb::UvChannel> base_uv_channel(const LoadedMesh& loaded, const rg
     warnings.push_back("texture coordinates dropped: the file is a refined mesh whose rgbsub state has no base-uvs "
                        "section, so its UVs cannot be put back on the base mesh");
     return std::nullopt;
+}
+
+MeshWithUvs load_mesh_with_uvs(const std::string& path, std::vector<std::string>& warnings, const ReadOptions& options) {
+    LoadedMesh loaded = read_obj_file(path, options);
+    warnings.insert(warnings.end(), loaded.warnings.begin(), loaded.warnings.end());
+    rgb::Mesh mesh = loaded.adaptive ? std::move(*loaded.adaptive) : build_mesh(loaded);
+    std::optional<rgb::UvChannel> uvs = base_uv_channel(loaded, mesh, warnings);
+    return {std::move(mesh), std::move(uvs)};
 }
 
 std::shared_ptr<const rgb::UvLayout> uv_layout(const std::optional<rgb::UvChannel>& channel, const rgb::Mesh& mesh,

@@ -19,6 +19,14 @@ namespace rgbio {
 // saved mesh whose state has no base-uvs section (written by another program or an older rgbsub).
 std::optional<rgb::UvChannel> base_uv_channel(const LoadedMesh& loaded, const rgb::Mesh& mesh, std::vector<std::string>& warnings);
 
+// A mesh file's mesh and its base UV channel (read_obj_file, build_mesh, base_uv_channel); a saved
+// mesh is moved out rather than copied (it can be large). Warnings are appended.
+struct MeshWithUvs {
+    rgb::Mesh mesh;
+    std::optional<rgb::UvChannel> uvs;
+};
+MeshWithUvs load_mesh_with_uvs(const std::string& path, std::vector<std::string>& warnings, const ReadOptions& options = {});
+
 // The channel's layout over the mesh's base mesh, with `interpolation` in place of the channel's
 // when given; nullptr without a channel.
 std::shared_ptr<const rgb::UvLayout> uv_layout(const std::optional<rgb::UvChannel>& channel, const rgb::Mesh& mesh,
