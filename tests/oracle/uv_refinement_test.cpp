@@ -233,3 +233,49 @@ INSTANTIATE_TEST_SUITE_P(UvMeshes, UvRefinement, testing::ValuesIn(cases_and_opt
 
 }  // namespace
 }  // namespace osdoracle
+
+namespace osdoracle {
+namespace {
+
+// Deep small regions where seams meet, end, cross a semi-sharp row or an equator crease: every corner
+// down to level 6 equals Far's, under none and corners (the options with smooth seam curves).
+TEST(UvRefinementDeep, SmallRegionsOnSeamsEqualFarToLevelSix) {
+    constexpr int deep = 6;
+    double worst = 0.0;
+    for (const UvCase& c : uv_cases()) {
+        if (c.name != "seam_ending_inside" && c.name != "three_seams_meeting" && c.name != "seam_crossing_semi_sharp_row" &&
+            c.name != "equator_seam_on_crease")
+            continue;
+        for (UvInterpolation option : {UvInterpolation::none, UvInterpolation::corners_only}) {
+            FarInput in = c.input;
+            in.uv->interpolation = option;
+            const FarByIdentity far(in, deep);
+            const FarUvByIdentity far_uv(far);
+            const auto base = tagged_base(in);
+            const rgb::UvLayout layout(*base, uv_channel_of(in));
+            rgb::UvEvaluator uvs(*base, layout);
+            rgb::Mesh mesh(base);
+            rgbtest::IdentityTracker ids(mesh, far.oracle());
+            // Around the vertices where seams meet or end (grid (2, 1) and (2, 2), the bipyramid's equator).
+            for (int v : {7, 12, 0}) {
+                rgb::set_level(mesh, deep, rgb::Sphere{in.positions[static_cast<std::size_t>(v)], 0.15});
+                for (rgb::FaceId f : mesh.faces())
+                    for (int k = 0; k < 3; ++k) {
+                        const rgb::VertexId x = mesh.face_vertices(f)[static_cast<std::size_t>(k)];
+                        const glm::dvec2* expected = far_uv.uv(rgb::display_level(mesh, x), ids.identity(x), rgb::base_face_of(mesh, f));
+                        ASSERT_NE(expected, nullptr) << c.name;
+                        const double error = glm::distance(rgb::displayed_uv(mesh, uvs, f, k), *expected);
+                        worst = std::max(worst, error);
+                        ASSERT_LE(error, far_uv.tolerance()) << c.name << " around vertex " << v;
+                    }
+            }
+            int finest = 0;
+            for (rgb::FaceId f : mesh.faces()) finest = std::max(finest, mesh.level(f));
+            EXPECT_EQ(finest, deep) << c.name;
+        }
+    }
+    std::printf("[ far ] largest UV distance to Far at levels up to 6: %.3g\n", worst);
+}
+
+}  // namespace
+}  // namespace osdoracle
