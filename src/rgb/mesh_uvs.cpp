@@ -1,5 +1,8 @@
 #include "rgb/mesh_uvs.h"
 
+#include <algorithm>
+#include <unordered_map>
+
 #include "rgb/face_location.h"
 #include "rgb/loop_geometry.h"
 #include "rgb/mesh.h"
@@ -28,28 +31,41 @@ glm::dvec2 limit_uv(const Mesh& mesh, UvEvaluator& uvs, FaceId f, int corner) {
 }
 
 MeshUvs mesh_uvs(const Mesh& mesh, UvEvaluator& uvs, bool limit) {
+    constexpr std::uint32_t kNone = 0xffffffffu;
     MeshUvs out;
-    // Per vertex slot, the values given to its corners so far: one for a vertex inside a base face,
-    // whose corners all share it (computed once), more only on seams.
-    std::vector<std::vector<std::uint32_t>> of_vertex(mesh.vertex_capacity());
+    // About one value per vertex, and as many for the coarser vertices their formulas read.
+    uvs.reserve(2 * mesh.num_vertices());
+    // Per vertex slot, the first value given to its corners: the only one for a vertex inside a base
+    // face (computed once); a vertex on a seam has more, kept apart.
+    std::vector<std::uint32_t> first(mesh.vertex_capacity(), kNone);
+    std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> more;
     out.corners.assign(mesh.face_capacity(), {0, 0, 0});
     for (FaceId f : mesh.faces()) {
         for (int c = 0; c < 3; ++c) {
             const VertexId v = mesh.face_vertices(f)[static_cast<std::size_t>(c)];
-            std::vector<std::uint32_t>& known = of_vertex[v.idx];
-            if (!known.empty() && !on_base_edge_or_vertex(mesh.address(v))) {
-                out.corners[f.idx][static_cast<std::size_t>(c)] = known.front();
+            std::uint32_t& id = out.corners[f.idx][static_cast<std::size_t>(c)];
+            const bool single = !on_base_edge_or_vertex(mesh.address(v));
+            if (first[v.idx] != kNone && single) {
+                id = first[v.idx];
                 continue;
             }
             const glm::dvec2 uv = limit ? limit_uv(mesh, uvs, f, c) : displayed_uv(mesh, uvs, f, c);
-            auto id = static_cast<std::uint32_t>(out.values.size());
-            for (std::uint32_t k : known)
-                if (out.values[k] == uv) id = k;
-            if (id == out.values.size()) {
-                out.values.push_back(uv);
-                known.push_back(id);
+            id = static_cast<std::uint32_t>(out.values.size());
+            if (first[v.idx] == kNone) {
+                first[v.idx] = id;
+            } else if (out.values[first[v.idx]] == uv) {
+                id = first[v.idx];
+                continue;
+            } else {
+                std::vector<std::uint32_t>& others = more[v.idx];
+                const auto known = std::find_if(others.begin(), others.end(), [&](std::uint32_t k) { return out.values[k] == uv; });
+                if (known != others.end()) {
+                    id = *known;
+                    continue;
+                }
+                others.push_back(id);
             }
-            out.corners[f.idx][static_cast<std::size_t>(c)] = id;
+            out.values.push_back(uv);
         }
     }
     return out;

@@ -34,6 +34,8 @@ public:
     // uv^inf: the limit of the value's last regime, with exact weights (Far's LimitFaceVarying uses
     // float weights at UV creases, docs/loop-face-varying.md §5).
     glm::dvec2 limit_uv(const SurfacePoint& p);
+    // Room for about this many values, so that evaluating a whole mesh does not rehash as it goes.
+    void reserve(std::size_t values) { values_.reserve(values); }
     std::size_t cached_values() const { return values_.size() + regime_start_.size() + regime_limit_.size(); }
 
 private:
