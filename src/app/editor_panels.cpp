@@ -155,9 +155,9 @@ void files_panel(Editor& editor, PanelState& state) {
         int option = static_cast<int>(*uv);
         if (ImGui::Combo("UV interpolation", &option, "none\0corners\0boundaries\0all\0"))
             editor.document().set_uv_interpolation(static_cast<rgb::UvInterpolation>(option));
-        tooltip("How saved texture coordinates are subdivided (OpenSubdiv's FVAR_LINEAR_* options): none smooths them "
-                "but at seams' ends, corners keeps UV corners, boundaries keeps seams and borders on their input lines, "
-                "all is linear");
+        tooltip("How saved texture coordinates are subdivided (OpenSubdiv's FVAR_LINEAR_* options): none moves every "
+                "UV (seams become smooth curves), corners keeps UV corners in place, boundaries keeps seams and borders "
+                "on their input lines, all is linear");
     }
     if (!editor.recent_files().empty() && ImGui::BeginCombo("recent", "choose a recent file")) {
         for (const std::string& recent : editor.recent_files())

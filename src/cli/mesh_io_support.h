@@ -33,8 +33,9 @@ inline constexpr std::string_view kUvInterpolationOption = "--uv-interpolation";
 inline constexpr std::string_view kUvHelp =
     "  --uv-interpolation none|corners|boundaries|all\n"
     "                      how texture coordinates (vt) are subdivided, as OpenSubdiv's FVAR_LINEAR_*:\n"
-    "                      none smooths them but at seams' ends, corners also keeps UV corners in place,\n"
-    "                      boundaries keeps seams and borders on their input lines, all is linear\n"
+    "                      none moves every UV (seams become smooth curves), corners keeps UV corners\n"
+    "                      (one-triangle spans) in place, boundaries keeps seams and borders on their\n"
+    "                      input lines, all is linear over each input triangle\n"
     "                      (default: the file's, else corners)\n";
 
 // The input of a command that saves: the mesh with the crease options applied, and the layout of
