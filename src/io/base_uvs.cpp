@@ -1,6 +1,8 @@
 #include "io/base_uvs.h"
 
 #include <algorithm>
+#include <span>
+#include <unordered_map>
 
 #include "io/mesh_file.h"
 #include "io/obj_reader.h"
@@ -10,10 +12,27 @@ namespace rgbio {
 
 namespace {
 
-bool every_corner_has_one(const LoadedMesh& loaded) {
-    return std::none_of(loaded.triangle_texcoords.begin(), loaded.triangle_texcoords.end(), [](const auto& t) {
-        return std::find(t.begin(), t.end(), kNoIndex) != t.end();
+// Whether every triangle has vt at all of its corners or at none.
+bool whole_faces(const LoadedMesh& loaded) {
+    return std::all_of(loaded.triangle_texcoords.begin(), loaded.triangle_texcoords.end(), [](const auto& t) {
+        const auto missing = std::count(t.begin(), t.end(), kNoIndex);
+        return missing == 0 || missing == 3;
     });
+}
+
+// Faces without vt get placeholder values: (0, 0), one per vertex, so that the edges between them
+// and textured faces are seams and the textured side's UVs follow only their own.
+void add_placeholders(rgb::UvChannel& uvs, std::span<const rgb::Triangle> triangles) {
+    std::unordered_map<std::uint32_t, std::uint32_t> placeholder;
+    for (std::uint32_t f = 0; f < uvs.corners.size(); ++f) {
+        if (uvs.corners[f][0] != kNoIndex) continue;
+        uvs.faces_without_uvs.push_back(f);
+        for (std::size_t c = 0; c < 3; ++c) {
+            const auto [it, added] = placeholder.emplace(triangles[f][c], static_cast<std::uint32_t>(uvs.values.size()));
+            if (added) uvs.values.push_back(glm::dvec2(0.0));
+            uvs.corners[f][c] = it->second;
+        }
+    }
 }
 
 // A saved mesh at level 0 shows its base faces in its own slot order (the f lines), each rotated
@@ -40,21 +59,25 @@ rgb::UvChannel from_base_faces_in_slots(const LoadedMesh& loaded, const rgb::Mes
 std::optional<rgb::UvChannel> base_uv_channel(const LoadedMesh& loaded, const rgb::Mesh& mesh, std::vector<std::string>& warnings) {
     if (loaded.base_uvs) return loaded.base_uvs;
     if (loaded.triangle_texcoords.empty()) return std::nullopt;
-    if (!every_corner_has_one(loaded)) {
-        warnings.push_back("texture coordinates dropped: some face corners have none (f v without /vt), and subdividing "
-                           "them needs one at every corner");
+    if (!whole_faces(loaded)) {
+        warnings.push_back("texture coordinates dropped: some faces have them at some corners only (f v/vt v v/vt), "
+                           "and subdividing them needs one at every corner of a textured face");
         return std::nullopt;
     }
+    std::optional<rgb::UvChannel> uvs;
     if (!loaded.adaptive) {
-        rgb::UvChannel uvs;
-        uvs.values = loaded.texcoords;
-        uvs.corners = loaded.triangle_texcoords;
-        return uvs;
+        uvs.emplace();
+        uvs->values = loaded.texcoords;
+        uvs->corners = loaded.triangle_texcoords;
+    } else if (mesh.num_vertices() == mesh.num_base_vertices()) {
+        uvs = from_base_faces_in_slots(loaded, mesh);
+    } else {
+        warnings.push_back("texture coordinates dropped: the file is a refined mesh whose rgbsub state has no base-uvs "
+                           "section, so its UVs cannot be put back on the base mesh");
+        return std::nullopt;
     }
-    if (mesh.num_vertices() == mesh.num_base_vertices()) return from_base_faces_in_slots(loaded, mesh);
-    warnings.push_back("texture coordinates dropped: the file is a refined mesh whose rgbsub state has no base-uvs "
-                       "section, so its UVs cannot be put back on the base mesh");
-    return std::nullopt;
+    add_placeholders(*uvs, mesh.base().faces());
+    return uvs;
 }
 
 MeshWithUvs load_mesh_with_uvs(const std::string& path, std::vector<std::string>& warnings, const ReadOptions& options) {

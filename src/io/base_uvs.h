@@ -14,9 +14,10 @@
 
 namespace rgbio {
 
-// `mesh` is build_mesh(loaded). Without texture coordinates, nothing. Appends a warning, and gives
-// nothing, where the file's UVs cannot be put on the base mesh: a corner without vt, or a refined
-// saved mesh whose state has no base-uvs section (written by another program or an older rgbsub).
+// `mesh` is build_mesh(loaded). Without texture coordinates, nothing. Faces without vt are kept as
+// UvChannel::faces_without_uvs. Appends a warning, and gives nothing, where the file's UVs cannot be
+// put on the base mesh: a face with vt at some corners only, or a refined saved mesh whose state has
+// no base-uvs section (written by another program or an older rgbsub).
 std::optional<rgb::UvChannel> base_uv_channel(const LoadedMesh& loaded, const rgb::Mesh& mesh, std::vector<std::string>& warnings);
 
 // A mesh file's mesh and its base UV channel (read_obj_file, build_mesh, base_uv_channel); a saved

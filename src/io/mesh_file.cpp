@@ -115,8 +115,9 @@ void write_obj(const rgb::Mesh& mesh, const SaveOptions& options, Output& output
         for (std::size_t c = 0; c < 3; ++c) {
             const std::string index = std::to_string(std::size_t(t[c]) + 1);
             out += ' ' + index;
-            if (options.uvs) out += '/' + std::to_string(std::size_t(uvs.corners[f.idx][c]) + 1);
-            if (options.normals) out += (options.uvs ? "/" : "//") + index;
+            const bool uv = options.uvs && uvs.corners[f.idx][c] != rgb::MeshUvs::kNone;
+            if (uv) out += '/' + std::to_string(std::size_t(uvs.corners[f.idx][c]) + 1);
+            if (options.normals) out += (uv ? "/" : "//") + index;
         }
         out += '\n';
         output.flush_if_full();

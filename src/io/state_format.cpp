@@ -117,6 +117,12 @@ void append_uv_section(const rgb::UvChannel& uvs, std::string& out, const std::f
         out += '\n';
         flush_if_full();
     }
+    for (std::size_t i = 0; i < uvs.faces_without_uvs.size(); i += 3 * kPerLine) {
+        out += "#rgb uv-untextured";
+        for (std::size_t k = i; k < std::min(uvs.faces_without_uvs.size(), i + 3 * kPerLine); ++k) append_number(out, uvs.faces_without_uvs[k]);
+        out += '\n';
+        flush_if_full();
+    }
     for (std::size_t i = 0; i < uvs.corners.size(); i += kPerLine) {
         out += "#rgb uv-faces";
         for (std::size_t k = i; k < std::min(uvs.corners.size(), i + kPerLine); ++k)
@@ -146,6 +152,13 @@ rgb::UvChannel parse_uv_section(std::span<const ObjStateLine> records, std::size
                 uvs.values.push_back({u, r.number<double>()});
             }
             if (uvs.values.size() > values) r.fail("more UVs than the section announces");
+        } else if (kind == "uv-untextured") {
+            while (!r.at_end()) {
+                const auto f = r.number<std::uint32_t>();
+                if (f >= base_faces) r.fail("untextured face " + std::to_string(f) + " of " + std::to_string(base_faces));
+                if (!uvs.faces_without_uvs.empty() && f <= uvs.faces_without_uvs.back()) r.fail("untextured faces out of order");
+                uvs.faces_without_uvs.push_back(f);
+            }
         } else {
             while (!r.at_end()) {
                 std::array<std::uint32_t, 3> t;
@@ -334,7 +347,7 @@ std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const
                 p.a[0] = static_cast<std::uint32_t>(total - p.a[1] - p.a[2]);
                 addresses.push_back(p);
             }
-        } else if (kind == "uv-interpolation" || kind == "uv" || kind == "uv-faces") {
+        } else if (kind == "uv-interpolation" || kind == "uv" || kind == "uv-faces" || kind == "uv-untextured") {
             if (section != Section::BaseUvs) r.fail("texture coordinates outside their section");
             uv_records.push_back(line);
         } else if (version == kTaggedStateFormatVersion && is_state_tag_record(kind)) {

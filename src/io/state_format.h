@@ -26,6 +26,7 @@
 //                                        #rgb uv-interpolation none|corners|boundaries|all
 //                                        #rgb uv U V [U V ...]       the N values in order
 //                                        #rgb uv-faces A B C [...]   per base face in order, its corners' values
+//                                        #rgb uv-untextured F [...]  base faces the input gave no UVs (sorted)
 //   #rgb end
 // The -as- records keep a lightly refined file from repeating its base mesh (a base vertex shown at
 // level 0 and an untouched base face are in the body already): the state stays a small fraction of

@@ -31,7 +31,8 @@ glm::dvec2 limit_uv(const Mesh& mesh, UvEvaluator& uvs, FaceId f, int corner) {
 }
 
 MeshUvs mesh_uvs(const Mesh& mesh, UvEvaluator& uvs, bool limit) {
-    constexpr std::uint32_t kNone = 0xffffffffu;
+    constexpr std::uint32_t kNone = MeshUvs::kNone;
+    const std::vector<std::uint32_t>& untextured = uvs.layout().channel().faces_without_uvs;
     MeshUvs out;
     // About one value per vertex, and as many for the coarser vertices their formulas read.
     uvs.reserve(2 * mesh.num_vertices());
@@ -39,8 +40,9 @@ MeshUvs mesh_uvs(const Mesh& mesh, UvEvaluator& uvs, bool limit) {
     // face (computed once); a vertex on a seam has more, kept apart.
     std::vector<std::uint32_t> first(mesh.vertex_capacity(), kNone);
     std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> more;
-    out.corners.assign(mesh.face_capacity(), {0, 0, 0});
+    out.corners.assign(mesh.face_capacity(), {kNone, kNone, kNone});
     for (FaceId f : mesh.faces()) {
+        if (!untextured.empty() && std::binary_search(untextured.begin(), untextured.end(), base_face_of(mesh, f))) continue;
         for (int c = 0; c < 3; ++c) {
             const VertexId v = mesh.face_vertices(f)[static_cast<std::size_t>(c)];
             std::uint32_t& id = out.corners[f.idx][static_cast<std::size_t>(c)];

@@ -19,8 +19,10 @@ glm::dvec2 displayed_uv(const Mesh& mesh, UvEvaluator& uvs, FaceId f, int corner
 glm::dvec2 limit_uv(const Mesh& mesh, UvEvaluator& uvs, FaceId f, int corner);
 
 // The UVs of a mesh as face-varying data: distinct values, and per face slot (dead slots included)
-// the value of each corner. Corners of one vertex share a value where their UVs are the same bits.
+// the value of each corner, or kNone for the faces of a base face without UVs
+// (UvChannel::faces_without_uvs). Corners of one vertex share a value where their UVs are the same bits.
 struct MeshUvs {
+    static constexpr std::uint32_t kNone = 0xffffffffu;
     std::vector<glm::dvec2> values;
     std::vector<std::array<std::uint32_t, 3>> corners;
 };

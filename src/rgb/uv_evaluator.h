@@ -36,6 +36,7 @@ public:
     glm::dvec2 limit_uv(const SurfacePoint& p);
     // Room for about this many values, so that evaluating a whole mesh does not rehash as it goes.
     void reserve(std::size_t values) { values_.reserve(values); }
+    const UvLayout& layout() const { return layout_; }
     std::size_t cached_values() const { return values_.size() + regime_start_.size() + regime_limit_.size(); }
 
 private:

@@ -29,6 +29,9 @@ struct UvChannel {
     std::vector<glm::dvec2> values;
     std::vector<std::array<std::uint32_t, 3>> corners;  // per base face, its corners' value indices
     UvInterpolation interpolation = UvInterpolation::Corners;
+    // Base faces the input gave no texture coordinates (sorted): their corners name placeholder
+    // values, which seams keep apart from the others' UVs; savers write these faces without UVs.
+    std::vector<std::uint32_t> faces_without_uvs;
 
     friend bool operator==(const UvChannel&, const UvChannel&) = default;
 };

@@ -72,6 +72,7 @@ testing::AssertionResult shows_the_input_uvs(const TexturedMesh& m, const Loaded
     for (rgb::FaceId f : m.mesh.faces()) {
         const std::uint32_t g = rgb::base_face_of(m.mesh, f);
         const rgb::Triangle& t = input.triangles[g];
+        if (input.triangle_texcoords[g][0] == kNoIndex) continue;  // a face the input gave no UVs
         for (int c = 0; c < 3; ++c) {
             const std::uint32_t v = m.mesh.face_vertices(f)[static_cast<std::size_t>(c)].idx;
             const auto k = static_cast<std::size_t>(std::find(t.begin(), t.end(), v) - t.begin());
@@ -116,12 +117,11 @@ TEST(UvRoundTrip, RefinedSaveResumesAndLevelZeroGivesBackTheInputUvsBitForBit) {
     EXPECT_TRUE(shows_the_input_uvs(resumed, read_obj_text(input, "test.obj")));
 }
 
-// Issue 12's textured models from Debian's assimp-testmodels (regr01 has corners without vt, so it
-// loads without UVs: see CornersWithoutVtDropTheUvsWithAWarning).
+// Issue 12's textured models from Debian's assimp-testmodels (regr01 has faces without vt).
 TEST(UvRoundTrip, TheAssimpTexturedModelsComeBackFromRefinementWithTheirUvs) {
     const std::filesystem::path corpus = "/usr/share/assimp/models/OBJ";
     ASSERT_TRUE(std::filesystem::is_directory(corpus)) << corpus << " is missing: install the Debian package assimp-testmodels";
-    for (const char* name : {"spider.obj", "WusonOBJ.obj"}) {
+    for (const char* name : {"spider.obj", "WusonOBJ.obj", "regr01.obj"}) {
         const LoadedMesh input = read_obj_file((corpus / name).string());
         rgb::Mesh mesh = build_mesh(input);
         std::vector<std::string> warnings;
@@ -169,11 +169,27 @@ TEST(UvRoundTrip, ABadBaseUvsSectionIsRefusedNamingTheLine) {
     EXPECT_NE(index.reason().find("UV index 24 of 24 UVs"), std::string::npos) << index.what();
 }
 
-TEST(UvRoundTrip, CornersWithoutVtDropTheUvsWithAWarning) {
-    const std::string text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\nf 2 4 3\n";
-    const LoadedMesh loaded = read_obj_text(text, "test.obj");
+TEST(UvRoundTrip, FacesWithoutVtStayWithoutAndAFaceWithSomeDropsTheUvs) {
+    const std::string square = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n";
+    TexturedMesh m = load(square + "f 2 4 3\n");
+    ASSERT_NE(m.uvs, nullptr);
+    EXPECT_EQ(m.uvs->channel().faces_without_uvs, std::vector<std::uint32_t>{1});
+    rgb::set_level(m.mesh, 2);
+    const LoadedMesh resumed = read_obj_text(saved(m), "test.obj");
+    ASSERT_TRUE(resumed.adaptive);
+    EXPECT_EQ(*resumed.base_uvs, m.uvs->channel());
+    // The faces inside base face 1 are written without vt, the others with.
+    const rgb::Mesh& mesh = *resumed.adaptive;
+    std::size_t line = 0;
+    for (rgb::FaceId f : mesh.faces()) {
+        const bool textured = rgb::base_face_of(mesh, f) == 0;
+        for (std::uint32_t t : resumed.triangle_texcoords[line]) EXPECT_EQ(t != kNoIndex, textured);
+        ++line;
+    }
+
+    const LoadedMesh partial = read_obj_text(square + "f 2/2 4 3/3\n", "test.obj");
     std::vector<std::string> warnings;
-    EXPECT_FALSE(base_uv_channel(loaded, build_mesh(loaded), warnings));
+    EXPECT_FALSE(base_uv_channel(partial, build_mesh(partial), warnings));
     EXPECT_TRUE(test::has_warning(warnings, "texture coordinates dropped"));
 }
 
