@@ -1,7 +1,7 @@
 #pragma once
 // OBJ files <-> rgb::Mesh: the entry points for the editor and the CLI.
 //
-// A saved file is a standard OBJ of the current adaptive mesh (v, optional vn, f) followed by the
+// A saved file is a standard OBJ of the current adaptive mesh (v, optional vt and vn, f) followed by the
 // exact adaptive state in "#rgb" comment lines (state_format.h). Loading such a file restores the
 // adaptive mesh slot for slot; a plain OBJ loads as a base mesh (all green, level 0).
 #include <cstddef>
