@@ -135,6 +135,26 @@ TEST(UvRoundTrip, TheAssimpTexturedModelsComeBackFromRefinementWithTheirUvs) {
     }
 }
 
+TEST(UvRoundTrip, LimitPositionsComeWithLimitUvs) {
+    TexturedMesh m = load(textured_grid());
+    rgb::set_level(m.mesh, 2, rgb::Sphere{{2, 1, 0}, 1.0});
+    SaveOptions options;
+    options.uvs = m.uvs;
+    options.positions = SavedPositions::Limit;
+    const LoadedMesh file = read_obj_text(format_obj(m.mesh, options), "test.obj");
+    rgb::UvEvaluator evaluator(m.mesh.base(), *m.uvs);
+    std::size_t line = 0, differing = 0;
+    for (rgb::FaceId f : m.mesh.faces()) {
+        for (int c = 0; c < 3; ++c) {
+            const glm::dvec2 written = file.texcoords[file.triangle_texcoords[line][static_cast<std::size_t>(c)]];
+            ASSERT_EQ(written, rgb::limit_uv(m.mesh, evaluator, f, c));
+            differing += written != rgb::displayed_uv(m.mesh, evaluator, f, c);
+        }
+        ++line;
+    }
+    EXPECT_GT(differing, 0u) << "the limit UVs are not the displayed ones";
+}
+
 TEST(UvRoundTrip, TheSavedInterpolationResumesAndAnExplicitOneWins) {
     TexturedMesh m = load(textured_grid(), rgb::UvInterpolation::Boundaries);
     rgb::set_level(m.mesh, 1);
