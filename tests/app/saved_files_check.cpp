@@ -1,8 +1,8 @@
-// Checks the files the Xvfb test saved from the real editor window (editor_window_test.sh):
-//   saved_files_check ORIGINAL PAINTED UNDONE REDONE X0 Y0 X1 Y1
-// Each saved file must load as a valid adaptive state; painting must have added triangles near the
-// stroke from pixel (X0,Y0) to (X1,Y1) of the 1280x800 window; undo must restore the original
-// triangle count exactly, and redo the painted mesh bit for bit.
+// Checks the painted file the Xvfb test saved from the real editor window (editor_window_test.sh):
+//   saved_files_check ORIGINAL PAINTED X0 Y0 X1 Y1
+// It must load as a valid adaptive state, and painting must have added triangles near the stroke
+// from pixel (X0,Y0) to (X1,Y1) of the 1280x800 window. (The script compares the undone and redone
+// files with the opened and painted ones byte for byte.)
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -11,7 +11,6 @@
 #include "app/editor.h"
 #include "io/mesh_file.h"
 #include "rgb/invariants.h"
-#include "rgb/state.h"
 #include "stroke_support.h"
 
 namespace {
@@ -30,22 +29,11 @@ rgb::Mesh load_valid(const char* path) {
     return mesh;
 }
 
-bool same_state(const rgb::MeshState& a, const rgb::MeshState& b) {
-    if (a.vertices.size() != b.vertices.size() || a.faces.size() != b.faces.size()) return false;
-    for (std::size_t i = 0; i < a.faces.size(); ++i)
-        if (a.faces[i].alive != b.faces[i].alive || a.faces[i].v != b.faces[i].v || !(a.faces[i].type == b.faces[i].type))
-            return false;
-    for (std::size_t i = 0; i < a.vertices.size(); ++i)
-        if (a.vertices[i].alive != b.vertices[i].alive || a.vertices[i].insertion_position != b.vertices[i].insertion_position)
-            return false;
-    return a.free_faces == b.free_faces && a.free_vertices == b.free_vertices;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc != 9) {
-        std::fprintf(stderr, "usage: saved_files_check ORIGINAL PAINTED UNDONE REDONE X0 Y0 X1 Y1\n");
+    if (argc != 7) {
+        std::fprintf(stderr, "usage: saved_files_check ORIGINAL PAINTED X0 Y0 X1 Y1\n");
         return 2;
     }
     // The stroke's surface points, seen by an editor framing the original mesh like the window did.
@@ -54,7 +42,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "%s\n", editor.message().c_str());
         return 2;
     }
-    const glm::vec2 from(std::atof(argv[5]), std::atof(argv[6])), to(std::atof(argv[7]), std::atof(argv[8]));
+    const glm::vec2 from(std::atof(argv[3]), std::atof(argv[4])), to(std::atof(argv[5]), std::atof(argv[6]));
     std::vector<glm::dvec3> path;
     for (int i = 0; i <= 20; ++i) {
         editor.mouse_moved(from + (to - from) * (static_cast<float>(i) / 20.0f));
@@ -65,14 +53,8 @@ int main(int argc, char** argv) {
     const rgb::Mesh& original = editor.document().mesh();
 
     const rgb::Mesh painted = load_valid(argv[2]);
-    const rgb::Mesh undone = load_valid(argv[3]);
-    const rgb::Mesh redone = load_valid(argv[4]);
     const std::size_t before = app::test::faces_near(original, path, radius);
     const std::size_t after = app::test::faces_near(painted, path, radius);
     expect(after > before, "more triangles near the stroke (" + std::to_string(before) + " -> " + std::to_string(after) + ")");
-    expect(undone.num_faces() == original.num_faces(),
-           "undo restores the triangle count (" + std::to_string(undone.num_faces()) + " vs " +
-               std::to_string(original.num_faces()) + ")");
-    expect(same_state(rgb::capture_state(redone), rgb::capture_state(painted)), "redo restores the painted mesh");
     return failures == 0 ? 0 : 1;
 }
