@@ -1,5 +1,6 @@
 // Golden images: whole pictures a person has looked at, compared with a small per-pixel tolerance.
 // RGBSUB_UPDATE_GOLDEN=1 rewrites them (target render_golden_update); review them before committing.
+// Under CI (CI=true) the variable makes the test fail instead: CI must never bless its own pictures.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -7,6 +8,7 @@
 #include <functional>
 #include <iostream>
 #include <string>
+#include <string_view>
 
 #include "render/headless.h"
 #include "rgb/mesh.h"
@@ -71,6 +73,10 @@ TEST_P(Golden, MatchesTheReviewedImage) {
     const Image image = render::render_headless(mesh, c.options, {{256, 256}, 30.0f, 20.0f});
     const std::filesystem::path path = std::filesystem::path(RGBSUB_GOLDEN_DIR) / (c.name + ".png");
     if (std::getenv("RGBSUB_UPDATE_GOLDEN") != nullptr) {
+        const char* ci = std::getenv("CI");
+        ASSERT_FALSE(ci != nullptr && std::string_view(ci) == "true")
+            << "RGBSUB_UPDATE_GOLDEN is set under CI=true: golden images are only rewritten by a person, who "
+               "reviews them";
         render::write_png(image, path);
         std::cout << "wrote " << path << '\n';
         return;
