@@ -1,17 +1,10 @@
-// The brush's pieces on their own: falloff targets, mode inversion, stroke spacing, the undo
-// history's memory bound, and ray picking on a known triangle.
-#include <gtest/gtest.h>
+// The brush's pieces on their own: falloff targets, mode inversion and stroke spacing.
+#include <vector>
 
-#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
 
 #include "app/brush.h"
 #include "app/stroke_sampler.h"
-#include "app/surface_picking.h"
-#include "app/undo_history.h"
-#include "render/mesh_changes.h"
-#include "render/surface_geometry.h"
-#include "rgb/mesh.h"
-#include "rgb/refine.h"
 
 namespace app {
 namespace {
@@ -52,68 +45,6 @@ TEST(StrokeSampler, SpacesDabsEvenlyAcrossSamples) {
     ASSERT_EQ(dabs.size(), 4u);  // at 4, 8, 12, 16
     for (std::size_t i = 0; i < dabs.size(); ++i) EXPECT_FLOAT_EQ(dabs[i].x, 4.0f * static_cast<float>(i + 1));
     EXPECT_EQ(sampler.move_to({20.0f, 0.0f}, 4.0f).size(), 1u);  // the remainder carries over
-}
-
-rgb::Mesh tetrahedron() {
-    const std::vector<glm::dvec3> p{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-    const std::vector<rgb::Triangle> t{{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
-    return rgb::Mesh(p, t);
-}
-
-TEST(UndoHistory, ForgetsTheOldestStepsBeyondTheBound) {
-    rgb::Mesh mesh = tetrahedron();
-    UndoHistory history;
-    for (int level = 1; level <= 3; ++level) {
-        history.begin_edit(mesh, "level " + std::to_string(level));
-        rgb::refine_uniform(mesh, level);
-        history.end_edit(mesh, true);
-    }
-    ASSERT_EQ(history.undo_steps(), 3u);
-    const std::size_t newest = state_bytes(rgb::capture_state(rgb::restore_state(rgb::capture_state(mesh))));
-    history.set_byte_bound(history.bytes() - 1);
-    EXPECT_EQ(history.undo_steps(), 2u);
-    EXPECT_EQ(history.undo_label(), "level 3");
-    EXPECT_LE(history.bytes(), history.byte_bound());
-    EXPECT_GT(newest, 0u);
-}
-
-TEST(SurfacePicking, HitsTheFrontFaceAndSkipsBackFaces) {
-    rgb::Mesh mesh = tetrahedron();
-    render::SurfaceGeometry geometry;
-    geometry.rebuild(mesh);
-    // From far along +x+y+z, the slanted face {1,2,3} is the front one; its centroid is (1/3,1/3,1/3).
-    const glm::dvec3 centroid(1.0 / 3.0);
-    const Ray ray{glm::dvec3(3.0), glm::normalize(centroid - glm::dvec3(3.0))};
-    const std::optional<SurfaceHit> hit = pick_surface(geometry, ray);
-    ASSERT_TRUE(hit.has_value());
-    EXPECT_EQ(mesh.face_vertices(hit->face)[0].idx + mesh.face_vertices(hit->face)[1].idx +
-                  mesh.face_vertices(hit->face)[2].idx,
-              6u);  // vertices 1, 2, 3
-    EXPECT_NEAR(glm::distance(hit->point, centroid), 0.0, 1e-6);
-    // The same line from inside looking out meets only back faces.
-    const Ray inside{glm::dvec3(0.1), glm::normalize(glm::dvec3(1.0))};
-    EXPECT_FALSE(pick_surface(geometry, inside).has_value());
-}
-
-TEST(SurfacePicking, FootprintGrowsOnlyThroughFacesInTheSphere) {
-    rgb::Mesh mesh = tetrahedron();
-    rgb::refine_uniform(mesh, 3);
-    render::SurfaceGeometry geometry;
-    geometry.rebuild(mesh);
-    const Ray ray{glm::dvec3(3.0), glm::normalize(glm::dvec3(1.0 / 3.0) - glm::dvec3(3.0))};
-    const SurfaceHit hit = *pick_surface(geometry, ray);
-    const double radius = 0.1;
-    const std::vector<rgb::FaceId> footprint = faces_in_sphere(mesh, geometry, hit.face, hit.point, radius);
-    std::size_t expected = 0;
-    for (rgb::FaceId f : mesh.faces()) {
-        const auto v = geometry.vertices();
-        expected += distance_to_triangle(hit.point, glm::dvec3(v[3 * f.idx].position), glm::dvec3(v[3 * f.idx + 1].position),
-                                         glm::dvec3(v[3 * f.idx + 2].position)) <= radius;
-    }
-    // The sphere is small and within one flat face of the tetrahedron, so its faces are connected.
-    EXPECT_EQ(footprint.size(), expected);
-    EXPECT_GT(footprint.size(), 1u);
-    EXPECT_LT(footprint.size(), mesh.num_faces());
 }
 
 }  // namespace
