@@ -300,6 +300,10 @@ void Editor::request_quit() {
     else quit_ = true;
 }
 
+void Editor::files_dropped(std::span<const std::string> paths) {
+    if (!paths.empty()) request_open(paths.front());
+}
+
 void Editor::answer_pending(bool proceed) {
     const Pending question = std::exchange(pending_, Pending::None);
     if (!proceed) return;

@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -90,6 +91,8 @@ public:
     void request_open(const std::string& path);
     void request_save_as(const std::string& path);
     void request_quit();
+    // Files dropped on the window: the first is opened as by request_open (the editor holds one mesh).
+    void files_dropped(std::span<const std::string> paths);
     Pending pending() const { return pending_; }
     const std::string& pending_path() const { return pending_path_; }
     void answer_pending(bool proceed);

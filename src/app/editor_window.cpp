@@ -10,6 +10,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include "app/editor.h"
 #include "app/editor_view.h"
@@ -84,7 +86,8 @@ void install_callbacks(GLFWwindow* window) {
         if (const std::optional<Key> k = key_of(key)) editor_of(w).key_pressed(*k, modifiers_of(mods));
     });
     glfwSetDropCallback(window, [](GLFWwindow* w, int count, const char** paths) {
-        if (count > 0) editor_of(w).request_open(paths[0]);
+        const std::vector<std::string> dropped(paths, paths + count);
+        editor_of(w).files_dropped(dropped);
     });
     glfwSetWindowCloseCallback(window, [](GLFWwindow* w) {
         glfwSetWindowShouldClose(w, GLFW_FALSE);  // the editor decides, after asking
