@@ -6,12 +6,12 @@
 #include <fstream>
 #include <iterator>
 #include <numbers>
+#include <vector>
 
 #include <glm/geometric.hpp>
 #include <glm/vec4.hpp>
 
 #include "gl_test_support.h"
-#include "render/colour_map.h"
 #include "render/headless.h"
 #include "render/surface_geometry.h"
 #include "rgb/mesh.h"
@@ -138,25 +138,40 @@ TEST(Screenshot, SphereSilhouetteCoversItsProjectedArea) {
     EXPECT_LE(covered, std::numbers::pi * r_out * r_out + band);
 }
 
+// The heat map runs blue (level 0), green (the middle), red (the finest level); the legend stacks one
+// swatch per level in the bottom-left corner, finest on top. A column through the swatches, clear of
+// the framed sphere, must therefore cross exactly red, green, blue runs from top to bottom.
 TEST(Screenshot, LevelLegendShowsEachLevelsColour) {
     rgb::Mesh mesh = render_test::icosphere(1);
     rgb::set_level(mesh, rgb::Region::sphere({0.0, 0.0, 1.0}, 0.7), 2);
+    int max_level = 0;
+    for (rgb::FaceId f : mesh.faces()) max_level = std::max(max_level, mesh.level(f));
+    ASSERT_EQ(max_level, 2);
     RenderOptions options;
     options.colouring = Colouring::Level;
     const HeadlessView view{{240, 200}, 0.0f, 0.0f};
     const Image image = render::render_headless(mesh, options, view);
-    int max_level = 0;
-    for (rgb::FaceId f : mesh.faces()) max_level = std::max(max_level, mesh.level(f));
-    ASSERT_EQ(max_level, 2);
-    for (int level = 0; level <= max_level; ++level) {
-        // Swatch centres, as laid out in level_legend.cpp (12 px margin, 16 px swatches, 4 px gap).
-        const int y = view.size.y - 12 - (level + 1) * 20 + 4 + 8;
-        const glm::u8vec4 p = image.pixel(12 + 8, y);
-        const glm::vec3 want = render::level_colour(level, max_level) * 255.0f;
-        EXPECT_NEAR(p.r, want.r, 1.0) << "level " << level;
-        EXPECT_NEAR(p.g, want.g, 1.0) << "level " << level;
-        EXPECT_NEAR(p.b, want.b, 1.0) << "level " << level;
+
+    const int column = 20;  // inside the 12..28 swatch column, left of the sphere (which spans about 30..210)
+    std::vector<render_test::PixelClass> runs;
+    std::vector<int> run_lengths;
+    for (int y = 0; y < image.height; ++y) {
+        const render_test::PixelClass c = render_test::classify(image, column, y);
+        if (c == render_test::PixelClass::Background) continue;
+        if (runs.empty() || runs.back() != c || render_test::classify(image, column, y - 1) == render_test::PixelClass::Background) {
+            runs.push_back(c);
+            run_lengths.push_back(0);
+        }
+        ++run_lengths.back();
     }
+    EXPECT_EQ(runs, (std::vector<render_test::PixelClass>{render_test::PixelClass::Red, render_test::PixelClass::Green,
+                                                          render_test::PixelClass::Blue}));
+    for (int length : run_lengths) EXPECT_EQ(length, 16) << "one 16-pixel swatch per level";
+
+    // The same colours on the mesh: its coarsest faces blue, its finest red.
+    const render_test::PixelCounts counts = count_pixels(image);
+    EXPECT_GT(counts.blue, 16u * 16u + 500u);
+    EXPECT_GT(counts.red, 16u * 16u + 500u);
 }
 
 TEST(Screenshot, BrushCursorAndBaseOverlayAddOnlyWhatTheyDraw) {
