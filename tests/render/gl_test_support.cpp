@@ -28,4 +28,22 @@ PixelCounts count_pixels(const render::Image& image) {
     return counts;
 }
 
+std::vector<PixelClass> legend_column(const render::Image& image, int x, int min_run) {
+    constexpr int kMaxGap = 8;  // rows of the legend are 4 pixels apart
+    std::vector<PixelClass> runs;  // bottom to top
+    int run = 0, gap = 0;
+    for (int y = image.height - 1; y >= 0; --y) {
+        const PixelClass c = classify(image, x, y);
+        if (c == PixelClass::Background) {
+            if (run >= min_run) runs.push_back(classify(image, x, y + 1));
+            run = 0;
+            if (!runs.empty() && ++gap > kMaxGap) break;
+            continue;
+        }
+        gap = 0;
+        ++run;
+    }
+    return {runs.rbegin(), runs.rend()};
+}
+
 }  // namespace render_test

@@ -139,8 +139,8 @@ TEST(Screenshot, SphereSilhouetteCoversItsProjectedArea) {
 }
 
 // The heat map runs blue (level 0), green (the middle), red (the finest level); the legend stacks one
-// swatch per level in the bottom-left corner, finest on top. A column through the swatches, clear of
-// the framed sphere, must therefore cross exactly red, green, blue runs from top to bottom.
+// swatch per level in the bottom-left corner, finest on top. A column through the swatches must
+// therefore cross exactly red, green, blue swatches from top to bottom.
 TEST(Screenshot, LevelLegendShowsEachLevelsColour) {
     rgb::Mesh mesh = render_test::icosphere(1);
     rgb::set_level(mesh, rgb::Region::sphere({0.0, 0.0, 1.0}, 0.7), 2);
@@ -152,21 +152,10 @@ TEST(Screenshot, LevelLegendShowsEachLevelsColour) {
     const HeadlessView view{{240, 200}, 0.0f, 0.0f};
     const Image image = render::render_headless(mesh, options, view);
 
-    const int column = 20;  // inside the 12..28 swatch column, left of the sphere (which spans about 30..210)
-    std::vector<render_test::PixelClass> runs;
-    std::vector<int> run_lengths;
-    for (int y = 0; y < image.height; ++y) {
-        const render_test::PixelClass c = render_test::classify(image, column, y);
-        if (c == render_test::PixelClass::Background) continue;
-        if (runs.empty() || runs.back() != c || render_test::classify(image, column, y - 1) == render_test::PixelClass::Background) {
-            runs.push_back(c);
-            run_lengths.push_back(0);
-        }
-        ++run_lengths.back();
-    }
-    EXPECT_EQ(runs, (std::vector<render_test::PixelClass>{render_test::PixelClass::Red, render_test::PixelClass::Green,
-                                                          render_test::PixelClass::Blue}));
-    for (int length : run_lengths) EXPECT_EQ(length, 16) << "one 16-pixel swatch per level";
+    // Column 20 runs through the swatches (12 to 28 pixels from the left), left of the sphere.
+    EXPECT_EQ(render_test::legend_column(image, 20, 12),
+              (std::vector<render_test::PixelClass>{render_test::PixelClass::Red, render_test::PixelClass::Green,
+                                                    render_test::PixelClass::Blue}));
 
     // The same colours on the mesh: its coarsest faces blue, its finest red.
     const render_test::PixelCounts counts = count_pixels(image);
