@@ -17,9 +17,13 @@ build_and_test() {
   local dir="$1" ctest_args="$2"
   shift 2
   echo "=== $dir: $*"
+  local start=$SECONDS
   if cmake -S . -B "$dir" "$@" >/dev/null && cmake --build "$dir" -j"$jobs"; then
+    echo "=== $dir: built in $((SECONDS - start)) s"
+    start=$SECONDS
     # shellcheck disable=SC2086 # ctest_args holds several words
     (cd "$dir" && ctest --output-on-failure --no-tests=error -j2 $ctest_args) || failed=1
+    echo "=== $dir: tested in $((SECONDS - start)) s"
   else
     echo "=== $dir: build failed" >&2
     failed=1
