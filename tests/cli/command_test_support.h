@@ -23,16 +23,27 @@ struct CommandRun {
     std::string err;  // std::cerr
 };
 
+// Points a stream at a string buffer for its lifetime, restoring it even when the command throws.
+class StreamCapture {
+public:
+    explicit StreamCapture(std::ostream& stream) : stream_(stream), old_(stream.rdbuf(buffer_.rdbuf())) {}
+    ~StreamCapture() { stream_.rdbuf(old_); }
+    StreamCapture(const StreamCapture&) = delete;
+    StreamCapture& operator=(const StreamCapture&) = delete;
+    std::string text() const { return buffer_.str(); }
+
+private:
+    std::ostream& stream_;
+    std::ostringstream buffer_;
+    std::streambuf* old_;
+};
+
 inline CommandRun run_command(const std::vector<std::string>& args) {
-    std::ostringstream out, err;
-    std::streambuf* const old_out = std::cout.rdbuf(out.rdbuf());
-    std::streambuf* const old_err = std::cerr.rdbuf(err.rdbuf());
+    const StreamCapture out(std::cout), err(std::cerr);
     CommandRun run;
     run.exit_code = dispatch(args);
-    std::cout.rdbuf(old_out);
-    std::cerr.rdbuf(old_err);
-    run.out = out.str();
-    run.err = err.str();
+    run.out = out.text();
+    run.err = err.text();
     return run;
 }
 
