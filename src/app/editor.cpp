@@ -281,12 +281,27 @@ bool Editor::redo() {
 
 void Editor::start_flood_fill(int level) {
     if (refuse_if_busy("set all")) return;
+    level = std::clamp(level, 0, kMaxBrushLevel);
+    rgb::LevelRequest everywhere;
+    everywhere.level = level;  // a Set over the whole surface
+    try {
+        rgbio::check_request_size(document_.mesh(), everywhere, triangle_limit_);
+    } catch (const rgbio::TooLarge& refused) {
+        report("set all to level " + std::to_string(level) + " refused: " + refused.what(), true);
+        return;
+    }
     keep_recovery_copy(true);
-    queue(make_flood_fill(document_.mesh(), std::clamp(level, 0, kMaxBrushLevel)));
+    queue(make_flood_fill(document_.mesh(), level));
 }
 
 void Editor::start_auto_lod() {
     if (refuse_if_busy("start automatic LOD")) return;
+    try {
+        rgbio::check_budget_size(auto_lod_settings_.triangle_budget, triangle_limit_);
+    } catch (const rgbio::TooLarge& refused) {
+        report(std::string("automatic LOD refused: ") + refused.what(), true);
+        return;
+    }
     keep_recovery_copy(true);
     queue(std::make_unique<AutoLodJob>(document_.mesh(), auto_lod_settings_));
 }

@@ -34,6 +34,7 @@
 #include "app/surface_picking.h"
 #include "app/view_camera.h"
 #include "io/mesh_file.h"
+#include "io/triangle_limit.h"
 
 namespace app {
 
@@ -112,8 +113,12 @@ public:
     void reset_view();
     bool undo();
     bool redo();
+    // Both refuse (with a message naming the estimate) a result above the triangle limit.
     void start_flood_fill(int level);
     void start_auto_lod();
+    // The most triangles a whole-mesh action may make (default: sized to the machine's memory).
+    std::size_t triangle_limit() const { return triangle_limit_; }
+    void set_triangle_limit(std::size_t limit) { triangle_limit_ = limit; }
     // Esc: stops the work under way (what is done stays as one undoable step) and drops what waits.
     void cancel_job();
     // The work under way, if any: a stroke still being applied or a whole-mesh job.
@@ -214,6 +219,7 @@ private:
     glm::ivec2 viewport_;
     BrushSettings brush_;
     AutoLodSettings auto_lod_settings_;
+    std::size_t triangle_limit_ = rgbio::default_triangle_limit();
     rgbio::SaveOptions save_options_;
 
     glm::vec2 mouse_{0.0f};
