@@ -14,6 +14,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -151,6 +152,8 @@ public:
     // "Save and quit" in the quit question.
     void save_and_quit();
     const BackgroundTask* file_task() const { return file_task_.get(); }
+    // Files dropped on the window: the first is opened as by request_open (the editor holds one mesh).
+    void files_dropped(std::span<const std::string> paths);
     Pending pending() const { return pending_; }
     const std::string& pending_path() const { return pending_path_; }
     void answer_pending(bool proceed);

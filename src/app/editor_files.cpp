@@ -84,6 +84,10 @@ void Editor::request_open(const std::string& path) {
     report("opening " + path + " ...", false);
 }
 
+void Editor::files_dropped(std::span<const std::string> paths) {
+    if (!paths.empty()) request_open(paths.front());
+}
+
 void Editor::request_save() {
     if (document_.path().empty()) {
         report("the mesh has no file yet: use Save as", true);
