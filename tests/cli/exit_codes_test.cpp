@@ -90,6 +90,9 @@ TEST_F(ExitCodes, EveryCommandFollowsTheReadmeTable) {
         {{"refine", missing, "-o", obj, "--level", "2"}, "I/O or resource failure"},
         {{"refine", mesh, "-o", folder, "--level", "2"}, "I/O or resource failure"},
         {{"refine", mesh, "-o", obj, "--level", "2"}, "I/O or resource failure", tiny_disk},
+        {{"refine", mesh, "-o", obj, "--tolerance", "0.5%"}, "ok"},
+        {{"refine", mesh, "-o", obj, "--max-edge", "0"}, "usage error"},
+        {{"refine", mesh, "-o", obj, "--tolerance", "0.0001%", "--max-triangles", "100"}, "I/O or resource failure"},
 
         {{"apply", mesh, path("script.txt"), "-o", obj}, "ok"},
         {{"apply", mesh, path("script.txt"), "-o", obj, "-x"}, "usage error"},
