@@ -75,6 +75,10 @@ TEST_F(ExitCodes, EveryCommandFollowsTheReadmeTable) {
         {{"render", mesh, "-o", folder}, "I/O or resource failure"},
         {{"render", mesh, "-o", ""}, "I/O or resource failure"},
         {{"render", mesh, "-o", png, "--size", "64x48"}, "I/O or resource failure", tiny_disk},
+        {{"render", mesh, "-o", png, "--size", "64x48", "--screen-lod", "4", "--lod-view", "200,10"}, "ok"},
+        {{"render", mesh, "-o", png, "--screen-lod", "0"}, "usage error"},
+        {{"render", mesh, "-o", png, "--lod-view", "10,10"}, "usage error"},
+        {{"render", mesh, "-o", png, "--screen-lod", "1", "--max-triangles", "20"}, "I/O or resource failure"},
 
         {{"info", mesh}, "ok"},
         {{"info", "-x", mesh}, "usage error"},
