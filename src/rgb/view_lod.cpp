@@ -100,8 +100,12 @@ bool ViewLod::update(std::chrono::microseconds budget) {
             changed_in_pass_ = false;
         }
         const FaceId f(cursor_++);
-        if (mesh_.is_live(f) && visit(f)) changed_in_pass_ = true;
-        if (visited % 64 == 63 && std::chrono::steady_clock::now() >= deadline) return false;
+        const bool changed = mesh_.is_live(f) && visit(f);
+        changed_in_pass_ = changed_in_pass_ || changed;
+        // A change can cost tens of microseconds (a split with its dependencies), a visit without one
+        // well under one: the clock is read after every change and every 64 visits, so that a slice
+        // ends close to its budget.
+        if ((changed || visited % 64 == 63) && std::chrono::steady_clock::now() >= deadline) return false;
     }
 }
 
