@@ -40,7 +40,7 @@ public:
 
     bool converged() const { return lod_.converged(); }
     const rgb::ViewLodStats& stats() const { return lod_.stats(); }
-    // Takes effect at the next step (the pass over the mesh starts over).
+    // Takes effect at the next step.
     void set_settings(const rgb::ViewLodSettings& settings) { lod_.set_settings(settings); }
 
 private:

@@ -10,9 +10,10 @@ ViewLod::ViewLod(Mesh& mesh, const ViewLodSettings& settings, const ScreenView& 
     set_view(view);
 }
 
+// The sweep goes on from where it is: restarting it at the first face on every new camera would, while
+// the camera keeps moving, visit the same faces every frame and never the rest.
 void ViewLod::restart() {
-    cursor_ = 0;
-    changed_in_pass_ = false;
+    unchanged_visits_ = 0;
     converged_ = false;
 }
 
@@ -90,22 +91,19 @@ bool ViewLod::visit(FaceId f) {
 bool ViewLod::update(std::chrono::microseconds budget) {
     if (converged_) return true;
     const auto deadline = std::chrono::steady_clock::now() + budget;
-    for (std::size_t visited = 0;; ++visited) {
-        if (cursor_ >= mesh_.face_capacity()) {
-            if (!changed_in_pass_) {
-                converged_ = true;
-                return true;
-            }
-            cursor_ = 0;
-            changed_in_pass_ = false;
+    for (;;) {
+        // Nothing changed for a whole sweep: with the mesh unchanged, so is every face's verdict.
+        if (unchanged_visits_ >= mesh_.face_capacity()) {
+            converged_ = true;
+            return true;
         }
+        if (cursor_ >= mesh_.face_capacity()) cursor_ = 0;
         const FaceId f(cursor_++);
         const bool changed = mesh_.is_live(f) && visit(f);
-        changed_in_pass_ = changed_in_pass_ || changed;
-        // A change can cost tens of microseconds (a split with its dependencies), a visit without one
-        // well under one: the clock is read after every change and every 64 visits, so that a slice
-        // ends close to its budget.
-        if ((changed || visited % 64 == 63) && std::chrono::steady_clock::now() >= deadline) return false;
+        unchanged_visits_ = changed ? 0 : unchanged_visits_ + 1;
+        // A visit can cost tens of microseconds (a split with its dependencies, or the ring walks and
+        // control points of a fine face); the clock costs far less, so it is read after each.
+        if (std::chrono::steady_clock::now() >= deadline) return false;
     }
 }
 

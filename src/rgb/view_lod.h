@@ -33,12 +33,13 @@ class ViewLod {
 public:
     ViewLod(Mesh& mesh, const ViewLodSettings& settings, const ScreenView& view);
 
-    // The next updates judge by this camera and these settings; the pass over the mesh starts over.
+    // The next updates judge by this camera and these settings: convergence is judged anew (a whole
+    // sweep without change), the sweep going on from where it was.
     void set_view(const ScreenView& view);
     void set_settings(const ViewLodSettings& settings);
     // Works until converged or until `budget` has passed; returns converged().
     bool update(std::chrono::microseconds budget);
-    // A whole pass over the mesh changed nothing for the current view.
+    // A whole sweep over the mesh changed nothing for the current view and settings.
     bool converged() const { return converged_; }
     const ViewLodStats& stats() const { return stats_; }
 
@@ -54,8 +55,9 @@ private:
     Mesh& mesh_;
     ViewLodSettings settings_;
     std::unique_ptr<ScreenCriterion> criterion_;
-    std::uint32_t cursor_ = 0;
-    bool changed_in_pass_ = false, converged_ = false;
+    std::uint32_t cursor_ = 0;            // the next face slot of the sweep, wrapping around
+    std::size_t unchanged_visits_ = 0;    // face slots visited since the last change or new camera
+    bool converged_ = false;
     ViewLodStats stats_;
 };
 

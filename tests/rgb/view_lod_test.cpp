@@ -138,6 +138,26 @@ TEST(ViewLod, FollowsAnOrbit) {
     EXPECT_GT(lod.stats().removals, 0u);
 }
 
+// While the camera moves the view changes before every slice; the sweep must still reach every face
+// (not start over at the first one each time). One face slot per call (a zero budget), the camera
+// jittering between two positions a hair apart, until a long run of calls changes nothing.
+TEST(ViewLod, ASweepGoesOnAcrossCameraChanges) {
+    rgb::Mesh mesh = make_rgb_mesh(icosahedron());
+    const rgb::ScreenView views[2] = {camera({0.0, 0.3, 2.2}), camera({0.0, 0.3, 2.2 + 1e-12})};
+    rgb::ViewLod lod(mesh, {kPixels, 1'000'000, rgb::kMaxLevel}, views[0]);
+    std::size_t calls = 0, calls_since_change = 0, changes = 0;
+    for (; calls < 2'000'000 && calls_since_change <= 2 * mesh.face_capacity(); ++calls) {
+        lod.set_view(views[calls % 2]);
+        lod.update(std::chrono::microseconds(0));
+        const std::size_t now = lod.stats().splits + lod.stats().removals;
+        calls_since_change = now == changes ? calls_since_change + 1 : 0;
+        changes = now;
+    }
+    EXPECT_LT(calls, 2'000'000u);
+    EXPECT_GT(mesh.num_faces(), 20u * 16u);
+    expect_settled(mesh, lod);
+}
+
 TEST(ScreenDetail, TheRequestIgnoresStorageAndHistory) {
     const TestMesh base = bipyramid(7);
     const rgb::ScreenView view = camera({1.0, 0.8, 2.0});
