@@ -47,7 +47,7 @@ double world_amount(const rgb::Mesh& mesh, const Amount& amount) {
     return amount.value / 100.0 * glm::distance(lo, hi);
 }
 
-DetailOutcome apply_detail_edit(rgb::Mesh& mesh, const DetailEdit& edit, std::size_t max_triangles) {
+rgb::DetailRequest detail_request(const rgb::Mesh& mesh, const DetailEdit& edit, std::size_t max_triangles) {
     rgb::DetailRequest request;
     request.kind = edit.kind;
     request.threshold = world_amount(mesh, edit.amount);
@@ -55,8 +55,12 @@ DetailOutcome apply_detail_edit(rgb::Mesh& mesh, const DetailEdit& edit, std::si
                                                                : rgb::limit_error_value(mesh.shared_base(), request.threshold);
     request.sphere = edit.sphere;
     request.max_triangles = max_triangles;
+    return request;
+}
+
+DetailOutcome apply_detail_edit(rgb::Mesh& mesh, const DetailEdit& edit, std::size_t max_triangles) {
     DetailOutcome outcome;
-    outcome.report = rgb::apply_detail_request(mesh, request);
+    outcome.report = rgb::apply_detail_request(mesh, detail_request(mesh, edit, max_triangles));
     if (outcome.report.budget_bound)
         throw TooLarge("the request needs more than " + std::to_string(max_triangles) +
                        " triangles (set by this machine's memory; --max-triangles changes it)");

@@ -36,6 +36,9 @@ struct DetailEdit {
 // The edit's amount in world units: a percentage of the diagonal of the base mesh's bounding box.
 double world_amount(const rgb::Mesh& mesh, const Amount& amount);
 
+// The core's request for the edit on this mesh.
+rgb::DetailRequest detail_request(const rgb::Mesh& mesh, const DetailEdit& edit, std::size_t max_triangles);
+
 struct DetailOutcome {
     rgb::LodReport report;
     // For a tolerance over the whole surface: the displayed surface's largest error at the samples

@@ -120,16 +120,21 @@ SplitValue on_mesh(EdgeValue value) {
     return [value = std::move(value)](const Mesh& mesh, VertexId a, VertexId b, int) { return value(mesh.address(a), mesh.address(b)); };
 }
 
+LodSettings whole_surface_settings(const DetailRequest& r) {
+    check(r);
+    LodSettings settings;
+    settings.value = on_mesh(r.value);
+    settings.threshold = r.threshold;
+    settings.max_triangles = r.max_triangles;
+    settings.max_level = r.max_level;
+    settings.split_past_dependencies = true;
+    return settings;
+}
+
 LodReport apply_detail_request(Mesh& mesh, const DetailRequest& r) {
     check(r);
     if (r.kind == RequestKind::Set && !r.sphere) {
-        LodSettings settings;
-        settings.value = on_mesh(r.value);
-        settings.threshold = r.threshold;
-        settings.max_triangles = r.max_triangles;
-        settings.max_level = r.max_level;
-        settings.split_past_dependencies = true;
-        LodDriver driver(mesh, settings);
+        LodDriver driver(mesh, whole_surface_settings(r));
         driver.run();
         return driver.report();
     }

@@ -56,6 +56,10 @@ struct DetailRequest {
 // a band of the driver's order, in a ball where the budget ran out.
 LodReport apply_detail_request(Mesh& mesh, const DetailRequest& request);
 
+// The LOD driver's settings that carry out a Set over the whole surface (for callers that run the
+// driver a slice at a time, like the editor). Throws as apply_detail_request.
+LodSettings whole_surface_settings(const DetailRequest& request);
+
 // Whether the segment (p, q) comes within the ball (independent of the order of p and q).
 bool segment_meets_sphere(glm::dvec3 p, glm::dvec3 q, const Sphere& sphere);
 
