@@ -20,6 +20,7 @@ uniform vec3 u_level_colours[kMaxLevelColours];
 uniform bool u_wire;
 uniform float u_wire_width;  // pixels
 uniform vec3 u_wire_colour;
+uniform vec3 u_back_colour;
 uniform bool u_brush;
 uniform vec3 u_brush_centre;
 uniform float u_brush_radius;
@@ -44,12 +45,18 @@ void main() {
     vec3 to_eye = normalize(u_eye - v_position);
     // Headlight, lit from both sides so open meshes show their back faces.
     float diffuse = abs(dot(normalize(normal), to_eye));
-    vec3 colour = base_colour() * (0.3 + 0.7 * diffuse);
+    // Back faces (inside an open mesh, seen through a hole) in a colour of their own, so that holes
+    // look open.
+    vec3 colour = (gl_FrontFacing ? base_colour() : u_back_colour) * (0.3 + 0.7 * diffuse);
 
     if (u_wire) {
-        vec3 edge_pixels = v_barycentric / max(fwidth(v_barycentric), vec3(1e-6));
+        vec3 per_pixel = max(fwidth(v_barycentric), vec3(1e-6));
+        vec3 edge_pixels = v_barycentric / per_pixel;
         float d = min(edge_pixels.x, min(edge_pixels.y, edge_pixels.z));
-        colour = mix(colour, u_wire_colour, line_coverage(d, u_wire_width));
+        // Lines fade out where triangles are only a few pixels across, so that a dense wireframe
+        // stays a shaded surface instead of turning solid.
+        float pixels_across = 1.0 / max(per_pixel.x, max(per_pixel.y, per_pixel.z));
+        colour = mix(colour, u_wire_colour, smoothstep(3.0, 10.0, pixels_across) * line_coverage(d, u_wire_width));
     }
     if (u_brush) {
         float centre_distance = distance(v_position, u_brush_centre);

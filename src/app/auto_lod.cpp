@@ -49,8 +49,11 @@ AutoLodJob::~AutoLodJob() = default;
 bool AutoLodJob::step(std::chrono::microseconds slice) {
     State& s = *state_;
     const auto deadline = std::chrono::steady_clock::now() + slice;
-    while (!s.driver.done() && std::chrono::steady_clock::now() < deadline) s.driver.run(64);
-    return !s.driver.done();
+    do {
+        if (cancelled_) break;
+        s.driver.run(64);
+    } while (!s.driver.done() && std::chrono::steady_clock::now() < deadline);
+    return !cancelled_ && !s.driver.done();
 }
 
 float AutoLodJob::progress() const {

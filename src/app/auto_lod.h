@@ -31,10 +31,14 @@ public:
     float progress() const override;
     bool changed() const override;
     std::string label() const override { return "automatic LOD"; }
+    void cancel() override { cancelled_ = true; }
+    // The editor's criterion is not the script's `budget`.
+    std::optional<std::string> script() const override { return std::nullopt; }
 
 private:
     struct State;
     std::unique_ptr<State> state_;
+    bool cancelled_ = false;
 };
 
 }  // namespace app

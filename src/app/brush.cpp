@@ -32,8 +32,8 @@ BaseSpaceHit to_base_space(const rgb::Mesh& mesh, rgb::FaceId face, const std::a
     if (nn <= 0.0) {
         hit.centre = (base[0] + base[1] + base[2]) / 3.0;
     } else {
-        const double w1 = glm::dot(glm::cross(displayed[2] - displayed[0], point - displayed[0]), n) / nn;
-        const double w2 = glm::dot(glm::cross(point - displayed[0], displayed[1] - displayed[0]), n) / nn;
+        const double w1 = glm::dot(glm::cross(point - displayed[0], displayed[2] - displayed[0]), n) / nn;
+        const double w2 = glm::dot(glm::cross(displayed[1] - displayed[0], point - displayed[0]), n) / nn;
         hit.centre = (1.0 - w1 - w2) * base[0] + w1 * base[1] + w2 * base[2];
     }
     const double displayed_area = std::sqrt(nn);

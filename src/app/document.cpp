@@ -1,20 +1,34 @@
 #include "app/document.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <utility>
 
+#include "rgb/state.h"
+
 namespace app {
 
-Document::Document() : changes_(std::make_unique<render::MeshChanges>(mesh_)) { geometry_.rebuild(mesh_); }
+Document::Document() : changes_(std::make_unique<render::MeshChanges>(mesh_)) { resync(); }
 
 Document::~Document() = default;
 
 std::vector<std::string> Document::open(const std::string& path) {
-    std::vector<std::string> warnings;
-    rgb::Mesh loaded = rgbio::load_mesh(path, &warnings);
+    LoadedDocument loaded = load_document(path, geometry_.source());
+    std::vector<std::string> warnings = std::move(loaded.warnings);
     adopt(std::move(loaded), path);
-    dirty_ = false;
     return warnings;
+}
+
+void Document::adopt(LoadedDocument loaded, std::string path, bool dirty) {
+    mesh_ = std::move(loaded.mesh);  // observers stay with the object
+    changes_->clear();
+    geometry_ = std::move(loaded.geometry);
+    index_ = std::move(loaded.index);
+    display_changes_ = DisplayChanges{{}, true};
+    path_ = std::move(path);
+    history_.clear();
+    dirty_ = dirty;
+    ++changes_count_;
 }
 
 void Document::adopt(rgb::Mesh mesh, std::string path) {
@@ -22,6 +36,7 @@ void Document::adopt(rgb::Mesh mesh, std::string path) {
     path_ = std::move(path);
     history_.clear();
     dirty_ = false;
+    ++changes_count_;
 }
 
 void Document::save(const std::string& path, const rgbio::SaveOptions& options) {
@@ -30,50 +45,86 @@ void Document::save(const std::string& path, const rgbio::SaveOptions& options) 
     dirty_ = false;
 }
 
-void Document::begin_edit(std::string label) { history_.begin_edit(mesh_, std::move(label)); }
+void Document::saved_as(const std::string& path, std::uint64_t changes) {
+    path_ = path;
+    dirty_ = dirty_ && changes != changes_count_;
+}
 
-void Document::end_edit(bool changed) {
-    history_.end_edit(mesh_, changed);
+void Document::begin_edit(std::string label) { history_.begin_edit(std::move(label)); }
+
+void Document::end_edit(bool changed, std::optional<std::string> script) {
+    history_.end_edit(changed, std::move(script));
     dirty_ = dirty_ || changed;
+    changes_count_ += changed;
 }
 
-bool Document::abandon_edit() {
-    std::optional<rgb::Mesh> before = history_.abandon_edit();
-    if (!before) return false;
-    replace_mesh(std::move(*before));
-    return true;
-}
+bool Document::abandon_edit() { return history_.abandon_edit(); }
 
-bool Document::undo() {
-    std::optional<rgb::Mesh> before = history_.undo(mesh_);
-    if (!before) return false;
-    replace_mesh(std::move(*before));
+bool Document::undo() { return step(&UndoHistory::undo); }
+
+bool Document::redo() { return step(&UndoHistory::redo); }
+
+bool Document::step(bool (UndoHistory::*cross)()) {
+    const std::uint64_t base = mesh_.base().serial();
+    if (!(history_.*cross)()) return false;
     dirty_ = true;
+    ++changes_count_;
+    // A retag moved every vertex without telling the observers.
+    if (mesh_.base().serial() != base) resync();
     return true;
 }
 
-bool Document::redo() {
-    std::optional<rgb::Mesh> after = history_.redo(mesh_);
-    if (!after) return false;
-    replace_mesh(std::move(*after));
+void Document::set_sharp_features(const rgb::SharpFeatures& features, std::string label) {
+    history_.retag(std::move(label), features);
     dirty_ = true;
-    return true;
+    ++changes_count_;
+    resync();
 }
 
 const render::SurfaceGeometry& Document::geometry() {
     if (!changes_->empty()) {
-        geometry_.update(mesh_, *changes_);
+        const std::vector<render::SlotRange> ranges = geometry_.update(mesh_, *changes_);
         changes_->clear();
+        index_.update(geometry_, ranges);
+        if (!display_changes_.rebuilt)
+            display_changes_.ranges.insert(display_changes_.ranges.end(), ranges.begin(), ranges.end());
     }
     return geometry_;
 }
 
+void Document::set_position_source(render::PositionSource source) {
+    if (geometry_.source() == source) return;
+    geometry_.set_source(source);
+    resync();
+}
+
+Document::DisplayChanges Document::take_display_changes() {
+    DisplayChanges taken = std::exchange(display_changes_, DisplayChanges{});
+    // Several updates since the last take: one sorted, coalesced list.
+    std::sort(taken.ranges.begin(), taken.ranges.end(), [](const render::SlotRange& a, const render::SlotRange& b) { return a.first < b.first; });
+    std::vector<render::SlotRange> merged;
+    for (const render::SlotRange& r : taken.ranges) {
+        if (!merged.empty() && r.first <= merged.back().first + merged.back().count)
+            merged.back().count = std::max(merged.back().count, r.first + r.count - merged.back().first);
+        else
+            merged.push_back(r);
+    }
+    taken.ranges = std::move(merged);
+    return taken;
+}
+
+std::optional<SurfaceHit> Document::pick(const Ray& ray) { return index_.pick(geometry(), ray); }
+
 void Document::replace_mesh(rgb::Mesh mesh) {
-    changes_.reset();  // unregisters from the outgoing mesh
-    mesh_ = std::move(mesh);
-    changes_ = std::make_unique<render::MeshChanges>(mesh_);
+    mesh_ = std::move(mesh);  // observers stay with the object
+    resync();
+}
+
+void Document::resync() {
+    changes_->clear();
     geometry_.rebuild(mesh_);
-    ++generation_;
+    index_.rebuild(mesh_, geometry_);
+    display_changes_ = DisplayChanges{{}, true};
 }
 
 std::string document_title(const Document& document) {

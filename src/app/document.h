@@ -4,9 +4,12 @@
 // core's observer). GL-free.
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "app/loaded_document.h"
+#include "app/surface_index.h"
 #include "app/undo_history.h"
 #include "io/mesh_file.h"
 #include "render/mesh_changes.h"
@@ -25,42 +28,70 @@ public:
     // Replaces the mesh by the file's (throws rgbio::ObjError; the document is unchanged then).
     // Returns the loader's warnings.
     std::vector<std::string> open(const std::string& path);
+    // Takes over a document read elsewhere (load_document) as the file `path`; `dirty` for work
+    // that is not in that file (a recovery copy).
+    void adopt(LoadedDocument loaded, std::string path, bool dirty = false);
     // Adopts `mesh` as an unsaved document named `path` (may be empty).
     void adopt(rgb::Mesh mesh, std::string path);
     // Throws rgbio::SaveError. Clears the unsaved mark and makes `path` the document's file.
     void save(const std::string& path, const rgbio::SaveOptions& options);
+    // A copy saved elsewhere (in the background) reached `path`: the file is the document's, and
+    // clean if nothing changed since the copy was made at change count `changes`.
+    void saved_as(const std::string& path, std::uint64_t changes);
 
     rgb::Mesh& mesh() { return mesh_; }
     const rgb::Mesh& mesh() const { return mesh_; }
     const std::string& path() const { return path_; }
     bool dirty() const { return dirty_; }
-    // Changes whenever the mesh object is replaced wholesale (open, undo, redo), so that views
-    // attached to it re-attach.
-    std::uint64_t generation() const { return generation_; }
+    // Counts the changes of the mesh (edits, undo, redo) since the document was made.
+    std::uint64_t changes() const { return changes_count_; }
 
     // Around every undoable edit: changed == false means the edit did nothing and leaves no step.
     void begin_edit(std::string label);
-    void end_edit(bool changed);
+    void end_edit(bool changed, std::optional<std::string> script = std::nullopt);
     // Puts the mesh back as it was at begin_edit, leaving no step; false if no edit is under way.
+    // Throws std::logic_error if it cannot (the history is then cleared).
     bool abandon_edit();
     bool undo();
     bool redo();
+    // The base mesh with other crease and corner tags, as one undoable edit labelled `label`: the
+    // vertex set stays, every position follows the new rules. Throws std::invalid_argument for tags
+    // the base mesh refuses (the document is unchanged then).
+    void set_sharp_features(const rgb::SharpFeatures& features, std::string label);
     UndoHistory& history() { return history_; }
     const UndoHistory& history() const { return history_; }
 
-    // The displayed triangles, brought up to date with the mesh.
+    // The displayed triangles, brought up to date with the mesh. The renderer draws these too.
     const render::SurfaceGeometry& geometry();
+    // Which positions the triangles show (and picking finds).
+    void set_position_source(render::PositionSource source);
+    // The slots geometry() changed since the last call (sorted, coalesced), or that it was rebuilt
+    // whole: what the renderer must upload.
+    struct DisplayChanges {
+        std::vector<render::SlotRange> ranges;
+        bool rebuilt = false;
+    };
+    DisplayChanges take_display_changes();
+    // The nearest front-facing displayed triangle along the ray.
+    std::optional<SurfaceHit> pick(const Ray& ray);
 
 private:
+    // Undo or redo (`cross`), and what follows the mesh.
+    bool step(bool (UndoHistory::*cross)());
     void replace_mesh(rgb::Mesh mesh);
+    // Rebuilds what follows the mesh from scratch.
+    void resync();
 
     rgb::Mesh mesh_;
+    // Its journal observes the mesh first, before anything that could fail while told of a change.
+    UndoHistory history_{mesh_};
     std::string path_;
     bool dirty_ = false;
-    std::uint64_t generation_ = 0;
-    UndoHistory history_;
+    std::uint64_t changes_count_ = 0;
     render::SurfaceGeometry geometry_;
+    SurfaceIndex index_;
     std::unique_ptr<render::MeshChanges> changes_;
+    DisplayChanges display_changes_;
 };
 
 // "name.obj*" for the title bar and panels: the file name, or "untitled", with the unsaved mark.

@@ -3,11 +3,17 @@
 #include <algorithm>
 #include <filesystem>
 #include <new>
+#include <thread>
+
+#include <unistd.h>
 #include <utility>
 
 #include <glm/geometric.hpp>
 
 #include "app/flood_fill.h"
+#include "app/request_pieces.h"
+#include "app/stroke_script.h"
+#include "io/atomic_file.h"
 #include "io/obj_error.h"
 #include "rgb/mesh.h"
 
@@ -23,7 +29,20 @@ double milliseconds_since(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-Editor::Editor(glm::ivec2 viewport) : viewport_(viewport) { frame_mesh(); }
+Editor::Editor(glm::ivec2 viewport) : Editor(EditorOptions{viewport, std::nullopt, 0, 0.0f, std::chrono::seconds(120)}) {}
+
+Editor::Editor(const EditorOptions& options)
+    : viewport_(options.viewport), recovery_interval_(options.recovery_interval), covered_right_(options.covered_right) {
+    frame_mesh();
+    recovery_due_ = std::chrono::steady_clock::now() + recovery_interval_;
+    if (!options.recovery_folder) return;
+    recovery_.emplace(*options.recovery_folder, options.process_id != 0 ? options.process_id : static_cast<int>(::getpid()));
+    const std::vector<RecoveryStore::Orphan> orphans = recovery_->orphans();
+    if (orphans.empty()) return;
+    offered_ = orphans.front();
+    pending_ = Pending::Recover;
+    pending_path_ = offered_->document_path;
+}
 
 void Editor::set_viewport(glm::ivec2 viewport) { viewport_ = glm::max(viewport, glm::ivec2(1)); }
 
@@ -35,6 +54,7 @@ void Editor::mouse_moved(glm::vec2 px) {
     if (drag_ == Drag::Orbit) camera_.orbit(delta);
     if (drag_ == Drag::Pan) camera_.pan(delta, viewport_);
     if (painting_) continue_stroke(px);
+    if (crease_drag_) crease_drag_to(px);
 }
 
 void Editor::mouse_pressed(MouseButton button, Modifiers mods) {
@@ -45,17 +65,27 @@ void Editor::mouse_pressed(MouseButton button, Modifiers mods) {
         drag_ = Drag::Orbit;
     } else if (button == MouseButton::Middle || (button == MouseButton::Left && mods.alt && mods.shift)) {
         drag_ = Drag::Pan;
-    } else if (button == MouseButton::Left && job_ == nullptr && pending_ == Pending::None) {
+    } else if (button == MouseButton::Left && pending_ == Pending::None && crease_tool_.active) {
+        if (!refuse_if_busy("tag creases")) begin_crease_drag(mods.shift);
+    } else if (button == MouseButton::Left && pending_ == Pending::None && !refuse_if_whole_mesh_job("paint")) {
         begin_stroke(mouse_);
     }
 }
 
 void Editor::mouse_released(MouseButton button) {
     if (button == MouseButton::Left && painting_) end_stroke();
+    if (button == MouseButton::Left && crease_drag_) end_crease_drag();
     if (button != MouseButton::Left || drag_ != Drag::None) drag_ = Drag::None;
 }
 
-void Editor::scrolled(float steps) { camera_.zoom(steps); }
+// Towards the surface under the cursor, or the point of the cursor's ray as deep as the target.
+void Editor::scrolled(float steps) {
+    const Ray ray = camera_.ray_through(mouse_, viewport_);
+    const std::optional<SurfaceHit> hit = pick(mouse_);
+    const glm::dvec3 target(camera_.camera().target);
+    const glm::dvec3 anchor = hit ? hit->point : ray.origin + ray.direction * glm::dot(target - ray.origin, ray.direction);
+    camera_.zoom(steps, anchor);
+}
 
 void Editor::key_pressed(Key key, Modifiers mods) {
     mods_ = mods;
@@ -63,7 +93,12 @@ void Editor::key_pressed(Key key, Modifiers mods) {
         switch (key) {
             case Key::Z: mods.shift ? redo() : undo(); break;
             case Key::Y: redo(); break;
-            case Key::S: save(); break;
+            case Key::S:
+                if (mods.shift) browse_request_ = Browse::SaveAs;
+                else request_save();
+                break;
+            case Key::O: browse_request_ = Browse::Open; break;
+            case Key::E: browse_request_ = Browse::SaveStrokes; break;
             case Key::Q: request_quit(); break;
             default: break;
         }
@@ -75,19 +110,81 @@ void Editor::key_pressed(Key key, Modifiers mods) {
         case Key::S: sample_level_under_cursor(); break;
         case Key::LeftBracket: grow_radius(brush_, -1); break;
         case Key::RightBracket: grow_radius(brush_, 1); break;
+        case Key::Minus: brush_.target_level = std::max(brush_.target_level - 1, 0); break;
+        case Key::Equal: brush_.target_level = std::min(brush_.target_level + 1, kMaxBrushLevel); break;
         case Key::Digit1: brush_.mode = BrushMode::Refine; break;
         case Key::Digit2: brush_.mode = BrushMode::Coarsen; break;
         case Key::Digit3: brush_.mode = BrushMode::Set; break;
         case Key::Escape:
             if (pending_ != Pending::None) answer_pending(false);
-            else cancel_job();
+            else if (!jobs_.empty()) cancel_job();
+            else stop_opening();
             break;
         default: break;
     }
 }
 
 void Editor::update(std::chrono::microseconds job_slice) {
-    if (job_ && !job_->step(job_slice)) finish_job();
+    poll_file_task();
+    poll_recovery_task();
+    const auto start = std::chrono::steady_clock::now();
+    const auto deadline = start + job_slice;
+    std::size_t operations = 0;
+    // The front job gets the slice; one that finishes early hands the rest to the next.
+    while (!jobs_.empty()) {
+        MeshJob& job = *jobs_.front();
+        if (!front_begun_) {
+            document_.begin_edit(job.label());
+            front_begun_ = true;
+        }
+        const auto left = std::chrono::duration_cast<std::chrono::microseconds>(deadline - std::chrono::steady_clock::now());
+        const auto* requests = dynamic_cast<const RequestJob*>(&job);
+        const std::size_t before = requests ? requests->stats().splits + requests->stats().removals : 0;
+        const bool more = job.step(std::max(left, std::chrono::microseconds(0)));
+        if (requests) operations += requests->stats().splits + requests->stats().removals - before;
+        if (more) break;
+        finish_front();
+        if (std::chrono::steady_clock::now() >= deadline) break;
+    }
+    timing_.frame_ms = milliseconds_since(start);
+    timing_.frame_operations = operations;
+    // The picking geometry and index catch up here rather than in the next pick.
+    const auto catch_up = std::chrono::steady_clock::now();
+    document_.geometry();
+    timing_.geometry_ms = milliseconds_since(catch_up);
+    keep_recovery_copy(false);
+}
+
+void Editor::finish_work() {
+    if (stroke_) end_stroke();
+    while (!jobs_.empty() || file_task_ || recovery_task_ || save_when_idle_) {
+        update(std::chrono::seconds(1));
+        if (jobs_.empty()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+}
+
+void Editor::queue(std::unique_ptr<MeshJob> job) { jobs_.push_back(std::move(job)); }
+
+void Editor::finish_front() {
+    MeshJob& job = *jobs_.front();
+    if (!job.is_stroke()) report(job.label() + " done", false);
+    document_.end_edit(job.changed(), job.script());
+    jobs_.pop_front();
+    front_begun_ = false;
+}
+
+bool Editor::refuse_if_whole_mesh_job(const char* action) {
+    if (jobs_.empty() || jobs_.back()->is_stroke()) return false;
+    report(std::string("cannot ") + action + " while " + jobs_.back()->label() + " runs: wait, or press Esc to stop it", true);
+    return true;
+}
+
+bool Editor::refuse_if_busy(const char* action) {
+    if (!busy()) return false;
+    report(std::string("cannot ") + action + " while " + (painting_ ? "painting" : jobs_.front()->label() + " runs") +
+               ": wait, or press Esc to stop it",
+           true);
+    return true;
 }
 
 // ---- brush and strokes ------------------------------------------------------------------------
@@ -98,97 +195,76 @@ double Editor::brush_world_radius(const glm::dvec3& at) const {
 }
 
 std::optional<SurfaceHit> Editor::cursor_hit() {
-    const double reach = cursor_hit_ ? 2.0 * brush_world_radius(cursor_hit_->point) : 0.0;
-    cursor_hit_ = pick(mouse_, cursor_hit_, reach);
+    cursor_hit_ = pick(mouse_);
     return cursor_hit_;
 }
 
-std::optional<SurfaceHit> Editor::pick(glm::vec2 px, const std::optional<SurfaceHit>& previous, double reach) {
-    const Ray ray = camera_.ray_through(px, viewport_);
-    const render::SurfaceGeometry& geometry = document_.geometry();
-    // The whole surface only when the cursor left the neighbourhood of the previous hit.
-    if (previous && document_.mesh().is_live(previous->face))
-        if (auto hit = pick_surface_near(document_.mesh(), geometry, ray, previous->face, previous->point, reach))
-            return hit;
-    return pick_surface(geometry, ray);
-}
+std::optional<SurfaceHit> Editor::pick(glm::vec2 px) { return document_.pick(camera_.ray_through(px, viewport_)); }
 
 void Editor::begin_stroke(glm::vec2 px) {
+    const auto start = std::chrono::steady_clock::now();
     painting_ = true;
-    stroke_changed_ = false;
-    last_hit_.reset();
-    document_.begin_edit("brush stroke");
+    last_hit_point_.reset();
+    auto stroke = std::make_unique<RequestJob>(document_.mesh(), "brush stroke", true);
+    stroke_script_ = StrokeScript();
+    stroke_ = stroke.get();
+    queue(std::move(stroke));
     for (glm::vec2 p : sampler_.begin(px)) dab(p);
+    timing_.stroke_start_ms = milliseconds_since(start);
 }
 
 void Editor::continue_stroke(glm::vec2 px) {
     float spacing_px = kDabSpacing * brush_.radius_px;
-    if (brush_.unit == RadiusUnit::World && last_hit_)
+    if (brush_.unit == RadiusUnit::World && last_hit_point_)
         spacing_px = static_cast<float>(kDabSpacing * brush_.radius_world /
-                                        camera_.world_per_pixel(camera_.depth_of(last_hit_->point), viewport_));
+                                        camera_.world_per_pixel(camera_.depth_of(*last_hit_point_), viewport_));
     for (glm::vec2 p : sampler_.move_to(px, spacing_px)) dab(p);
 }
 
 void Editor::end_stroke() {
     painting_ = false;
-    document_.end_edit(stroke_changed_);
-    last_hit_.reset();
+    if (stroke_) stroke_->close();
+    stroke_ = nullptr;
+    last_hit_point_.reset();
 }
 
+// Picks and queues: the engine applies the dab's pieces in update(), coarse to fine.
 void Editor::dab(glm::vec2 px) {
     const auto pick_start = std::chrono::steady_clock::now();
-    const double reach =
-        last_hit_ ? 2.0 * last_radius_ + kDabSpacing * brush_.radius_px *
-                                             camera_.world_per_pixel(camera_.depth_of(last_hit_->point), viewport_)
-                  : 0.0;
-    const std::optional<SurfaceHit> hit = pick(px, last_hit_, reach);
+    const std::optional<SurfaceHit> hit = pick(px);
     if (!hit) {
-        last_hit_.reset();
+        last_hit_point_.reset();
         return;
     }
-    rgb::Mesh& mesh = document_.mesh();
+    const rgb::Mesh& mesh = document_.mesh();
     const double radius = brush_world_radius(hit->point);
     const auto displayed = document_.geometry().corners(hit->face);
     const BaseSpaceHit at = to_base_space(mesh, hit->face, displayed, hit->point, radius);
     const rgb::Dab request = make_dab(brush_, mods_.shift, at, camera_.ray_through(px, viewport_).direction);
     timing_.last_pick_ms = milliseconds_since(pick_start);
-
-    const std::array<rgb::VertexId, 3> corners = mesh.face_vertices(hit->face);
-    const auto engine_start = std::chrono::steady_clock::now();
-    const rgb::RequestStats stats = rgb::apply_dab(mesh, request);
-    timing_.last_ms = milliseconds_since(engine_start);
-    timing_.last_operations = stats.splits + stats.removals;
+    const int from_level = mesh.level(hit->face);
+    stroke_->add([&mesh, request, from_level] { return dab_pieces(mesh, request, from_level); }, stroke_script_.lines(request));
     ++timing_.dabs;
-    stroke_changed_ |= stats.splits + stats.removals > 0;
-
-    last_hit_ = hit;
-    last_radius_ = radius;
-    if (!mesh.is_live(hit->face)) reseed_after_dab(corners);
-}
-
-// The hit face may have been split or merged away; any live face at one of its corners serves as
-// the next pick's seed.
-void Editor::reseed_after_dab(const std::array<rgb::VertexId, 3>& corners) {
-    const rgb::Mesh& mesh = document_.mesh();
-    for (rgb::VertexId v : corners) {
-        if (!mesh.is_live(v)) continue;
-        last_hit_->face = rgb::Mesh::face(mesh.vertex_halfedge(v));
-        return;
-    }
-    last_hit_.reset();
+    last_hit_point_ = hit->point;
 }
 
 // ---- whole-mesh actions -----------------------------------------------------------------------
 
+// Both fit the mesh into the part of the viewport the panel leaves free, centred there.
 void Editor::frame_mesh() {
-    const render::BoundingSphere bounds = document_.geometry().bounds(document_.mesh());
-    camera_.refit(bounds, viewport_);
+    const glm::ivec2 free_area(std::max(viewport_.x - static_cast<int>(covered_right_), 1), viewport_.y);
+    camera_.refit(document_.geometry().bounds(document_.mesh()), free_area);
+    camera_.pan({-0.5f * covered_right_, 0.0f}, viewport_);
 }
 
-void Editor::reset_view() { camera_.frame(document_.geometry().bounds(document_.mesh()), viewport_); }
+void Editor::reset_view() {
+    const glm::ivec2 free_area(std::max(viewport_.x - static_cast<int>(covered_right_), 1), viewport_.y);
+    camera_.frame(document_.geometry().bounds(document_.mesh()), free_area);
+    camera_.pan({-0.5f * covered_right_, 0.0f}, viewport_);
+}
 
 bool Editor::undo() {
-    if (busy()) return false;
+    if (refuse_if_busy("undo")) return false;
     const std::string label = document_.history().can_undo() ? document_.history().undo_label() : "";
     if (!document_.undo()) return false;
     report("undid " + label, false);
@@ -196,7 +272,7 @@ bool Editor::undo() {
 }
 
 bool Editor::redo() {
-    if (busy()) return false;
+    if (refuse_if_busy("redo")) return false;
     const std::string label = document_.history().can_redo() ? document_.history().redo_label() : "";
     if (!document_.redo()) return false;
     report("redid " + label, false);
@@ -204,29 +280,30 @@ bool Editor::redo() {
 }
 
 void Editor::start_flood_fill(int level) {
-    if (busy()) return;
-    job_ = std::make_unique<FloodFillJob>(document_.mesh(), std::clamp(level, 0, kMaxBrushLevel));
-    document_.begin_edit(job_->label());
+    if (refuse_if_busy("set all")) return;
+    keep_recovery_copy(true);
+    queue(make_flood_fill(document_.mesh(), std::clamp(level, 0, kMaxBrushLevel)));
 }
 
 void Editor::start_auto_lod() {
-    if (busy()) return;
-    job_ = std::make_unique<AutoLodJob>(document_.mesh(), auto_lod_settings_);
-    document_.begin_edit(job_->label());
+    if (refuse_if_busy("start automatic LOD")) return;
+    keep_recovery_copy(true);
+    queue(std::make_unique<AutoLodJob>(document_.mesh(), auto_lod_settings_));
 }
 
-// Work done until the cancel stays, as one undoable step.
+// Work done until the cancel stays, as one undoable step; work waiting is dropped.
 void Editor::cancel_job() {
-    if (!job_) return;
-    report(job_->label() + " cancelled; Ctrl+Z undoes what it did", false);
-    document_.end_edit(job_->changed());
-    job_.reset();
-}
-
-void Editor::finish_job() {
-    report(job_->label() + " done", false);
-    document_.end_edit(job_->changed());
-    job_.reset();
+    if (jobs_.empty()) return;
+    if (stroke_) end_stroke();
+    const std::string label = jobs_.front()->label();
+    if (front_begun_) {
+        jobs_.front()->cancel();
+        document_.end_edit(jobs_.front()->changed(), jobs_.front()->script());
+    }
+    const bool changed = front_begun_ && jobs_.front()->changed();
+    jobs_.clear();
+    front_begun_ = false;
+    report(label + " cancelled" + (changed ? "; Ctrl+Z undoes what it did" : ""), false);
 }
 
 bool Editor::sample_level_under_cursor() {
@@ -234,82 +311,6 @@ bool Editor::sample_level_under_cursor() {
     if (!hit) return false;
     brush_.target_level = document_.mesh().level(hit->face);
     return true;
-}
-
-// ---- files and confirmations ------------------------------------------------------------------
-
-bool Editor::open(const std::string& path) {
-    if (busy()) return false;
-    try {
-        load(path);
-    } catch (const rgbio::ObjError& error) {
-        report(error.what(), true);
-        return false;
-    }
-    return true;
-}
-
-void Editor::load(const std::string& path) {
-    const std::vector<std::string> warnings = document_.open(path);
-    report(warnings.empty() ? "opened " + path : path + ": " + warnings.front() + (warnings.size() > 1 ? " (and more)" : ""), false);
-    remember_recent(path);
-    reset_view();
-}
-
-bool Editor::save() {
-    if (document_.path().empty()) {
-        report("the mesh has no file yet: use Save as", true);
-        return false;
-    }
-    return save_as(document_.path());
-}
-
-bool Editor::save_as(const std::string& path) {
-    if (busy()) return false;
-    try {
-        document_.save(path, save_options_);
-        report("saved " + path, false);
-    } catch (const rgbio::SaveError& error) {
-        report(error.what(), true);
-        return false;
-    }
-    remember_recent(path);
-    return true;
-}
-
-void Editor::request_open(const std::string& path) {
-    if (document_.dirty()) {
-        pending_ = Pending::DiscardForOpen;
-        pending_path_ = path;
-    } else {
-        open(path);
-    }
-}
-
-void Editor::request_save_as(const std::string& path) {
-    std::error_code error;
-    if (path != document_.path() && std::filesystem::exists(path, error)) {
-        pending_ = Pending::Overwrite;
-        pending_path_ = path;
-    } else {
-        save_as(path);
-    }
-}
-
-void Editor::request_quit() {
-    if (document_.dirty()) pending_ = Pending::DiscardForQuit;
-    else quit_ = true;
-}
-
-void Editor::answer_pending(bool proceed) {
-    const Pending question = std::exchange(pending_, Pending::None);
-    if (!proceed) return;
-    switch (question) {
-        case Pending::DiscardForQuit: quit_ = true; break;
-        case Pending::DiscardForOpen: open(pending_path_); break;
-        case Pending::Overwrite: save_as(pending_path_); break;
-        case Pending::None: break;
-    }
 }
 
 void Editor::remember_recent(const std::string& path) {
@@ -336,13 +337,15 @@ bool Editor::run_guarded(const std::function<void()>& step) {
 }
 
 void Editor::recover_from(const std::exception& failure) {
-    const std::string action = painting_ ? "the brush stroke" : job_ ? job_->label() : "";
+    const std::string action = jobs_.empty() ? "" : jobs_.front()->is_stroke() ? "the brush stroke" : jobs_.front()->label();
     const std::string cause = dynamic_cast<const std::bad_alloc*>(&failure) != nullptr ? std::string("out of memory")
                                                                                       : std::string(failure.what());
     painting_ = false;
-    last_hit_.reset();
+    stroke_ = nullptr;
+    last_hit_point_.reset();
     drag_ = Drag::None;
-    job_.reset();
+    jobs_.clear();
+    front_begun_ = false;
     std::string outcome;
     try {
         if (document_.abandon_edit()) outcome = "; " + action + " was rolled back, the mesh is as before it";

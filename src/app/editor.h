@@ -8,21 +8,29 @@
 // confirmations | statistics.
 #include <chrono>
 #include <cstddef>
+#include <deque>
 #include <exception>
+#include <filesystem>
 #include <functional>
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/vec2.hpp>
 
 #include "app/auto_lod.h"
+#include "app/background_task.h"
 #include "app/brush.h"
+#include "app/crease_tool.h"
 #include "app/document.h"
 #include "app/input.h"
 #include "app/mesh_job.h"
+#include "app/recovery_store.h"
+#include "app/request_job.h"
 #include "app/stroke_sampler.h"
+#include "app/stroke_script.h"
 #include "app/surface_picking.h"
 #include "app/view_camera.h"
 #include "io/mesh_file.h"
@@ -30,18 +38,40 @@
 namespace app {
 
 // A question the user must answer before the editor goes on.
-enum class Pending { None, DiscardForQuit, DiscardForOpen, Overwrite };
+enum class Pending { None, DiscardForQuit, DiscardForOpen, Overwrite, Recover };
 
-struct DabTiming {
-    double last_ms = 0.0;       // engine time (rgb::apply_dab) of the most recent dab
-    double last_pick_ms = 0.0;  // picking and mapping that dab to base space
-    std::size_t last_operations = 0;  // splits and removals it made
+struct EditorOptions {
+    glm::ivec2 viewport{1280, 800};
+    // Where recovery copies of unsaved work go (recovery_store.h); none: no copies are kept.
+    std::optional<std::filesystem::path> recovery_folder;
+    int process_id = 0;  // names this session's copy; 0: this process
+    float covered_right = 0.0f;  // see set_covered_right
+    // Unsaved work is copied this often (and before whole-mesh actions).
+    std::chrono::seconds recovery_interval{120};
+};
+
+// What the engine and picking cost, for the statistics panel and the benchmarks.
+struct EngineTiming {
+    double frame_ms = 0.0;             // engine work in the most recent update()
+    std::size_t frame_operations = 0;  // splits and removals it made
+    double geometry_ms = 0.0;          // then bringing the picking geometry and index up to date
+    double last_pick_ms = 0.0;         // picking the most recent dab and mapping it to base space
+    double stroke_start_ms = 0.0;      // the press that started the most recent stroke
     std::size_t dabs = 0;
 };
+
+// The side panel's width in pixels (editor_panels.cpp), and what it covers of the viewport with its
+// margin: the window and headless frames tell the editor (set_covered_right) so that framing keeps
+// the mesh clear of it.
+inline constexpr float kPanelWidth = 320.0f;
+inline constexpr float kPanelCover = kPanelWidth + 8.0f;
 
 class Editor {
 public:
     explicit Editor(glm::ivec2 viewport = {1280, 800});
+    // With a recovery folder, offers (Pending::Recover) the newest copy a session that did not exit
+    // cleanly left there.
+    explicit Editor(const EditorOptions& options);
 
     Document& document() { return document_; }
     const Document& document() const { return document_; }
@@ -52,6 +82,8 @@ public:
     rgbio::SaveOptions& save_options() { return save_options_; }
     glm::ivec2 viewport() const { return viewport_; }
     void set_viewport(glm::ivec2 viewport);
+    // Pixels at the right of the viewport that the panel covers: framing keeps the mesh out of them.
+    void set_covered_right(float pixels) { covered_right_ = pixels; }
 
     // ---- input ----
     void mouse_moved(glm::vec2 px);
@@ -61,8 +93,11 @@ public:
     void key_pressed(Key key, Modifiers mods);
     // Shift held or not, for the stroke under way and the cursor preview.
     void set_modifiers(Modifiers mods) { mods_ = mods; }
-    // Advances the running job by a time slice; call once per frame.
-    void update(std::chrono::microseconds job_slice = std::chrono::milliseconds(12));
+    // Advances the queued work (strokes, whole-mesh jobs) by about a time slice, takes the results
+    // of files read or written in the background and keeps the recovery copy; call once per frame.
+    void update(std::chrono::microseconds job_slice);
+    // Runs the queued work and the files being read or written to their end (tests, headless frames).
+    void finish_work();
 
     // ---- brush ----
     bool painting() const { return painting_; }
@@ -79,34 +114,62 @@ public:
     bool redo();
     void start_flood_fill(int level);
     void start_auto_lod();
+    // Esc: stops the work under way (what is done stays as one undoable step) and drops what waits.
     void cancel_job();
-    const MeshJob* job() const { return job_.get(); }
+    // The work under way, if any: a stroke still being applied or a whole-mesh job.
+    const MeshJob* job() const { return jobs_.empty() ? nullptr : jobs_.front().get(); }
+    std::size_t jobs_waiting() const { return jobs_.empty() ? 0 : jobs_.size() - 1; }
     // The level of the face under the cursor becomes the brush's target level.
     bool sample_level_under_cursor();
 
+    // ---- crease tool (crease_tool.h; editor_creases.cpp) ----
+    CreaseToolSettings& crease_tool() { return crease_tool_; }
+    // Gives the base mesh other crease tags as one undoable step; false (with a message) if refused.
+    bool set_sharp_features(const rgb::SharpFeatures& features, std::string label);
+
     // ---- files ----
-    // Each returns false and sets an error message when it cannot proceed.
+    // Right away, on this thread (tests, headless frames); each returns false and sets an error
+    // message when it cannot proceed.
     bool open(const std::string& path);  // no questions asked
     // open, but a file that cannot be loaded throws its rgbio::ObjError (for callers that report it
     // themselves, like the CLI's screenshot) instead of setting the message.
     void load(const std::string& path);
     bool save();                         // to the document's path
     bool save_as(const std::string& path);
-    // Asks first when there are unsaved changes / the file exists.
+    // What the window does: read or write in the background (file_task() shows how it goes), and
+    // ask first when there are unsaved changes (once the file has been read: a file that cannot be
+    // read asks nothing) or the target exists. A save waits for the work under way.
     void request_open(const std::string& path);
+    void request_save();
     void request_save_as(const std::string& path);
     void request_quit();
+    // "Save and quit" in the quit question.
+    void save_and_quit();
+    const BackgroundTask* file_task() const { return file_task_.get(); }
     Pending pending() const { return pending_; }
     const std::string& pending_path() const { return pending_path_; }
     void answer_pending(bool proceed);
-    bool should_quit() const { return quit_; }
+    // Once nothing is being saved.
+    bool should_quit() const;
+    // A clean exit: the recovery copy goes (after one being written is done).
+    void close_session();
     const std::vector<std::string>& recent_files() const { return recent_; }
+    // Ctrl+O, Ctrl+Shift+S and Ctrl+E ask the window for its file browser.
+    enum class Browse { None, Open, SaveAs, SaveStrokes };
+    Browse take_browse_request() { return std::exchange(browse_request_, Browse::None); }
+    // Counts the files that could not be opened (the panel then shows the document's path again).
+    std::uint64_t open_failures() const { return open_failures_; }
     const std::string& message() const { return message_; }
     bool message_is_error() const { return message_is_error_; }
     std::string window_title() const;
 
+    // The edits in effect as a level-of-detail script (brush and dab lines, `level` for set all),
+    // which `rgbsub apply` replays on the opened file to the same mesh. Returns false with a message
+    // when it cannot be written; warns when some edit in effect has no script.
+    bool save_strokes(const std::string& path);
+
     // ---- statistics ----
-    const DabTiming& dab_timing() const { return timing_; }
+    const EngineTiming& timing() const { return timing_; }
 
     // ---- failures ----
     // Runs one input event or frame step. A std::exception from it (out of memory in a deep
@@ -121,14 +184,30 @@ private:
     void continue_stroke(glm::vec2 px);
     void end_stroke();
     void dab(glm::vec2 px);
-    // The surface under px, searched near `previous` first when given (spec §3.4).
-    std::optional<SurfaceHit> pick(glm::vec2 px, const std::optional<SurfaceHit>& previous, double reach);
-    void reseed_after_dab(const std::array<rgb::VertexId, 3>& corners);
-    void finish_job();
+    std::optional<SurfaceHit> pick(glm::vec2 px);
+    void queue(std::unique_ptr<MeshJob> job);
+    // File tasks: start, and take what finished.
+    void start_save(const std::string& path);
+    void poll_file_task();
+    // Esc while a file is read: the result is dropped (a save is never stopped half way).
+    void stop_opening();
+    void opened(LoadedDocument loaded, const std::string& path);
+    // The recovery copy: written when `force`d or due, if there is unsaved work not yet in it.
+    void keep_recovery_copy(bool force);
+    void poll_recovery_task();
+    // Ends the job at the front (its edit with it) and starts on the next.
+    void finish_front();
+    void begin_crease_drag(bool untag);
+    void crease_drag_to(glm::vec2 px);
+    void end_crease_drag();
     void remember_recent(const std::string& path);
     void report(std::string message, bool error);
     void recover_from(const std::exception& failure);
-    bool busy() const { return job_ != nullptr || painting_; }
+    bool busy() const { return !jobs_.empty() || painting_ || crease_drag_.has_value(); }
+    // Refuse (with a message) while work is under way / while a whole-mesh job is (strokes queue
+    // behind strokes).
+    bool refuse_if_busy(const char* action);
+    bool refuse_if_whole_mesh_job(const char* action);
 
     Document document_;
     ViewCamera camera_;
@@ -142,14 +221,43 @@ private:
     enum class Drag { None, Orbit, Pan } drag_ = Drag::None;
 
     bool painting_ = false;
-    bool stroke_changed_ = false;
+    RequestJob* stroke_ = nullptr;  // the open stroke, in jobs_
+    StrokeScript stroke_script_;
     StrokeSampler sampler_;
-    std::optional<SurfaceHit> last_hit_;
+    std::optional<glm::dvec3> last_hit_point_;
     std::optional<SurfaceHit> cursor_hit_;
-    double last_radius_ = 0.0;
-    DabTiming timing_;
+    EngineTiming timing_;
 
-    std::unique_ptr<MeshJob> job_;
+    // Applied in order, the front one a slice per frame; each is one undoable step, begun when it
+    // reaches the front.
+    std::deque<std::unique_ptr<MeshJob>> jobs_;
+    bool front_begun_ = false;
+
+    // Files read or written in the background, one at a time.
+    std::unique_ptr<BackgroundTask> file_task_;
+    std::optional<std::string> save_when_idle_;  // a save waiting for the work under way
+    std::uint64_t saved_changes_ = 0;             // the document's change count in the copy being saved
+    bool quit_after_save_ = false;
+    std::optional<LoadedDocument> opened_;  // read, waiting for the answer to DiscardForOpen
+
+    // Recovery copies of unsaved work.
+    std::optional<RecoveryStore> recovery_;
+    std::unique_ptr<BackgroundTask> recovery_task_;
+    std::uint64_t recovery_changes_ = 0;  // the change count in the copy (being) written
+    std::chrono::steady_clock::time_point recovery_due_;
+    std::chrono::seconds recovery_interval_{120};
+    std::optional<RecoveryStore::Orphan> offered_;   // Pending::Recover's copy
+    std::optional<RecoveryStore::Orphan> recovered_;  // removed once the own copy holds its work
+    bool recovering_ = false;                          // file_task_ reads offered_
+
+    float covered_right_ = 0.0f;
+    Browse browse_request_ = Browse::None;
+    std::uint64_t open_failures_ = 0;
+
+    CreaseToolSettings crease_tool_;
+    std::optional<CreaseDrag> crease_drag_;
+    glm::vec2 crease_last_px_{0.0f};
+    std::optional<SurfaceHit> crease_hit_;  // the last sample's hit
 
     Pending pending_ = Pending::None;
     std::string pending_path_;

@@ -4,18 +4,24 @@
 
 #include <algorithm>
 #include <cfloat>
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
 
+#include "app/crease_panel.h"
 #include "app/editor.h"
+#include "app/editor_dialogs.h"
+#include "render/colour_map.h"
 #include "rgb/mesh.h"
 
 namespace app {
 namespace {
 
-constexpr float kPanelWidth = 300.0f;
 constexpr double kHistogramRefreshS = 0.25;
+const ImVec4 kErrorColour{1.0f, 0.45f, 0.4f, 1.0f};
+const ImVec4 kNoteColour{0.7f, 0.9f, 0.7f, 1.0f};
+const ImVec4 kInvertedColour{0.45f, 0.7f, 1.0f, 1.0f};
 
 struct DisplayMode {
     const char* name;
@@ -29,93 +35,131 @@ constexpr DisplayMode kDisplayModes[] = {
     {"level heat map", render::Shading::Smooth, render::Colouring::Level},
 };
 
+void tooltip(const char* text) {
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
+}
+
 void copy_path(PanelState& state, const std::string& path) {
     const std::size_t n = std::min(path.size(), state.path.size() - 1);
     std::copy_n(path.begin(), n, state.path.begin());
     state.path[n] = '\0';
 }
 
+const char* mode_name(BrushMode mode) {
+    switch (mode) {
+        case BrushMode::Refine: return "refine";
+        case BrushMode::Coarsen: return "coarsen";
+        case BrushMode::Set: return "set";
+    }
+    return "?";
+}
+
 void brush_panel(Editor& editor) {
+    if (!ImGui::CollapsingHeader("Brush", ImGuiTreeNodeFlags_DefaultOpen)) return;
     BrushSettings& brush = editor.brush();
-    ImGui::TextUnformatted("Brush (left drag paints)");
     int mode = static_cast<int>(brush.mode);
     ImGui::RadioButton("refine", &mode, 0);
+    tooltip("Adds detail up to the target level (key 1)");
     ImGui::SameLine();
     ImGui::RadioButton("coarsen", &mode, 1);
+    tooltip("Removes detail down to the target level (key 2)");
     ImGui::SameLine();
     ImGui::RadioButton("set level", &mode, 2);
+    tooltip("Makes the level exactly the target (key 3)");
     brush.mode = static_cast<BrushMode>(mode);
     ImGui::SliderInt("target level", &brush.target_level, 0, kMaxBrushLevel);
+    tooltip("The level painting aims for (keys - and =)");
     int unit = static_cast<int>(brush.unit);
     ImGui::RadioButton("screen", &unit, 0);
+    tooltip("Radius in screen pixels: the brush looks the same size at any zoom");
     ImGui::SameLine();
     ImGui::RadioButton("world", &unit, 1);
+    tooltip("Radius in the mesh's units: the brush covers the same surface at any zoom");
     brush.unit = static_cast<RadiusUnit>(unit);
     if (brush.unit == RadiusUnit::ScreenPixels)
         ImGui::SliderFloat("radius (px)", &brush.radius_px, 2.0f, 400.0f, "%.0f px");
     else
         ImGui::DragFloat("radius (world)", &brush.radius_world, brush.radius_world * 0.01f, 1e-6f, 1e6f, "%.4g units");
+    tooltip("Keys [ and ]");
     ImGui::SliderFloat("falloff", &brush.falloff, 0.0f, 1.0f, "%.2f of radius");
-    if (editor.active_mode() != brush.mode) ImGui::TextColored({1.0f, 0.7f, 0.2f, 1.0f}, "Shift: inverted");
+    tooltip("The part of the radius, from the rim in, over which the level tapers off");
+    ImGui::Checkbox("paint through", &brush.paint_through);
+    tooltip("Off: only faces facing you and connected to the point under the cursor change.\n"
+            "On: everything within the radius, the far side of thin parts too.");
+    // What a drag does now: Shift visibly turns refining into removing detail.
+    const BrushMode active = editor.active_mode();
+    const std::string action = std::string(mode_name(active)) + " to level " + std::to_string(editor.active_level());
+    if (active != brush.mode) ImGui::TextColored(kInvertedColour, "Shift held: drag will %s", action.c_str());
+    else ImGui::TextDisabled("drag: %s (Shift: inverse)", action.c_str());
 }
 
 void actions_panel(Editor& editor, PanelState& state) {
-    ImGui::TextUnformatted("Whole mesh");
+    if (!ImGui::CollapsingHeader("Whole mesh", ImGuiTreeNodeFlags_DefaultOpen)) return;
     ImGui::SliderInt("##flood", &state.flood_level, 0, kMaxBrushLevel, "level %d");
     ImGui::SameLine();
     if (ImGui::Button("Set all")) editor.start_flood_fill(state.flood_level);
+    tooltip("Every face to this level, coarse to fine over the next frames (Esc stops)");
     if (ImGui::Button("Sample level under cursor (S)")) editor.sample_level_under_cursor();
     AutoLodSettings& lod = editor.auto_lod_settings();
     int budget = static_cast<int>(lod.triangle_budget);
     ImGui::DragInt("triangle budget", &budget, 1000.0f, 100, 20000000);
+    tooltip("Automatic LOD refines the longest edges until the mesh has this many triangles");
     lod.triangle_budget = static_cast<std::size_t>(std::max(budget, 100));
     float edge = static_cast<float>(lod.max_edge_fraction * 100.0);
     ImGui::SliderFloat("max edge", &edge, 0.05f, 10.0f, "%.2f %% of size", ImGuiSliderFlags_Logarithmic);
+    tooltip("Edges longer than this share of the mesh's size get refined");
     lod.max_edge_fraction = edge / 100.0;
     if (ImGui::Button("Automatic LOD")) editor.start_auto_lod();
-    if (const MeshJob* job = editor.job()) {
-        ImGui::ProgressBar(job->progress(), ImVec2(-70.0f, 0.0f), job->label().c_str());
-        ImGui::SameLine();
-        if (ImGui::Button("Cancel")) editor.cancel_job();
-    }
     const UndoHistory& history = editor.document().history();
-    if (ImGui::Button("Undo")) editor.undo();
+    const std::string undo = history.can_undo() ? "Undo " + history.undo_label() : std::string("Undo");
+    const std::string redo = history.can_redo() ? "Redo " + history.redo_label() : std::string("Redo");
+    if (ImGui::Button(undo.c_str())) editor.undo();
+    tooltip("Ctrl+Z");
     ImGui::SameLine();
-    if (ImGui::Button("Redo")) editor.redo();
-    ImGui::SameLine();
-    ImGui::Text("%zu/%zu steps", history.undo_steps(), history.undo_steps() + history.redo_steps());
-    ImGui::Text("history %.1f of %.0f MB", static_cast<double>(history.bytes()) / 1e6,
-                static_cast<double>(history.byte_bound()) / 1e6);
+    if (ImGui::Button(redo.c_str())) editor.redo();
+    tooltip("Ctrl+Shift+Z or Ctrl+Y");
+    ImGui::Text("%zu/%zu steps, history %.1f of %.0f MB", history.undo_steps(), history.undo_steps() + history.redo_steps(),
+                static_cast<double>(history.bytes()) / 1e6, static_cast<double>(history.byte_bound()) / 1e6);
 }
 
 void files_panel(Editor& editor, PanelState& state) {
-    ImGui::TextUnformatted("File");
+    // The field follows the document, and goes back to it after a file that could not be opened.
+    if (editor.document().path() != state.shown_document_path || editor.open_failures() != state.seen_open_failures) {
+        state.shown_document_path = editor.document().path();
+        state.seen_open_failures = editor.open_failures();
+        copy_path(state, state.shown_document_path);
+    }
+    if (!ImGui::CollapsingHeader("File", ImGuiTreeNodeFlags_DefaultOpen)) return;
     ImGui::InputText("path", state.path.data(), state.path.size());
-    if (ImGui::Button("Open")) editor.request_open(state.path.data());
+    tooltip("The file Open and Save as use; ... browses");
     ImGui::SameLine();
-    if (ImGui::Button("Save")) editor.save();
+    if (ImGui::Button("...")) open_browser(state, FileBrowser::Purpose::Open, state.path.data());
+    if (ImGui::Button("Open")) editor.request_open(state.path.data());
+    tooltip("Ctrl+O browses");
+    ImGui::SameLine();
+    if (ImGui::Button("Save")) editor.request_save();
+    tooltip("Ctrl+S, to the document's file");
     ImGui::SameLine();
     if (ImGui::Button("Save as")) editor.request_save_as(state.path.data());
+    tooltip("To the path above; Ctrl+Shift+S browses");
+    ImGui::SameLine();
+    if (ImGui::Button("Save strokes")) open_browser(state, FileBrowser::Purpose::SaveStrokes, state.path.data());
+    tooltip("Ctrl+E: the edits in effect as a script; rgbsub apply FILE.obj SCRIPT -o OUT.obj replays them");
     int positions = static_cast<int>(editor.save_options().positions);
     ImGui::RadioButton("displayed positions", &positions, 0);
     ImGui::SameLine();
     ImGui::RadioButton("limit", &positions, 1);
+    tooltip("Which positions a save writes: as shown, or on the Loop limit surface");
     editor.save_options().positions = static_cast<rgbio::SavedPositions>(positions);
     if (!editor.recent_files().empty() && ImGui::BeginCombo("recent", "choose a recent file")) {
         for (const std::string& recent : editor.recent_files())
             if (ImGui::Selectable(recent.c_str())) copy_path(state, recent);
         ImGui::EndCombo();
     }
-    if (!editor.message().empty()) {
-        const ImVec4 colour = editor.message_is_error() ? ImVec4(1.0f, 0.45f, 0.4f, 1.0f) : ImVec4(0.7f, 0.9f, 0.7f, 1.0f);
-        ImGui::PushTextWrapPos(0.0f);
-        ImGui::TextColored(colour, "%s", editor.message().c_str());
-        ImGui::PopTextWrapPos();
-    }
 }
 
 void display_panel(render::RenderOptions& options) {
-    ImGui::TextUnformatted("Display");
+    if (!ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) return;
     const DisplayMode* current = &kDisplayModes[0];
     for (const DisplayMode& mode : kDisplayModes)
         if (mode.shading == options.shading && mode.colouring == options.colouring) current = &mode;
@@ -124,17 +168,23 @@ void display_panel(render::RenderOptions& options) {
             if (ImGui::Selectable(mode.name, &mode == current)) current = &mode;
         ImGui::EndCombo();
     }
+    tooltip("The heat map gives every level one colour of its own");
     options.shading = current->shading;
     options.colouring = current->colouring;
     ImGui::Checkbox("wireframe", &options.wireframe);
+    tooltip("Lines fade where triangles are only a few pixels across");
     ImGui::SameLine();
     ImGui::Checkbox("base mesh", &options.base_mesh_overlay);
+    tooltip("The input's control cage over the surface");
     bool limit = options.positions == render::PositionSource::Limit;
     ImGui::Checkbox("limit positions", &limit);
+    tooltip("Show (and pick on) the Loop limit surface instead of the mesh's own positions");
     options.positions = limit ? render::PositionSource::Limit : render::PositionSource::Displayed;
+    ImGui::TextDisabled("back faces (through holes): brick-red");
 }
 
 void statistics_panel(Editor& editor, PanelState& state, double dt_s) {
+    if (!ImGui::CollapsingHeader("Statistics")) return;
     const rgb::Mesh& mesh = editor.document().mesh();
     state.histogram_age_s += dt_s;
     if (state.histogram_age_s >= kHistogramRefreshS) {
@@ -143,95 +193,107 @@ void statistics_panel(Editor& editor, PanelState& state, double dt_s) {
         state.histogram_age_s = 0.0;
     }
     const render::SurfaceGeometry& geometry = editor.document().geometry();
-    ImGui::TextUnformatted("Statistics");
     ImGui::Text("V %zu   F %zu", mesh.num_vertices(), mesh.num_faces());
     ImGui::Text("green %zu  red %zu  blue %zu", geometry.triangles_of(rgb::Colour::Green),
                 geometry.triangles_of(rgb::Colour::Red), geometry.triangles_of(rgb::Colour::Blue));
-    std::vector<float> bars(kMaxBrushLevel + 1, 0.0f);  // a fixed axis, levels 0..max
-    std::string levels;
     for (const auto& [level, count] : state.faces_per_level) {
-        bars.resize(std::max(bars.size(), static_cast<std::size_t>(level) + 1), 0.0f);
-        bars[static_cast<std::size_t>(level)] = static_cast<float>(count);
-        if (!levels.empty()) levels += ' ';
-        levels += std::to_string(level);
-        levels += ':';
-        levels += std::to_string(count);
+        const glm::vec3 c = render::level_colour(level);
+        ImGui::TextColored(ImVec4(c.r, c.g, c.b, 1.0f), "level %2d", level);
+        ImGui::SameLine();
+        ImGui::Text("%zu triangles", count);
     }
-    ImGui::PlotHistogram("##levels", bars.data(), static_cast<int>(bars.size()), 0, "triangles per level", 0.0f,
-                         FLT_MAX, ImVec2(ImGui::GetContentRegionAvail().x, 50.0f));
-    ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextUnformatted(levels.c_str());
-    ImGui::PopTextWrapPos();
-    const DabTiming& dab = editor.dab_timing();
-    ImGui::Text("last dab: engine %.2f ms, pick %.2f ms", dab.last_ms, dab.last_pick_ms);
-    ImGui::Text("          %zu splits and removals", dab.last_operations);
-    ImGui::Text("frame %.1f ms", state.frame_ms);
+    const EngineTiming& timing = editor.timing();
+    ImGui::Text("engine %.2f ms last frame (%zu operations)", timing.frame_ms, timing.frame_operations);
+    ImGui::Text("pick %.3f ms, stroke start %.3f ms", timing.last_pick_ms, timing.stroke_start_ms);
+    ImGui::Text("frame %.1f ms (without waiting for input)", state.frame_ms);
 }
 
 void shortcuts_panel() {
     if (!ImGui::CollapsingHeader("Shortcuts")) return;
     ImGui::TextUnformatted(
-        "left drag        paint (Shift: invert)\n"
+        "left drag        paint (Shift: inverse)\n"
         "right drag       orbit (or Alt+left)\n"
         "middle drag      pan (or Alt+Shift+left)\n"
-        "wheel            zoom\n"
+        "wheel            zoom to the cursor\n"
         "F / R            frame mesh / reset view\n"
         "[ / ]            smaller / larger brush\n"
+        "- / =            target level down / up\n"
         "1 2 3            refine / coarsen / set level\n"
         "S                sample level under cursor\n"
         "Ctrl+Z           undo\n"
         "Ctrl+Shift+Z, Ctrl+Y  redo\n"
+        "Ctrl+O           open (file browser)\n"
         "Ctrl+S           save\n"
+        "Ctrl+Shift+S     save as (file browser)\n"
+        "Ctrl+E           save the strokes as a script\n"
         "Ctrl+Q           quit\n"
-        "Esc              cancel running job\n"
+        "Esc              stop the work under way\n"
         "drop an OBJ on the window to open it");
 }
 
-void questions(Editor& editor) {
-    const char* title = nullptr;
-    std::string text;
-    switch (editor.pending()) {
-        case Pending::None: return;
-        case Pending::DiscardForQuit: title = "Quit?"; text = "Discard unsaved changes and quit?"; break;
-        case Pending::DiscardForOpen:
-            title = "Open?";
-            text = "Discard unsaved changes and open " + editor.pending_path() + "?";
-            break;
-        case Pending::Overwrite: title = "Overwrite?"; text = editor.pending_path() + " exists. Replace it?"; break;
+// One line at the bottom: the last message (whole in a tooltip) and the progress of what runs.
+void status_bar(Editor& editor) {
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(0.0f, display.y - kStatusBarHeight), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(display.x, kStatusBarHeight), ImGuiCond_Always);
+    ImGui::Begin("##status", nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                     ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoBringToFrontOnFocus);
+    constexpr float kProgressWidth = 320.0f;
+    std::string work;
+    float fraction = -1.0f;
+    if (const BackgroundTask* task = editor.file_task()) {
+        work = (task->kind() == BackgroundTask::Kind::Open ? "reading " : "saving ") + task->path();
+        // Reading and writing do not say how far they are: the bar sweeps, the time counts.
+        fraction = static_cast<float>(std::fmod(task->seconds(), 1.5) / 1.5);
+        char seconds[32];
+        std::snprintf(seconds, sizeof seconds, " %.1f s", task->seconds());
+        work += seconds;
+    } else if (const MeshJob* job = editor.job()) {
+        fraction = job->progress();
+        work = job->label() + (editor.jobs_waiting() > 0 ? " (+" + std::to_string(editor.jobs_waiting()) + " waiting)" : "") + ", Esc stops";
     }
-    ImGui::OpenPopup(title);
-    if (ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-        ImGui::TextUnformatted(text.c_str());
-        if (ImGui::Button("Yes")) editor.answer_pending(true);
-        ImGui::SameLine();
-        if (ImGui::Button("No")) editor.answer_pending(false);
-        ImGui::EndPopup();
+    const float message_width = display.x - (fraction >= 0.0f ? kProgressWidth + 16.0f : 8.0f);
+    ImGui::PushClipRect(ImGui::GetCursorScreenPos(), ImVec2(ImGui::GetCursorScreenPos().x + message_width, display.y), true);
+    ImGui::TextColored(editor.message_is_error() ? kErrorColour : kNoteColour, "%s", editor.message().c_str());
+    ImGui::PopClipRect();
+    if (ImGui::IsItemHovered() && !editor.message().empty()) ImGui::SetTooltip("%s", editor.message().c_str());
+    if (fraction >= 0.0f) {
+        ImGui::SameLine(display.x - kProgressWidth - 8.0f);
+        ImGui::ProgressBar(fraction, ImVec2(kProgressWidth, 0.0f), work.c_str());
     }
+    ImGui::End();
 }
 
 }  // namespace
 
 void draw_panels(Editor& editor, PanelState& state, render::RenderOptions& options, double dt_s) {
-    state.frame_ms = 0.9 * state.frame_ms + 0.1 * dt_s * 1000.0;
-    if (state.path[0] == '\0' && !editor.document().path().empty()) copy_path(state, editor.document().path());
-    // On the right: the renderer's level legend sits in the bottom-left corner.
-    ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - kPanelWidth - 8.0f, 8.0f), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(kPanelWidth, 0.0f), ImGuiCond_FirstUseEver);
-    ImGui::Begin("rgbsub");
-    ImGui::PushItemWidth(-110.0f);
-    brush_panel(editor);
-    ImGui::Separator();
-    actions_panel(editor, state);
-    ImGui::Separator();
-    files_panel(editor, state);
-    ImGui::Separator();
-    display_panel(options);
-    ImGui::Separator();
-    statistics_panel(editor, state, dt_s);
-    ImGui::Separator();
-    shortcuts_panel();
-    ImGui::PopItemWidth();
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    // Anchored to the right edge at every size, above the status bar; framing keeps the mesh clear of it.
+    ImGui::SetNextWindowPos(ImVec2(display.x - kPanelWidth - 8.0f, 8.0f), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(kPanelWidth, std::max(display.y - 16.0f - kStatusBarHeight, 100.0f)), ImGuiCond_Always);
+    state.panel_open = ImGui::Begin("rgbsub", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize);
+    editor.set_covered_right(state.panel_open ? kPanelCover : 0.0f);
+    if (state.panel_open) {
+        ImGui::PushItemWidth(-120.0f);
+        brush_panel(editor);
+        crease_panel(editor);
+        actions_panel(editor, state);
+        files_panel(editor, state);
+        display_panel(options);
+        statistics_panel(editor, state, dt_s);
+        shortcuts_panel();
+        ImGui::PopItemWidth();
+    }
     ImGui::End();
+    status_bar(editor);
+    switch (editor.take_browse_request()) {
+        case Editor::Browse::Open: open_browser(state, FileBrowser::Purpose::Open, state.path.data()); break;
+        case Editor::Browse::SaveAs: open_browser(state, FileBrowser::Purpose::SaveAs, state.path.data()); break;
+        case Editor::Browse::SaveStrokes: open_browser(state, FileBrowser::Purpose::SaveStrokes, state.path.data()); break;
+        case Editor::Browse::None: break;
+    }
+    file_browser(editor, state.browser);
     questions(editor);
 }
 

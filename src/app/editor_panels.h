@@ -1,10 +1,14 @@
 #pragma once
-// The editor's Dear ImGui panels: brush, mesh actions, files, display, statistics, shortcuts, and
-// the modal questions. Plain functions of the editor state (no GL, no window), called between
+// The editor's Dear ImGui panels: a side panel (brush, whole mesh, file, display, statistics,
+// shortcuts) anchored to the right edge, a one-line status bar at the bottom, the modal questions
+// and a file browser. Plain functions of the editor state (no GL, no window), called between
 // ImGui::NewFrame and ImGui::Render.
 #include <array>
 #include <cstddef>
+#include <cstdint>
+#include <filesystem>
 #include <map>
+#include <string>
 
 #include "render/renderer.h"
 
@@ -12,14 +16,29 @@ namespace app {
 
 class Editor;
 
+// The status bar's height in pixels (the side panel's width is kPanelWidth, editor.h).
+inline constexpr float kStatusBarHeight = 26.0f;
+
+// The file browser: a folder listing to pick a file from, and a name to type.
+struct FileBrowser {
+    enum class Purpose { None, Open, SaveAs, SaveStrokes };
+    Purpose purpose = Purpose::None;
+    std::filesystem::path folder;
+    std::array<char, 256> name{};
+};
+
 // What the panels remember between frames.
 struct PanelState {
     std::array<char, 1024> path{};
+    std::string shown_document_path;  // the document path the field last showed
+    std::uint64_t seen_open_failures = 0;
     int flood_level = 2;
-    double frame_ms = 0.0;
+    double frame_ms = 0.0;  // the window's own work in the last frame, not the wait for input
     // Level histogram, refreshed now and then (it costs a pass over the faces).
     std::map<int, std::size_t> faces_per_level;
     double histogram_age_s = 1e9;
+    FileBrowser browser;
+    bool panel_open = true;
 };
 
 // Draws every panel and applies what the user did to `editor` and `options`.

@@ -8,19 +8,23 @@ namespace app {
 
 void EditorView::draw(Editor& editor, glm::ivec2 framebuffer, double dt_s, bool show_cursor) {
     Document& document = editor.document();
-    if (attached_generation_ != document.generation()) {
-        // The mesh object was replaced (open, undo, redo): follow the new one.
-        renderer_.detach();
-        renderer_.attach(document.mesh());
-        attached_generation_ = document.generation();
-    }
     draw_panels(editor, panels_, options_, dt_s);
-    renderer_.set_positions(options_.positions);
+    options_.bottom_inset_px = kStatusBarHeight;
+    // The document's displayed triangles, which picking uses too: the renderer uploads what changed.
+    document.set_position_source(options_.positions);
+    const render::SurfaceGeometry& geometry = document.geometry();
+    const Document::DisplayChanges changes = document.take_display_changes();
+    renderer_.show(document.mesh(), geometry, changes.ranges, changes.rebuilt);
 
     options_.brush.reset();
     if (show_cursor && !ImGui::GetIO().WantCaptureMouse)
-        if (const auto hit = editor.cursor_hit())
-            options_.brush = render::BrushCursor{glm::vec3(hit->point), static_cast<float>(editor.brush_world_radius(hit->point))};
+        if (const auto hit = editor.cursor_hit()) {
+            // Orange where a drag adds detail, blue where it removes it (coarsen, or Shift).
+            const bool removes = editor.active_mode() == BrushMode::Coarsen ||
+                                 (editor.active_mode() == BrushMode::Set && editor.active_level() < editor.document().mesh().level(hit->face));
+            options_.brush = render::BrushCursor{glm::vec3(hit->point), static_cast<float>(editor.brush_world_radius(hit->point)),
+                                                 removes ? glm::vec3(0.2f, 0.55f, 1.0f) : glm::vec3(1.0f, 0.55f, 0.0f)};
+        }
     renderer_.draw(editor.camera().camera(), options_, framebuffer);
 }
 

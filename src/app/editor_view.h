@@ -22,12 +22,13 @@ public:
     void draw(Editor& editor, glm::ivec2 framebuffer, double dt_s, bool show_cursor);
 
     render::RenderOptions& options() { return options_; }
+    // The window's own work in the last frame (the wait for input left out), for the statistics.
+    void set_frame_ms(double ms) { panels_.frame_ms = ms; }
 
 private:
     render::Renderer renderer_;
     render::RenderOptions options_;
     PanelState panels_;
-    std::uint64_t attached_generation_ = ~std::uint64_t{0};
 };
 
 }  // namespace app

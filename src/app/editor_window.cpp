@@ -3,27 +3,45 @@
 #include <glad/gl.h>
 #include <GLFW/glfw3.h>
 #include <imgui.h>
-#include <imgui_internal.h>  // ErrorCheckEndFrameRecover
+#include <imgui_internal.h>  // ErrorCheckEndFrameRecover, the windows' rectangles
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 
+#include <unistd.h>
+
 #include "app/editor.h"
 #include "app/editor_view.h"
+#include "app/job_pacer.h"
 
 namespace app {
 namespace {
 
 using Clock = std::chrono::steady_clock;
 
-Editor& editor_of(GLFWwindow* window) { return *static_cast<Editor*>(glfwGetWindowUserPointer(window)); }
+struct WindowState {
+    Editor* editor = nullptr;
+    bool redraw = true;  // something happened since the last frame
+};
+
+WindowState& state_of(GLFWwindow* window) { return *static_cast<WindowState*>(glfwGetWindowUserPointer(window)); }
+Editor& editor_of(GLFWwindow* window) { return *state_of(window).editor; }
 
 Modifiers modifiers_of(int mods) {
     return {(mods & GLFW_MOD_SHIFT) != 0, (mods & GLFW_MOD_CONTROL) != 0, (mods & GLFW_MOD_ALT) != 0};
+}
+
+// The keys held now: a key event reports the modifiers as they were before it, so releasing Shift
+// would leave "Shift held" on until the next event.
+Modifiers held_modifiers(GLFWwindow* window) {
+    auto held = [&](int a, int b) { return glfwGetKey(window, a) == GLFW_PRESS || glfwGetKey(window, b) == GLFW_PRESS; };
+    return {held(GLFW_KEY_LEFT_SHIFT, GLFW_KEY_RIGHT_SHIFT), held(GLFW_KEY_LEFT_CONTROL, GLFW_KEY_RIGHT_CONTROL),
+            held(GLFW_KEY_LEFT_ALT, GLFW_KEY_RIGHT_ALT)};
 }
 
 std::optional<Key> key_of(int glfw_key) {
@@ -35,8 +53,11 @@ std::optional<Key> key_of(int glfw_key) {
         case GLFW_KEY_S: return Key::S;
         case GLFW_KEY_O: return Key::O;
         case GLFW_KEY_Q: return Key::Q;
+        case GLFW_KEY_E: return Key::E;
         case GLFW_KEY_LEFT_BRACKET: return Key::LeftBracket;
         case GLFW_KEY_RIGHT_BRACKET: return Key::RightBracket;
+        case GLFW_KEY_MINUS: return Key::Minus;
+        case GLFW_KEY_EQUAL: return Key::Equal;
         case GLFW_KEY_1: return Key::Digit1;
         case GLFW_KEY_2: return Key::Digit2;
         case GLFW_KEY_3: return Key::Digit3;
@@ -65,36 +86,59 @@ glm::vec2 to_pixels(GLFWwindow* window, double x, double y) {
             static_cast<float>(y) * static_cast<float>(fh) / static_cast<float>(std::max(h, 1))};
 }
 
-// Installed before ImGui's backend, which chains to them; ImGui gets first say over the panels.
-// Every callback runs through Editor::run_guarded: an exception must not unwind through GLFW's C
-// frames (that terminates the program and loses the document).
+// Whether a click at window position (x, y) belongs to the panels: a modal dialog is open, or an
+// ImGui window drawn last frame covers the point. Decided at the click's own position: ImGui's
+// WantCaptureMouse is from the previous frame's mouse position, so a click right after a jump of
+// the pointer onto the panel went through to the mesh.
+bool panels_take(double x, double y) {
+    if (ImGui::GetTopMostPopupModal() != nullptr) return true;
+    const ImVec2 p(static_cast<float>(x), static_cast<float>(y));
+    for (ImGuiWindow* window : ImGui::GetCurrentContext()->Windows)
+        if (window->WasActive && !window->Hidden && window->Rect().Contains(p)) return true;
+    return false;
+}
+
+// Installed before ImGui's backend, which chains to them. Every callback runs through
+// Editor::run_guarded: an exception must not unwind through GLFW's C frames (that terminates the
+// program and loses the document).
 void install_callbacks(GLFWwindow* window) {
     glfwSetCursorPosCallback(window, [](GLFWwindow* w, double x, double y) {
+        state_of(w).redraw = true;
         editor_of(w).run_guarded([&] { editor_of(w).mouse_moved(to_pixels(w, x, y)); });
     });
     glfwSetMouseButtonCallback(window, [](GLFWwindow* w, int button, int action, int mods) {
+        state_of(w).redraw = true;
         const std::optional<MouseButton> b = button_of(button);
         if (!b) return;
+        double x = 0.0, y = 0.0;
+        glfwGetCursorPos(w, &x, &y);
         editor_of(w).run_guarded([&] {
-            if (action == GLFW_PRESS && !ImGui::GetIO().WantCaptureMouse) editor_of(w).mouse_pressed(*b, modifiers_of(mods));
+            if (action == GLFW_PRESS && !panels_take(x, y)) editor_of(w).mouse_pressed(*b, modifiers_of(mods));
             if (action == GLFW_RELEASE) editor_of(w).mouse_released(*b);
         });
     });
     glfwSetScrollCallback(window, [](GLFWwindow* w, double, double dy) {
-        if (!ImGui::GetIO().WantCaptureMouse) editor_of(w).run_guarded([&] { editor_of(w).scrolled(static_cast<float>(dy)); });
+        state_of(w).redraw = true;
+        double x = 0.0, y = 0.0;
+        glfwGetCursorPos(w, &x, &y);
+        if (!panels_take(x, y)) editor_of(w).run_guarded([&] { editor_of(w).scrolled(static_cast<float>(dy)); });
     });
     glfwSetKeyCallback(window, [](GLFWwindow* w, int key, int, int action, int mods) {
-        editor_of(w).set_modifiers(modifiers_of(mods));
+        state_of(w).redraw = true;
         if (action == GLFW_RELEASE || ImGui::GetIO().WantCaptureKeyboard) return;
         if (const std::optional<Key> k = key_of(key)) editor_of(w).run_guarded([&] { editor_of(w).key_pressed(*k, modifiers_of(mods)); });
     });
     glfwSetDropCallback(window, [](GLFWwindow* w, int count, const char** paths) {
+        state_of(w).redraw = true;
         if (count > 0) editor_of(w).run_guarded([&] { editor_of(w).request_open(paths[0]); });
     });
     glfwSetWindowCloseCallback(window, [](GLFWwindow* w) {
+        state_of(w).redraw = true;
         glfwSetWindowShouldClose(w, GLFW_FALSE);  // the editor decides, after asking
         editor_of(w).request_quit();
     });
+    glfwSetWindowSizeCallback(window, [](GLFWwindow* w, int, int) { state_of(w).redraw = true; });
+    glfwSetWindowFocusCallback(window, [](GLFWwindow* w, int) { state_of(w).redraw = true; });
 }
 
 GLFWwindow* open_window() {
@@ -115,19 +159,51 @@ GLFWwindow* open_window() {
     return window;
 }
 
-void run_loop(GLFWwindow* window, Editor& editor, const WindowLaunch& launch, Clock::time_point start) {
+// Whether frames must keep coming without input: work to show, files to take, or a stroke.
+bool working(const Editor& editor) { return editor.job() != nullptr || editor.painting() || editor.file_task() != nullptr; }
+
+// Whether the frames only wait for a file read or written on another thread: then they come a few
+// times a second, to move the progress bar and take the result, and leave the processor to it.
+bool only_waiting_for_a_file(const Editor& editor) { return editor.job() == nullptr && !editor.painting() && editor.file_task() != nullptr; }
+
+void run_loop(GLFWwindow* window, WindowState& state, const WindowLaunch& launch, Clock::time_point start) {
+    Editor& editor = *state.editor;
     EditorView view;
+    JobPacer pacer;
     std::string title;
     auto last = Clock::now();
+    bool file_shown = !launch.file;
+    int frames_after_shown = 0;
+    // Read in the background, so the window is there at once; after the recovery question, if
+    // there is one, and not over recovered work.
+    std::optional<std::string> to_open = launch.file;
     for (int frame = 0; !glfwWindowShouldClose(window) && !editor.should_quit(); ++frame) {
-        if (launch.frames && frame >= *launch.frames) break;
-        // Idle: sleep until input arrives (but keep drawing while a job or a stroke runs).
-        if (editor.job() != nullptr || editor.painting() || frame < 2) glfwPollEvents();
-        else glfwWaitEventsTimeout(0.25);
+        if (to_open && editor.pending() == Pending::None && editor.file_task() == nullptr) {
+            if (!editor.document().dirty()) editor.request_open(*to_open);
+            to_open.reset();
+        }
+        if (launch.frames && file_shown && frames_after_shown >= *launch.frames) break;
+        // Idle: sleep until input arrives (waking now and then for the recovery copy's timer), and
+        // draw only if something happened. Counted frames (--frames) are always drawn.
+        if (only_waiting_for_a_file(editor) && frame >= 2) {
+            glfwWaitEventsTimeout(0.05);
+        } else if (working(editor) || frame < 2 || launch.frames) {
+            glfwPollEvents();
+        } else {
+            glfwWaitEventsTimeout(1.0);
+            if (!state.redraw && !working(editor)) {
+                const std::string message = editor.message();
+                editor.run_guarded([&] { editor.update(pacer.slice()); });
+                if (editor.message() == message) continue;
+            }
+        }
+        state.redraw = false;
+        const auto frame_start = Clock::now();
         int fw = 1, fh = 1;
         glfwGetFramebufferSize(window, &fw, &fh);
         editor.set_viewport({fw, fh});
-        editor.run_guarded([&] { editor.update(); });
+        editor.set_modifiers(held_modifiers(window));
+        editor.run_guarded([&] { editor.update(pacer.slice()); });
         if (editor.window_title() != title) {
             title = editor.window_title();
             glfwSetWindowTitle(window, title.c_str());
@@ -144,9 +220,17 @@ void run_loop(GLFWwindow* window, Editor& editor, const WindowLaunch& launch, Cl
         ImGui::Render();
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
         glfwSwapBuffers(window);
-        if (frame == 0 && launch.frames)
-            std::printf("first frame after %.1f ms\n",
-                        std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+        const double frame_ms = std::chrono::duration<double, std::milli>(Clock::now() - frame_start).count();
+        view.set_frame_ms(frame_ms);
+        pacer.frame_drawn(frame_ms - editor.timing().frame_ms);
+        if (launch.frames && frame == 0)
+            std::printf("first frame after %.1f ms\n", std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+        if (!file_shown && editor.file_task() == nullptr && !to_open) {
+            file_shown = true;
+            if (launch.frames)
+                std::printf("file shown after %.1f ms\n", std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+        }
+        frames_after_shown += file_shown;
     }
 }
 
@@ -167,9 +251,12 @@ int run_editor_window(const WindowLaunch& launch) {
         glfwTerminate();
         return 2;
     }
-    Editor editor;
-    if (launch.file) editor.open(*launch.file);  // a load error shows in the panel
-    glfwSetWindowUserPointer(window, &editor);
+    EditorOptions options;
+    options.recovery_folder = RecoveryStore::default_folder();
+    options.covered_right = kPanelCover;
+    Editor editor(options);
+    WindowState state{&editor};
+    glfwSetWindowUserPointer(window, &state);
     install_callbacks(window);
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
@@ -177,12 +264,19 @@ int run_editor_window(const WindowLaunch& launch) {
     ImGui::StyleColorsDark();
     ImGui_ImplGlfw_InitForOpenGL(window, true);
     ImGui_ImplOpenGL3_Init("#version 330 core");
-    run_loop(window, editor, launch, start);
+    run_loop(window, state, launch, start);
+    if (editor.should_quit() || launch.frames) editor.close_session();
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();
     glfwDestroyWindow(window);
     glfwTerminate();
+    // A file still being read when the user quit: its thread holds nothing worth waiting for, and
+    // must not outlive the program's static objects.
+    if (BackgroundTask::running() > 0) {
+        std::fflush(nullptr);
+        std::_Exit(0);
+    }
     return 0;
 }
 

@@ -8,7 +8,8 @@ namespace app {
 
 struct WindowLaunch {
     std::optional<std::string> file;  // opened at start; the default mesh is the caller's choice
-    // Quit after this many frames (benchmarks and smoke tests); prints the time to the first frame.
+    // Quit after this many frames once the file is shown (benchmarks and smoke tests); prints the
+    // times from launch to the first frame and to the file shown.
     std::optional<int> frames;
 };
 

@@ -1,9 +1,9 @@
 #pragma once
-// "Set all to level N": every face refined or coarsened to level N, as a MeshJob that feeds the
-// engine a batch of base faces per step.
-#include <cstdint>
+// "Set all to level N": every face refined or coarsened to level N, coarse to fine, as a RequestJob
+// of canonical pieces (request_pieces.h); the script line `level N` says it exactly.
+#include <memory>
 
-#include "app/mesh_job.h"
+#include "app/request_job.h"
 
 namespace rgb {
 class Mesh;
@@ -11,19 +11,6 @@ class Mesh;
 
 namespace app {
 
-class FloodFillJob : public MeshJob {
-public:
-    FloodFillJob(rgb::Mesh& mesh, int level);
-    bool step(std::chrono::microseconds slice) override;
-    float progress() const override;
-    bool changed() const override { return changed_; }
-    std::string label() const override;
-
-private:
-    rgb::Mesh& mesh_;
-    int level_;
-    std::uint32_t next_base_face_ = 0;
-    bool changed_ = false;
-};
+std::unique_ptr<RequestJob> make_flood_fill(rgb::Mesh& mesh, int level);
 
 }  // namespace app

@@ -36,6 +36,7 @@ struct ImGuiSession {
 
 render::Image render_editor_frame(const std::string& file, const HeadlessFrame& frame) {
     Editor editor(frame.size);
+    editor.set_covered_right(kPanelCover);
     editor.load(file);
     render::OffscreenContext context(frame.size.x, frame.size.y);
     ImGuiSession session;

@@ -15,8 +15,9 @@ struct HeadlessFrame {
     render::Shading shading = render::Shading::Smooth;
     render::Colouring colouring = render::Colouring::Plain;
     bool wireframe = false;
-    // Where the mouse rests, as a fraction of the size (the brush cursor shows there).
-    glm::vec2 cursor{0.5f, 0.5f};
+    // Where the mouse rests, as a fraction of the size (the brush cursor shows there): the middle of
+    // what the panel leaves free.
+    glm::vec2 cursor{0.37f, 0.5f};
 };
 
 // Opens `file` in an editor and renders one frame of it. Throws rgbio::ObjError when the file cannot

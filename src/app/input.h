@@ -5,7 +5,7 @@ namespace app {
 
 enum class MouseButton { Left, Right, Middle };
 
-enum class Key { F, R, Z, Y, S, O, Q, LeftBracket, RightBracket, Digit1, Digit2, Digit3, Digit4, Digit5, Escape };
+enum class Key { F, R, Z, Y, S, O, Q, E, LeftBracket, RightBracket, Minus, Equal, Digit1, Digit2, Digit3, Digit4, Digit5, Escape };
 
 struct Modifiers {
     bool shift = false;

@@ -3,64 +3,105 @@
 #include <utility>
 
 #include "rgb/mesh.h"
+#include "rgb/state.h"
 
 namespace app {
 
-std::size_t state_bytes(const rgb::MeshState& state) {
-    return state.base_positions.capacity() * sizeof(glm::dvec3) + state.base_triangles.capacity() * sizeof(rgb::Triangle) +
-           state.vertices.capacity() * sizeof(rgb::SurfacePoint) + state.faces.capacity() * sizeof(rgb::Triangle);
+UndoHistory::UndoHistory(rgb::Mesh& mesh, std::size_t byte_bound) : mesh_(mesh), journal_(mesh), byte_bound_(byte_bound) {}
+
+void UndoHistory::begin_edit(std::string label) {
+    forget_if_stale();
+    pending_label_ = std::move(label);
+    journal_.start();
 }
 
-UndoHistory::Step UndoHistory::make_step(std::string label, rgb::MeshState state) {
-    const std::size_t bytes = state_bytes(state);
-    return Step{std::move(label), std::move(state), bytes};
+void UndoHistory::end_edit(bool changed, std::optional<std::string> script) {
+    if (!journal_.recording()) return;
+    rgb::JournalRecord record = journal_.stop();
+    if (!changed || record.empty()) return;
+    for (const Step& step : redo_) bytes_ -= step.record.bytes();
+    redo_.clear();
+    push(undo_, Step{std::move(pending_label_), std::move(record), std::move(script), std::nullopt});
 }
 
-void UndoHistory::begin_edit(const rgb::Mesh& mesh, std::string label) {
-    pending_ = make_step(std::move(label), rgb::capture_state(mesh));
+void UndoHistory::retag(std::string label, const rgb::SharpFeatures& features) {
+    forget_if_stale();
+    rgb::SharpFeatures replaced = mesh_.base().sharp_features();
+    rgb::set_sharp_features(mesh_, features);
+    for (const Step& step : redo_) bytes_ -= step.record.bytes();
+    redo_.clear();
+    push(undo_, Step{std::move(label), {}, std::nullopt, std::move(replaced)});
 }
 
-void UndoHistory::end_edit(const rgb::Mesh& /*mesh*/, bool changed) {
-    if (!pending_) return;
-    if (changed) {
-        for (const Step& step : redo_) bytes_ -= step.bytes;
-        redo_.clear();
-        bytes_ += pending_->bytes;
-        undo_.push_back(std::move(*pending_));
-        enforce_bound();
+bool UndoHistory::abandon_edit() {
+    if (!journal_.recording()) return false;
+    const rgb::JournalRecord record = journal_.stop();
+    try {
+        journal_.revert(record);
+    } catch (...) {
+        clear();
+        throw;
     }
-    pending_.reset();
+    return true;
 }
 
-std::optional<rgb::Mesh> UndoHistory::abandon_edit() {
-    if (!pending_) return std::nullopt;
-    const Step step = std::move(*pending_);
-    pending_.reset();
-    return rgb::restore_state(step.other);
-}
-
-std::optional<rgb::Mesh> UndoHistory::cross(std::deque<Step>& from, std::deque<Step>& to, const rgb::Mesh& current) {
-    if (from.empty()) return std::nullopt;
+bool UndoHistory::cross(std::deque<Step>& from, std::deque<Step>& to) {
+    forget_if_stale();
+    if (from.empty() || journal_.recording()) return false;
     Step step = std::move(from.back());
     from.pop_back();
-    rgb::Mesh restored = rgb::restore_state(step.other);
-    bytes_ -= step.bytes;
-    Step opposite = make_step(std::move(step.label), rgb::capture_state(current));
-    bytes_ += opposite.bytes;
-    to.push_back(std::move(opposite));
-    enforce_bound();
-    return restored;
+    bytes_ -= step.record.bytes();
+    if (step.retag) {
+        rgb::SharpFeatures replaced = mesh_.base().sharp_features();
+        rgb::set_sharp_features(mesh_, *step.retag);
+        push(to, Step{std::move(step.label), {}, std::move(step.script), std::move(replaced)});
+        return true;
+    }
+    journal_.start();
+    try {
+        journal_.revert(step.record);
+    } catch (...) {
+        // Half reverted, or the mesh no longer fits the records: none can be trusted.
+        journal_.stop();
+        clear();
+        throw;
+    }
+    push(to, Step{std::move(step.label), journal_.stop(), std::move(step.script), std::nullopt});
+    return true;
 }
 
-std::optional<rgb::Mesh> UndoHistory::undo(const rgb::Mesh& current) { return cross(undo_, redo_, current); }
+bool UndoHistory::undo() { return cross(undo_, redo_); }
 
-std::optional<rgb::Mesh> UndoHistory::redo(const rgb::Mesh& current) { return cross(redo_, undo_, current); }
+bool UndoHistory::redo() { return cross(redo_, undo_); }
 
 void UndoHistory::clear() {
     undo_.clear();
     redo_.clear();
-    pending_.reset();
     bytes_ = 0;
+    forgotten_ = {};
+}
+
+UndoHistory::SessionScript UndoHistory::session_script() const {
+    SessionScript session = forgotten_;
+    for (const Step& step : undo_) {
+        if (step.script) session.text += *step.script;
+        else ++session.unscripted_steps;
+    }
+    return session;
+}
+
+void UndoHistory::forget_if_stale() {
+    if (!journal_.take_unrecorded_change()) return;
+    SessionScript in_effect = session_script();
+    ++in_effect.unscripted_steps;  // the change itself
+    clear();
+    forgotten_ = std::move(in_effect);
+}
+
+void UndoHistory::push(std::deque<Step>& side, Step step) {
+    bytes_ += step.record.bytes();
+    side.push_back(std::move(step));
+    enforce_bound();
 }
 
 void UndoHistory::set_byte_bound(std::size_t bound) {
@@ -72,7 +113,12 @@ void UndoHistory::set_byte_bound(std::size_t bound) {
 void UndoHistory::enforce_bound() {
     while (bytes_ > byte_bound_ && (!undo_.empty() || !redo_.empty())) {
         std::deque<Step>& side = undo_.empty() ? redo_ : undo_;
-        bytes_ -= side.front().bytes;
+        if (&side == &undo_) {
+            // Still in effect, only no longer undoable.
+            if (side.front().script) forgotten_.text += *side.front().script;
+            else ++forgotten_.unscripted_steps;
+        }
+        bytes_ -= side.front().record.bytes();
         side.pop_front();
     }
 }

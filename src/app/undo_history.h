@@ -1,15 +1,20 @@
 #pragma once
 // Undo/redo per stroke or action, bit for bit, within a memory bound.
 //
-// This version keeps whole-state snapshots (rgb::capture_state) and hands back a restored mesh; the
-// core's undo journal (recording only the slots an edit touches) replaces it behind this same
-// interface: begin_edit / end_edit around every change, undo / redo to step.
+// Each step is the record of rgb::Journal (rgb/journal.h) for one edit: starting an edit costs O(1),
+// undoing or redoing it costs in proportion to what it changed, and so does its memory. Undo and
+// redo change the mesh in place through its ordinary operations, so whatever observes the mesh
+// (the renderer's buffers, the picking index) updates only what changed.
+//
+// A step also keeps what it did as script lines (io/lod_script.h) when a script can say it, so the
+// edits in effect can be saved as a script that `rgbsub apply` replays to the same mesh.
 #include <cstddef>
 #include <deque>
 #include <optional>
 #include <string>
 
-#include "rgb/state.h"
+#include "rgb/journal.h"
+#include "rgb/sharp_features.h"
 
 namespace rgb {
 class Mesh;
@@ -19,15 +24,21 @@ namespace app {
 
 class UndoHistory {
 public:
-    explicit UndoHistory(std::size_t byte_bound = std::size_t{1} << 30) : byte_bound_(byte_bound) {}
+    // Follows `mesh` (for the history's lifetime); every change of it must happen inside an edit.
+    explicit UndoHistory(rgb::Mesh& mesh, std::size_t byte_bound = std::size_t{1} << 30);
 
-    // Around one undoable change of `mesh`. end_edit with changed == false forgets it.
-    void begin_edit(const rgb::Mesh& mesh, std::string label);
-    void end_edit(const rgb::Mesh& mesh, bool changed);
-    bool editing() const { return pending_.has_value(); }
-    // Ends the edit under way without a step and hands back the mesh as it was at begin_edit (for
-    // an edit that failed half-way). Empty when no edit is under way.
-    std::optional<rgb::Mesh> abandon_edit();
+    // Around one undoable change of the mesh. end_edit with changed == false forgets it; `script`
+    // says what it did, if a script can.
+    void begin_edit(std::string label);
+    void end_edit(bool changed, std::optional<std::string> script = std::nullopt);
+    bool editing() const { return journal_.recording(); }
+    // Gives the base mesh other crease tags (rgb::set_sharp_features) as one step, outside any edit:
+    // a retag keeps every slot, so the journal's records stay valid, and its step sets the tags it
+    // replaced back. Throws std::invalid_argument for refused tags (nothing changes then).
+    void retag(std::string label, const rgb::SharpFeatures& features);
+    // Ends the edit under way without a step and puts the mesh back as it was at begin_edit (for an
+    // edit that failed half-way). False when no edit is under way.
+    bool abandon_edit();
 
     bool can_undo() const { return !undo_.empty(); }
     bool can_redo() const { return !redo_.empty(); }
@@ -36,10 +47,18 @@ public:
     std::size_t undo_steps() const { return undo_.size(); }
     std::size_t redo_steps() const { return redo_.size(); }
 
-    // Step back/forward: the mesh as it was. Empty when there is nothing to step to.
-    std::optional<rgb::Mesh> undo(const rgb::Mesh& current);
-    std::optional<rgb::Mesh> redo(const rgb::Mesh& current);
+    // Step back/forward; false when there is nothing to step to.
+    bool undo();
+    bool redo();
     void clear();
+
+    // The script of every step in effect (undone ones left out, those forgotten for the memory
+    // bound kept), and how many of them no script could say.
+    struct SessionScript {
+        std::string text;
+        std::size_t unscripted_steps = 0;
+    };
+    SessionScript session_script() const;
 
     std::size_t bytes() const { return bytes_; }
     std::size_t byte_bound() const { return byte_bound_; }
@@ -48,22 +67,26 @@ public:
 private:
     struct Step {
         std::string label;
-        rgb::MeshState other;  // the state on the other side of the step
-        std::size_t bytes = 0;
+        rgb::JournalRecord record;  // what the step did; reverting it crosses to the other side
+        std::optional<std::string> script;
+        // For a retag, the tags that crossing the step sets (then `record` is empty).
+        std::optional<rgb::SharpFeatures> retag;
     };
-    static Step make_step(std::string label, rgb::MeshState state);
-    // Pops the newest step of `from`, pushes its opposite onto `to` and returns the mesh it restores.
-    std::optional<rgb::Mesh> cross(std::deque<Step>& from, std::deque<Step>& to, const rgb::Mesh& current);
+    // Pops the newest step of `from`, reverts it, and pushes the reversal's record onto `to`.
+    bool cross(std::deque<Step>& from, std::deque<Step>& to);
+    // A change made outside any edit: records from before it no longer fit the mesh.
+    void forget_if_stale();
+    void push(std::deque<Step>& side, Step step);
     void enforce_bound();
 
+    rgb::Mesh& mesh_;
+    rgb::Journal journal_;
     std::size_t byte_bound_;
     std::size_t bytes_ = 0;
     std::deque<Step> undo_;  // oldest first
     std::deque<Step> redo_;  // most recently undone last
-    std::optional<Step> pending_;
+    std::string pending_label_;
+    SessionScript forgotten_;  // steps in effect that the bound dropped from undo_
 };
-
-// What a state costs to keep.
-std::size_t state_bytes(const rgb::MeshState& state);
 
 }  // namespace app

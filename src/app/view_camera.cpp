@@ -51,9 +51,13 @@ void ViewCamera::pan(glm::vec2 delta_px, glm::ivec2 viewport) {
     fit_clip_planes();
 }
 
-void ViewCamera::zoom(float steps) {
-    camera_.distance *= std::pow(kZoomFactorPerStep, steps);
-    camera_.distance = std::clamp(camera_.distance, 1e-3f * scene_.radius, 100.0f * scene_.radius);
+// Scaling the eye and the target about the anchor keeps the view direction, so the anchor stays on
+// the same pixel.
+void ViewCamera::zoom(float steps, const glm::dvec3& anchor) {
+    const float wanted = std::clamp(camera_.distance * std::pow(kZoomFactorPerStep, steps), 1e-3f * scene_.radius, 100.0f * scene_.radius);
+    const double factor = static_cast<double>(wanted) / static_cast<double>(camera_.distance);
+    camera_.target = glm::vec3(anchor + (glm::dvec3(camera_.target) - anchor) * factor);
+    camera_.distance = wanted;
     fit_clip_planes();
 }
 

@@ -23,8 +23,8 @@ public:
     // Mouse deltas in pixels.
     void orbit(glm::vec2 delta_px);
     void pan(glm::vec2 delta_px, glm::ivec2 viewport);
-    // Wheel steps: positive zooms in.
-    void zoom(float steps);
+    // Wheel steps: positive zooms in, towards `anchor`, which stays where it is on the screen.
+    void zoom(float steps, const glm::dvec3& anchor);
 
     const render::OrbitCamera& camera() const { return camera_; }
     // The ray from the eye through pixel `px` (origin top left, y down).

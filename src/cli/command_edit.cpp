@@ -38,7 +38,8 @@ int run_edit(std::span<const std::string> args) {
     if (arguments.has("--help")) {
         std::cout << "usage: rgbsub edit [FILE.obj] [--frames N] [--screenshot OUT.png [--mode MODE]] [--strict]\n"
                      "Opens the editor window (needs a display) on FILE.obj, or on the default mesh.\n"
-                     "  --frames N          quit after N frames and print the time to the first frame\n"
+                     "  --frames N          quit after N frames once FILE is shown, printing the times\n"
+                     "                      from launch to the first frame and to FILE shown\n"
                      "  --screenshot PATH   write one editor frame, panels included, as a PNG and exit\n"
                      "                      (headless through OSMesa: no display needed)\n"
                      "  --mode MODE         for the screenshot: shaded, wire, rgb or level\n"

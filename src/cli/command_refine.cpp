@@ -1,4 +1,4 @@
-// rgbsub refine IN.obj -o OUT.obj (--level N | --max-edge L | --tolerance E) [--sphere X,Y,Z,R] [--positions ...]
+// rgbsub refine IN.obj -o OUT.obj (--level N | --max-edge L | --tolerance E) [--sphere X,Y,Z,R] [--positions ...] [--sharp-angle DEG]
 #include <charconv>
 #include <cmath>
 #include <iostream>
@@ -51,11 +51,13 @@ std::optional<rgbio::DetailEdit> detail_edit(const Arguments& arguments) {
 
 int run_refine(std::span<const std::string> args) {
     const Arguments arguments(args, {"--normals", "--plain", kStrictSwitch},
-                              {"--output", "--level", "--max-edge", "--tolerance", "--sphere", "--positions", "--max-triangles"},
+                              {"--output", "--level", "--max-edge", "--tolerance", "--sphere", "--positions", "--max-triangles",
+                               kSharpAngleOption, kBoundaryOption},
                               {{"-o", "--output"}});
     if (arguments.has("--help")) {
         std::cout << "usage: rgbsub refine IN.obj -o OUT.obj (--level N | --max-edge L | --tolerance E) [--sphere X,Y,Z,R]\n"
                      "                     [--positions display|limit] [--normals] [--max-triangles N] [--plain] [--strict]\n"
+                     "                     [--sharp-angle DEG] [--boundary edge-only|edge-and-corner]\n"
                      "Sets the level of detail inside the sphere (everywhere without --sphere; its coordinates are\n"
                      "those of IN.obj's base mesh), by one of:\n"
                      "  --level N       every face meeting the sphere gets level N (0.." << rgb::kMaxLevel << ")\n"
@@ -68,7 +70,7 @@ int run_refine(std::span<const std::string> args) {
                      "--max-edge and --tolerance, found) to exceed --max-triangles (default: from this machine's\n"
                      "memory) is refused and nothing is saved.\n"
                      "--plain writes an OBJ without the adaptive state (#rgb lines), for tools that dislike them.\n"
-                  << kStrictHelp;
+                  << kStrictHelp << kSharpHelp;
         return exit_ok;
     }
     if (arguments.positional().size() != 1) throw UsageError("expects exactly one IN.obj");
@@ -90,7 +92,7 @@ int run_refine(std::span<const std::string> args) {
     const std::string& input = arguments.positional()[0];
 
     std::vector<std::string> warnings;
-    rgb::Mesh mesh = rgbio::load_mesh(input, &warnings, read_options(arguments));
+    rgb::Mesh mesh = with_sharp_options(arguments, rgbio::load_mesh(input, &warnings, read_options(arguments)));
     print_warnings("refine", input, warnings);
     if (detail) {
         rgbio::DetailOutcome outcome;

@@ -25,7 +25,7 @@ namespace {
 constexpr std::string_view kUsage =
     "usage: rgbsub render IN.obj -o OUT.png [--size WxH] [--mode shaded|flat|rgb|level] [--wire]\n"
     "                     [--view AZIMUTH,ELEVATION] [--limit] [--base] [--screen-lod PX [--lod-view AZ,EL]]\n"
-    "                     [--max-triangles N] [--strict]\n"
+    "                     [--max-triangles N] [--strict] [--sharp-angle DEG] [--boundary edge-only|edge-and-corner]\n"
     "Renders the mesh headless (OSMesa, no display needed), framed automatically.\n"
     "  -o, --output PATH   the PNG to write (saved like OBJ files: see the README)\n"
     "  --size WxH          image size in pixels (default 1024x768)\n"
@@ -41,6 +41,8 @@ constexpr std::string_view kUsage =
     "                      or on faces turned away goes (the editor's view-dependent mode, settled)\n"
     "  --lod-view AZ,EL    set that detail for another view of the same framing (to see it from aside)\n"
     "  --strict            refuse a non-manifold input instead of cutting it apart\n"
+    "  --sharp-angle DEG, --boundary B   crease tags added to the file's (see rgbsub refine --help);\n"
+    "                      sharp edges are drawn as coloured lines\n"
     "The same input gives the same bytes.\n";
 
 constexpr int kMaxImageSide = 8192;
@@ -95,7 +97,9 @@ void apply_mode(const std::string& mode, render::RenderOptions& options) {
 
 int run_render(std::span<const std::string> args) {
     const Arguments arguments(args, {"--wire", "--limit", "--base", kStrictSwitch},
-                              {"--output", "--size", "--mode", "--view", "--screen-lod", "--lod-view", "--max-triangles"}, {{"-o", "--output"}});
+                              {"--output", "--size", "--mode", "--view", "--screen-lod", "--lod-view", "--max-triangles", kSharpAngleOption,
+                               kBoundaryOption},
+                              {{"-o", "--output"}});
     if (arguments.has("--help")) {
         std::cout << kUsage;
         return exit_ok;
@@ -130,7 +134,7 @@ int run_render(std::span<const std::string> args) {
 
     const std::string& input = arguments.positional().front();
     std::vector<std::string> warnings;
-    rgb::Mesh mesh = rgbio::load_mesh(input, &warnings, read_options(arguments));
+    rgb::Mesh mesh = with_sharp_options(arguments, rgbio::load_mesh(input, &warnings, read_options(arguments)));
     for (const std::string& warning : warnings) std::cerr << "rgbsub render: " << input << ": " << warning << '\n';
     render::Image image;
     try {

@@ -3,6 +3,8 @@
 #include <iostream>
 
 #include "cli/commands.h"
+#include "rgb/sharp_angle.h"
+#include "rgb/state.h"
 
 namespace cli {
 
@@ -11,6 +13,25 @@ void print_warnings(const char* command, const std::string& file, const std::vec
 }
 
 rgbio::ReadOptions read_options(const Arguments& arguments) { return {.strict = arguments.has(kStrictSwitch)}; }
+
+rgb::Mesh with_sharp_options(const Arguments& arguments, rgb::Mesh mesh) {
+    const std::optional<std::string> boundary = arguments.value(kBoundaryOption);
+    if (!arguments.has(kSharpAngleOption) && !boundary) return mesh;
+    rgb::SharpFeatures features = mesh.base().sharp_features();
+    if (boundary) {
+        const auto parsed = rgb::parse_boundary_interpolation(*boundary);
+        if (!parsed) throw UsageError("--boundary must be 'edge-only' or 'edge-and-corner', not '" + *boundary + "'");
+        features.boundary = *parsed;
+    }
+    if (arguments.has(kSharpAngleOption)) {
+        const double degrees = arguments.number(kSharpAngleOption, 0.0);
+        if (degrees < 0.0 || degrees > 180.0) throw UsageError("--sharp-angle must be between 0 and 180 degrees");
+        // Later tags replace earlier ones (BaseMesh), so an edge the file tags semi-sharp becomes infinite.
+        for (const rgb::EdgeSharpness& e : rgb::edges_sharper_than(mesh.base(), degrees)) features.edges.push_back(e);
+    }
+    if (features == mesh.base().sharp_features()) return mesh;
+    return rgb::with_sharp_features(mesh, features);
+}
 
 rgbio::SavedPositions parse_positions(const std::string& value) {
     if (value == "display") return rgbio::SavedPositions::Displayed;

@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "io/atomic_file.h"
+#include "io/crease_tags.h"
 #include "io/number_format.h"
 #include "io/obj_error.h"
 #include "io/obj_reader.h"
@@ -19,17 +20,6 @@ namespace {
 
 glm::dvec3 written_position(const rgb::Mesh& mesh, rgb::VertexId v, SavedPositions which) {
     return which == SavedPositions::Limit ? rgb::limit_position(mesh, v) : rgb::displayed_position(mesh, v);
-}
-
-std::vector<glm::dvec3> written_positions(const rgb::Mesh& mesh, SavedPositions which, std::vector<std::uint32_t>& obj_index) {
-    std::vector<glm::dvec3> positions;
-    positions.reserve(mesh.num_vertices());
-    obj_index.assign(mesh.vertex_capacity(), UINT32_MAX);
-    for (rgb::VertexId v : mesh.vertices()) {
-        obj_index[v.idx] = static_cast<std::uint32_t>(positions.size());
-        positions.push_back(written_position(mesh, v, which));
-    }
-    return positions;
 }
 
 std::vector<glm::dvec3> vertex_normals(const std::vector<glm::dvec3>& positions, const std::vector<rgb::Triangle>& triangles) {
@@ -48,7 +38,7 @@ std::vector<glm::dvec3> vertex_normals(const std::vector<glm::dvec3>& positions,
 
 rgb::Mesh build_mesh(const LoadedMesh& loaded) {
     if (loaded.adaptive) return *loaded.adaptive;
-    return rgb::Mesh(loaded.positions, loaded.triangles);
+    return rgb::Mesh(std::make_shared<const rgb::BaseMesh>(loaded.positions, loaded.triangles, loaded.sharp_features));
 }
 
 rgb::Mesh load_mesh(const std::string& path, std::vector<std::string>* warnings, const ReadOptions& options) {
@@ -68,39 +58,46 @@ struct StringOutput {
 };
 
 // Appends the OBJ text record by record; Output is StringOutput or AtomicFileWriter (save_mesh
-// streams the file instead of holding it whole).
+// streams the file instead of holding it whole). Positions and triangles are computed as they are
+// written; only normals, which need them all first, keep them in arrays.
 template <class Output>
 void write_obj(const rgb::Mesh& mesh, const SaveOptions& options, Output& output) {
-    std::vector<std::uint32_t> obj_index;
-    const std::vector<glm::dvec3> positions = written_positions(mesh, options.positions, obj_index);
-    std::vector<rgb::Triangle> triangles;
-    triangles.reserve(mesh.num_faces());
-    for (rgb::FaceId f : mesh.faces()) {
-        const auto& v = mesh.face_vertices(f);
-        triangles.push_back({obj_index[v[0].idx], obj_index[v[1].idx], obj_index[v[2].idx]});
-    }
-
     std::string& out = output.buffer();
-    out += "# rgbsub mesh: " + std::to_string(positions.size()) + " vertices, " + std::to_string(triangles.size()) +
+    out += "# rgbsub mesh: " + std::to_string(mesh.num_vertices()) + " vertices, " + std::to_string(mesh.num_faces()) +
            " triangles; positions: " + (options.positions == SavedPositions::Limit ? "limit" : "displayed") +
            // Lets the reader tell a file cut before its state from one saved without it.
            (options.state ? std::string(kSavedStateNote) : std::string()) + "\n";
-    for (const glm::dvec3& p : positions) {
+    std::vector<std::uint32_t> obj_index(mesh.vertex_capacity(), UINT32_MAX);
+    std::vector<glm::dvec3> positions;
+    if (options.normals) positions.reserve(mesh.num_vertices());
+    std::uint32_t written = 0;
+    for (rgb::VertexId v : mesh.vertices()) {
+        obj_index[v.idx] = written++;
+        const glm::dvec3 p = written_position(mesh, v, options.positions);
+        if (options.normals) positions.push_back(p);
         out += 'v';
         for (int i = 0; i < 3; ++i) append_double(out, p[i]);
         out += '\n';
         output.flush_if_full();
     }
-    if (options.normals)
+    auto triangle = [&](rgb::FaceId f) {
+        const auto& v = mesh.face_vertices(f);
+        return rgb::Triangle{obj_index[v[0].idx], obj_index[v[1].idx], obj_index[v[2].idx]};
+    };
+    if (options.normals) {
+        std::vector<rgb::Triangle> triangles;
+        triangles.reserve(mesh.num_faces());
+        for (rgb::FaceId f : mesh.faces()) triangles.push_back(triangle(f));
         for (const glm::dvec3& n : vertex_normals(positions, triangles)) {
             out += "vn";
             for (int i = 0; i < 3; ++i) append_double(out, n[i]);
             out += '\n';
             output.flush_if_full();
         }
-    for (const rgb::Triangle& t : triangles) {
+    }
+    for (rgb::FaceId f : mesh.faces()) {
         out += 'f';
-        for (std::uint32_t v : t) {
+        for (std::uint32_t v : triangle(f)) {
             const std::string index = std::to_string(std::size_t(v) + 1);
             out += ' ' + index;
             if (options.normals) out += "//" + index;
@@ -108,8 +105,8 @@ void write_obj(const rgb::Mesh& mesh, const SaveOptions& options, Output& output
         out += '\n';
         output.flush_if_full();
     }
-    if (options.state)
-        write_state(rgb::capture_state(mesh), options.positions == SavedPositions::Limit, out, [&] { output.flush_if_full(); });
+    append_tag_lines(mesh, obj_index, out);
+    if (options.state) write_state(mesh, options.positions == SavedPositions::Limit, out, [&] { output.flush_if_full(); });
 }
 
 }  // namespace

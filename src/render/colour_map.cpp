@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 
-#include <glm/common.hpp>
 
 namespace render {
 
@@ -16,15 +15,16 @@ glm::vec3 rgb_type_colour(rgb::Colour colour) {
     return {1.0f, 1.0f, 1.0f};
 }
 
-glm::vec3 level_colour(int level, int max_level) {
-    // Blue, cyan, green, yellow, red: distinct hues for neighbouring levels.
-    static constexpr std::array<glm::vec3, 5> stops{glm::vec3(0.18f, 0.30f, 0.90f), glm::vec3(0.10f, 0.75f, 0.85f),
-                                                   glm::vec3(0.25f, 0.80f, 0.25f), glm::vec3(0.95f, 0.85f, 0.15f),
-                                                   glm::vec3(0.90f, 0.20f, 0.15f)};
-    const float t = max_level > 0 ? std::clamp(static_cast<float>(level) / static_cast<float>(max_level), 0.0f, 1.0f) : 0.0f;
-    const float x = t * static_cast<float>(stops.size() - 1);
-    const auto i = std::min(static_cast<std::size_t>(x), stops.size() - 2);
-    return glm::mix(stops[i], stops[i + 1], x - static_cast<float>(i));
+glm::vec3 level_colour(int level) {
+    // Neighbouring levels differ in hue; the brightest colours sit in the middle, where painting
+    // usually happens.
+    static constexpr std::array<glm::vec3, 13> table{
+        glm::vec3(0.18f, 0.30f, 0.90f), glm::vec3(0.10f, 0.62f, 0.90f), glm::vec3(0.10f, 0.78f, 0.70f),
+        glm::vec3(0.30f, 0.80f, 0.25f), glm::vec3(0.70f, 0.86f, 0.15f), glm::vec3(0.98f, 0.82f, 0.15f),
+        glm::vec3(0.98f, 0.55f, 0.10f), glm::vec3(0.90f, 0.22f, 0.15f), glm::vec3(0.80f, 0.15f, 0.50f),
+        glm::vec3(0.60f, 0.25f, 0.78f), glm::vec3(0.42f, 0.30f, 0.62f), glm::vec3(0.55f, 0.55f, 0.55f),
+        glm::vec3(0.92f, 0.92f, 0.92f)};
+    return table[static_cast<std::size_t>(std::clamp(level, 0, static_cast<int>(table.size()) - 1))];
 }
 
 }  // namespace render

@@ -9,8 +9,10 @@ namespace render {
 // The paper's picture: green, red and blue triangles.
 glm::vec3 rgb_type_colour(rgb::Colour colour);
 
-// Heat map over the levels present: level 0 is blue, `max_level` is red.
-glm::vec3 level_colour(int level, int max_level);
+// Heat map of face levels: one fixed colour per level (blue at 0 through green and yellow to red,
+// then purple), so a level looks the same in every picture whatever else is on screen. Levels past
+// the table share its last colour.
+glm::vec3 level_colour(int level);
 
 // Levels beyond this share the last colour (the shader's palette size).
 inline constexpr int kMaxLevelColours = 32;

@@ -42,7 +42,7 @@ std::vector<OverlayVertex> level_legend(int max_level, glm::ivec2 viewport, glm:
     const float row = kSwatch + kRowGap;
     for (int level = 0; level <= max_level; ++level) {
         const float top = static_cast<float>(viewport.y) - kMargin - static_cast<float>(level + 1) * row + kRowGap;
-        add_quad(out, {kMargin, top}, {kMargin + kSwatch, top + kSwatch}, level_colour(level, max_level));
+        add_quad(out, {kMargin, top}, {kMargin + kSwatch, top + kSwatch}, level_colour(level));
         add_text(out, "level " + std::to_string(level), {kMargin + kSwatch + 6.0f, top + 1.0f}, text_colour);
     }
     return out;

@@ -12,6 +12,7 @@
 #include "render/level_legend.h"
 #include "render/mesh_changes.h"
 #include "render/shader_program.h"
+#include "render/sharp_edge_lines.h"
 #include "render/surface_buffer.h"
 #include "rgb/mesh.h"
 
@@ -20,8 +21,9 @@ namespace {
 
 constexpr glm::vec3 kPlainColour{0.78f, 0.78f, 0.76f};
 constexpr glm::vec3 kWireColour{0.12f, 0.12f, 0.12f};
-constexpr glm::vec3 kBrushColour{1.0f, 0.55f, 0.0f};
+constexpr glm::vec3 kBackColour{0.62f, 0.36f, 0.32f};
 constexpr glm::vec3 kBaseMeshColour{0.1f, 0.1f, 0.1f};
+constexpr glm::vec3 kSharpEdgeColour{0.85f, 0.05f, 0.55f};
 constexpr glm::vec3 kLegendTextColour{0.1f, 0.1f, 0.1f};
 constexpr float kBrushWidthPx = 2.0f;
 constexpr float kOverlayDepthBias = 1e-3f;
@@ -65,11 +67,17 @@ struct Renderer::State {
     ShaderProgram overlay_program{"overlay.vert", "overlay.frag"};
     SurfaceBuffer surface;
     SimpleVertices base_lines;
+    SimpleVertices sharp_lines;  // follows the surface: rebuilt whenever it changes
     SimpleVertices overlay;
     SurfaceGeometry geometry;
     rgb::Mesh* mesh = nullptr;
     std::unique_ptr<MeshChanges> changes;
     UploadStats stats;
+    // What show() draws, when it is used instead of attach().
+    const rgb::Mesh* shown_mesh = nullptr;
+    const SurfaceGeometry* shown = nullptr;
+
+    const SurfaceGeometry& drawn() const { return shown ? *shown : geometry; }
 
     void count_upload(std::uint64_t before, std::size_t ranges) {
         stats.last_sync_bytes = surface.bytes_uploaded() - before;
@@ -80,6 +88,7 @@ struct Renderer::State {
 
 Renderer::Renderer() : state_(std::make_unique<State>()) {
     state_->base_lines.attribute(0, 3, sizeof(glm::vec3), 0);
+    state_->sharp_lines.attribute(0, 3, sizeof(glm::vec3), 0);
     state_->overlay.attribute(0, 2, sizeof(OverlayVertex), offsetof(OverlayVertex, pixel));
     state_->overlay.attribute(1, 3, sizeof(OverlayVertex), offsetof(OverlayVertex, colour));
 }
@@ -88,6 +97,8 @@ Renderer::~Renderer() = default;
 
 void Renderer::attach(rgb::Mesh& mesh) {
     detach();
+    state_->shown = nullptr;
+    state_->shown_mesh = nullptr;
     state_->mesh = &mesh;
     state_->changes = std::make_unique<MeshChanges>(mesh);
     state_->base_lines.upload(base_mesh_lines(mesh));
@@ -100,6 +111,23 @@ void Renderer::detach() {
     state_->geometry = SurfaceGeometry(state_->geometry.source());
     state_->surface.upload_all({});
     state_->base_lines.upload(std::vector<glm::vec3>{});
+    state_->sharp_lines.upload(std::vector<glm::vec3>{});
+}
+
+void Renderer::show(const rgb::Mesh& mesh, const SurfaceGeometry& geometry, std::span<const SlotRange> changed, bool rebuilt) {
+    State& s = *state_;
+    if (s.mesh != nullptr) detach();
+    const std::uint64_t before = s.surface.bytes_uploaded();
+    if (rebuilt || s.shown != &geometry || s.shown_mesh != &mesh) {
+        s.shown = &geometry;
+        s.shown_mesh = &mesh;
+        s.base_lines.upload(base_mesh_lines(mesh));
+        s.surface.upload_all(geometry.vertices());
+        s.count_upload(before, 1);
+    } else if (!changed.empty()) {
+        s.surface.upload(geometry.vertices(), changed);
+        s.count_upload(before, changed.size());
+    }
 }
 
 void Renderer::sync() {
@@ -110,6 +138,7 @@ void Renderer::sync() {
     s.changes->clear();
     s.surface.upload(s.geometry.vertices(), ranges);
     s.count_upload(before, ranges.size());
+    s.sharp_lines.upload(sharp_edge_lines(*s.mesh, s.geometry));
 }
 
 void Renderer::reupload_all() {
@@ -120,6 +149,7 @@ void Renderer::reupload_all() {
     s.geometry.rebuild(*s.mesh);
     s.surface.upload_all(s.geometry.vertices());
     s.count_upload(before, 1);
+    s.sharp_lines.upload(sharp_edge_lines(*s.mesh, s.geometry));
 }
 
 void Renderer::set_positions(PositionSource source) {
@@ -143,10 +173,10 @@ void Renderer::draw(const OrbitCamera& camera, const RenderOptions& options, glm
     const glm::mat4 view_projection =
         camera.view_projection(static_cast<float>(viewport.x) / static_cast<float>(std::max(viewport.y, 1)));
 
-    const int max_level = s.geometry.max_face_level();
+    const int max_level = s.drawn().max_face_level();
     std::vector<glm::vec3> level_colours(kMaxLevelColours);
     for (int level = 0; level < kMaxLevelColours; ++level)
-        level_colours[static_cast<std::size_t>(level)] = level_colour(level, max_level);
+        level_colours[static_cast<std::size_t>(level)] = level_colour(level);
     const glm::vec3 rgb_colours[3] = {rgb_type_colour(rgb::Colour::Green), rgb_type_colour(rgb::Colour::Red),
                                       rgb_type_colour(rgb::Colour::Blue)};
 
@@ -166,26 +196,29 @@ void Renderer::draw(const OrbitCamera& camera, const RenderOptions& options, glm
     surface.set("u_wire", options.wireframe);
     surface.set("u_wire_width", options.wire_width_px);
     surface.set("u_wire_colour", kWireColour);
+    surface.set("u_back_colour", kBackColour);
     surface.set("u_brush", options.brush.has_value());
     if (options.brush) {
         surface.set("u_brush_centre", options.brush->centre * shading_scale);
         surface.set("u_brush_radius", options.brush->radius * shading_scale);
         surface.set("u_brush_width", kBrushWidthPx);
-        surface.set("u_brush_colour", kBrushColour);
+        surface.set("u_brush_colour", options.brush->colour);
     }
     s.surface.draw();
 
-    if (options.base_mesh_overlay) {
+    const auto draw_lines = [&](const SimpleVertices& lines, const glm::vec3& colour) {
         s.lines_program.use();
         s.lines_program.set("u_view_projection", view_projection);
         s.lines_program.set("u_depth_bias", kOverlayDepthBias);
-        s.lines_program.set("u_colour", kBaseMeshColour);
-        s.base_lines.draw(GL_LINES);
-    }
+        s.lines_program.set("u_colour", colour);
+        lines.draw(GL_LINES);
+    };
+    if (options.base_mesh_overlay) draw_lines(s.base_lines, kBaseMeshColour);
+    if (options.sharp_edges) draw_lines(s.sharp_lines, kSharpEdgeColour);
 
     if (options.colouring == Colouring::Level && options.level_legend) {
         glDisable(GL_DEPTH_TEST);
-        s.overlay.upload(level_legend(max_level, viewport, kLegendTextColour));
+        s.overlay.upload(level_legend(max_level, {viewport.x, viewport.y - static_cast<int>(options.bottom_inset_px)}, kLegendTextColour));
         s.overlay_program.use();
         s.overlay_program.set("u_viewport_size", glm::vec2(viewport));
         s.overlay.draw(GL_TRIANGLES);
@@ -195,15 +228,15 @@ void Renderer::draw(const OrbitCamera& camera, const RenderOptions& options, glm
 }
 
 BoundingSphere Renderer::bounds(bool with_base_mesh) const {
-    if (state_->mesh == nullptr) return {};
-    std::vector<glm::vec3> points = state_->geometry.live_positions(*state_->mesh);
+    const rgb::Mesh* mesh = state_->shown ? state_->shown_mesh : state_->mesh;
+    if (mesh == nullptr) return {};
+    std::vector<glm::vec3> points = state_->drawn().live_positions(*mesh);
     if (with_base_mesh)
-        for (std::uint32_t i = 0; i < state_->mesh->num_base_vertices(); ++i)
-            points.emplace_back(state_->mesh->insertion_position(rgb::VertexId(i)));
+        for (std::uint32_t i = 0; i < mesh->num_base_vertices(); ++i) points.emplace_back(mesh->insertion_position(rgb::VertexId(i)));
     return bounding_sphere(points);
 }
 
-const SurfaceGeometry& Renderer::geometry() const { return state_->geometry; }
+const SurfaceGeometry& Renderer::geometry() const { return state_->drawn(); }
 
 const UploadStats& Renderer::upload_stats() const { return state_->stats; }
 

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -28,6 +29,7 @@ enum class Colouring { Plain, RgbType, Level };
 struct BrushCursor {
     glm::vec3 centre{0.0f};
     float radius = 0.1f;
+    glm::vec3 colour{1.0f, 0.55f, 0.0f};
 };
 
 struct RenderOptions {
@@ -37,7 +39,9 @@ struct RenderOptions {
     float wire_width_px = 1.0f;
     PositionSource positions = PositionSource::Displayed;
     bool base_mesh_overlay = false;
+    bool sharp_edges = true;  // edges along tagged base edges as coloured lines (when there are any)
     bool level_legend = true;  // shown with Colouring::Level
+    float bottom_inset_px = 0.0f;  // a strip at the bottom that overlays (the legend) keep clear of
     std::optional<BrushCursor> brush;
     glm::vec3 background{1.0f};
 };
@@ -58,6 +62,10 @@ public:
     // Starts following `mesh` (which must outlive the attachment) and uploads it whole.
     void attach(rgb::Mesh& mesh);
     void detach();
+    // Instead of a copy of its own, draws `geometry` of `mesh`, kept current by its owner (the
+    // editor's document, which picks on it too), both to outlive the renderer's use of them:
+    // `changed` are the slots changed since the previous call, or everything when `rebuilt`.
+    void show(const rgb::Mesh& mesh, const SurfaceGeometry& geometry, std::span<const SlotRange> changed, bool rebuilt);
 
     // Uploads what changed since the last sync.
     void sync();

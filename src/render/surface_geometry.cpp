@@ -7,6 +7,7 @@
 #include "render/mesh_changes.h"
 #include "rgb/loop_geometry.h"
 #include "rgb/mesh.h"
+#include "rgb/vertex_rules.h"
 
 namespace render {
 namespace {
@@ -26,11 +27,6 @@ void for_each_face_around(const rgb::Mesh& mesh, rgb::VertexId v, Fn&& fn) {
     } while (h.valid() && h != start);
 }
 
-template <class Id>
-void sort_unique(std::vector<Id>& ids) {
-    std::sort(ids.begin(), ids.end());
-    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-}
 
 std::vector<SlotRange> coalesce(const std::vector<rgb::FaceId>& sorted_faces) {
     std::vector<SlotRange> ranges;
@@ -41,6 +37,24 @@ std::vector<SlotRange> coalesce(const std::vector<rgb::FaceId>& sorted_faces) {
             ranges.push_back({f.idx, 1});
     }
     return ranges;
+}
+
+// Twice the area times the unit normal, from the shown positions.
+glm::dvec3 area_normal(const rgb::Mesh& mesh, const std::vector<glm::vec3>& positions, rgb::FaceId f) {
+    const auto& c = mesh.face_vertices(f);
+    const glm::dvec3 p0 = positions[c[0].idx];
+    return glm::cross(glm::dvec3(positions[c[1].idx]) - p0, glm::dvec3(positions[c[2].idx]) - p0);
+}
+
+glm::vec3 unit_or_up(const glm::dvec3& sum) {
+    const double length = glm::length(sum);
+    return length > 0.0 ? glm::vec3(sum / length) : glm::vec3(0.0f, 0.0f, 1.0f);
+}
+
+// Whether the interior edge of h lies on an infinitely sharp base edge: the surface folds there.
+bool creased(const rgb::Mesh& mesh, rgb::HalfedgeId h) {
+    const auto on = rgb::base_edge_between(mesh.base(), mesh.address(mesh.from_vertex(h)), mesh.address(mesh.to_vertex(h)));
+    return on && mesh.base().edge_sharpness(*on) >= rgb::kInfiniteSharpness;
 }
 
 std::uint32_t face_code(const rgb::Mesh& mesh, rgb::FaceId f) {
@@ -82,13 +96,29 @@ void SurfaceGeometry::update_position(const rgb::Mesh& mesh, rgb::VertexId v) {
 // meshes far from unit size (1e10: overflow, 1e-20: underflow).
 void SurfaceGeometry::update_normal(const rgb::Mesh& mesh, rgb::VertexId v) {
     glm::dvec3 sum(0.0);
-    for_each_face_around(mesh, v, [&](rgb::FaceId f) {
-        const auto& c = mesh.face_vertices(f);
-        const glm::dvec3 p0 = positions_[c[0].idx];
-        sum += glm::cross(glm::dvec3(positions_[c[1].idx]) - p0, glm::dvec3(positions_[c[2].idx]) - p0);
-    });
-    const double length = glm::length(sum);
-    normals_[v.idx] = length > 0.0 ? glm::vec3(sum / length) : glm::vec3(0.0f, 0.0f, 1.0f);
+    for_each_face_around(mesh, v, [&](rgb::FaceId f) { sum += area_normal(mesh, positions_, f); });
+    normals_[v.idx] = unit_or_up(sum);
+}
+
+glm::vec3 SurfaceGeometry::corner_normal(const rgb::Mesh& mesh, rgb::FaceId f, int i) const {
+    const rgb::VertexId v = mesh.face_vertices(f)[i];
+    // Only a base vertex or a vertex on a base edge can lie on a crease.
+    if (mesh.base().sharp_features().edges.empty() || !rgb::on_base_edge_or_vertex(mesh.address(v))) return normals_[v.idx];
+    const rgb::HalfedgeId start = rgb::Mesh::halfedge(f, i);  // leaves v
+    glm::dvec3 sum = area_normal(mesh, positions_, f);
+    // Counter-clockwise across v's edge in the previous face's slot, clockwise across start's edge.
+    for (rgb::HalfedgeId h = start; !creased(mesh, rgb::Mesh::prev(h));) {
+        h = mesh.ccw_rotated(h);
+        if (!h.valid()) break;
+        if (h == start) return normals_[v.idx];  // all the way round: no crease through v
+        sum += area_normal(mesh, positions_, rgb::Mesh::face(h));
+    }
+    for (rgb::HalfedgeId h = start; !creased(mesh, h);) {
+        h = mesh.cw_rotated(h);
+        if (!h.valid()) break;
+        sum += area_normal(mesh, positions_, rgb::Mesh::face(h));
+    }
+    return unit_or_up(sum);
 }
 
 void SurfaceGeometry::count(std::uint32_t code, int delta) {
@@ -106,7 +136,7 @@ void SurfaceGeometry::write_slot(const rgb::Mesh& mesh, rgb::FaceId f) {
     }
     const std::uint32_t code = face_code(mesh, f);
     const auto& corners = mesh.face_vertices(f);
-    for (int i = 0; i < 3; ++i) slot[i] = {positions_[corners[i].idx], normals_[corners[i].idx], code};
+    for (int i = 0; i < 3; ++i) slot[i] = {positions_[corners[i].idx], corner_normal(mesh, f, i), code};
     count(code, +1);
 }
 
@@ -120,27 +150,54 @@ void SurfaceGeometry::rebuild(const rgb::Mesh& mesh) {
     for (std::uint32_t f = 0; f < mesh.face_capacity(); ++f) write_slot(mesh, rgb::FaceId(f));
 }
 
+// Marks over slots for one update, so that each vertex and face is handled once (the change lists
+// name most of them several times) without sorting them.
+bool SurfaceGeometry::Marks::mark(std::uint32_t slot) {
+    if (slot >= stamps.size()) stamps.resize(std::max<std::size_t>(slot + 1, 2 * stamps.size()), 0);
+    if (stamps[slot] == current) return false;
+    stamps[slot] = current;
+    return true;
+}
+
+void SurfaceGeometry::Marks::start() {
+    if (++current == 0) {
+        std::fill(stamps.begin(), stamps.end(), 0);
+        current = 1;
+    }
+}
+
 std::vector<SlotRange> SurfaceGeometry::update(const rgb::Mesh& mesh, const MeshChanges& changes) {
+    if (changes.everything()) {
+        rebuild(mesh);
+        return {SlotRange{0, static_cast<std::uint32_t>(face_slots())}};
+    }
     resize(mesh);
+    vertex_marks_.start();
     std::vector<rgb::VertexId> moved;
     for (rgb::VertexId v : changes.moved_vertices())
-        if (mesh.is_live(v)) moved.push_back(v);
-    sort_unique(moved);
+        if (mesh.is_live(v) && vertex_marks_.mark(v.idx)) moved.push_back(v);
     for (rgb::VertexId v : moved) update_position(mesh, v);
 
     // A vertex's normal depends on its one-ring's positions.
-    std::vector<rgb::VertexId> renormal = moved;
+    vertex_marks_.start();
+    std::vector<rgb::VertexId> renormal;
+    for (rgb::VertexId v : moved)
+        if (vertex_marks_.mark(v.idx)) renormal.push_back(v);
     for (rgb::VertexId v : moved)
         for_each_face_around(mesh, v, [&](rgb::FaceId f) {
-            for (rgb::VertexId u : mesh.face_vertices(f)) renormal.push_back(u);
+            for (rgb::VertexId u : mesh.face_vertices(f))
+                if (vertex_marks_.mark(u.idx)) renormal.push_back(u);
         });
-    sort_unique(renormal);
     for (rgb::VertexId v : renormal) update_normal(mesh, v);
 
-    std::vector<rgb::FaceId> dirty = changes.changed_faces();
-    for (rgb::VertexId v : renormal) for_each_face_around(mesh, v, [&](rgb::FaceId f) { dirty.push_back(f); });
-    sort_unique(dirty);
-    std::erase_if(dirty, [&](rgb::FaceId f) { return f.idx >= mesh.face_capacity(); });
+    face_marks_.start();
+    std::vector<rgb::FaceId> dirty;
+    auto add_dirty = [&](rgb::FaceId f) {
+        if (f.idx < mesh.face_capacity() && face_marks_.mark(f.idx)) dirty.push_back(f);
+    };
+    for (rgb::FaceId f : changes.changed_faces()) add_dirty(f);
+    for (rgb::VertexId v : renormal) for_each_face_around(mesh, v, add_dirty);
+    std::sort(dirty.begin(), dirty.end());
     for (rgb::FaceId f : dirty) write_slot(mesh, f);
     return coalesce(dirty);
 }

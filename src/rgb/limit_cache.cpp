@@ -5,36 +5,29 @@
 namespace rgb {
 
 std::size_t LimitCache::slot_of(std::uint32_t vertex) const {
-    if (entries_.empty()) return kAbsent;
-    for (std::size_t i = home(vertex);; i = (i + 1) & (entries_.size() - 1)) {
-        if (entries_[i].key == vertex) return i;
-        if (entries_[i].key == kEmpty) return kAbsent;
-    }
+    std::size_t i = home(vertex);
+    while (entries_[i].key != vertex) i = next(i);
+    return i;
 }
 
-std::optional<glm::dvec3> LimitCache::find(std::uint32_t vertex) const {
-    const std::size_t i = slot_of(vertex);
-    if (i == kAbsent) return std::nullopt;
-    return glm::dvec3(entries_[i].x, entries_[i].y, entries_[i].z);
+glm::dvec3 LimitCache::find(std::uint32_t vertex) const {
+    const Entry& e = entries_[slot_of(vertex)];
+    return {e.x, e.y, e.z};
 }
 
 void LimitCache::insert(std::uint32_t vertex, const glm::dvec3& limit) {
-    if (contains(vertex)) return;
-    // Keep the load under 3/4 so probes stay short.
-    if (4 * (size_ + 1) > 3 * entries_.size()) grow();
+    if (8 * (size_ + 1) > 7 * entries_.size()) grow();
     std::size_t i = home(vertex);
-    while (entries_[i].key != kEmpty) i = (i + 1) & (entries_.size() - 1);
+    while (entries_[i].key != kEmpty) i = next(i);
     entries_[i] = {vertex, limit.x, limit.y, limit.z};
     ++size_;
 }
 
 void LimitCache::erase(std::uint32_t vertex) {
     std::size_t i = slot_of(vertex);
-    if (i == kAbsent) return;
     // Backward-shift deletion: pull later members of the probe run into the hole, so that lookups
     // never need tombstones.
-    const std::size_t mask = entries_.size() - 1;
-    for (std::size_t j = (i + 1) & mask; entries_[j].key != kEmpty; j = (j + 1) & mask) {
+    for (std::size_t j = next(i); entries_[j].key != kEmpty; j = next(j)) {
         const std::size_t h = home(entries_[j].key);
         // Entry j may fill the hole at i unless its home lies cyclically in (i, j].
         const bool home_between = i <= j ? (h > i && h <= j) : (h > i || h <= j);
@@ -47,13 +40,9 @@ void LimitCache::erase(std::uint32_t vertex) {
     --size_;
 }
 
-void LimitCache::clear() {
-    entries_.clear();
-    size_ = 0;
-}
-
 void LimitCache::grow() {
-    std::vector<Entry> old = std::exchange(entries_, std::vector<Entry>(entries_.empty() ? 64 : 2 * entries_.size()));
+    const std::size_t grown = entries_.empty() ? 64 : (entries_.size() + entries_.size() / 4 + 15) / 16 * 16;
+    std::vector<Entry> old = std::exchange(entries_, std::vector<Entry>(grown));
     size_ = 0;
     for (const Entry& e : old)
         if (e.key != kEmpty) insert(e.key, {e.x, e.y, e.z});

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <exception>
 #include <stdexcept>
 #include <string>
 
@@ -169,13 +170,42 @@ VertexId Mesh::next_vertex_slot() const {
     return VertexId(free_vertices_.empty() ? static_cast<std::uint32_t>(vertex_info_.size()) : free_vertices_.back());
 }
 
-VertexId Mesh::allocate_vertex(const NewVertex& added) {
+SurfacePoint Mesh::new_vertex_address(const NewVertex& added) const {
     if (added.level > kMaxLevel)
         throw std::length_error("vertex level " + std::to_string(added.level) + " is beyond the supported maximum " +
                                 std::to_string(kMaxLevel));
     // Stored in the canonical of its addresses, so equal points have equal records whatever history made them.
-    const SurfacePoint m = added.address ? canonical(*base_, *added.address)
-                                         : canonical(*base_, midpoint(*base_, address(added.a), address(added.b)));
+    return added.address ? canonical(*base_, *added.address)
+                         : canonical(*base_, midpoint(*base_, address(added.a), address(added.b)));
+}
+
+namespace {
+// Capacity for `more` elements beyond the size, growing geometrically like push_back would.
+template <class Vector>
+void room_for(Vector& v, std::size_t more) {
+    if (v.capacity() - v.size() < more) v.reserve(std::max(2 * v.capacity(), v.size() + more));
+}
+}  // namespace
+
+void Mesh::make_room(std::size_t faces_released, std::size_t faces_added, std::size_t vertices_released, bool vertex_added) {
+    room_for(free_faces_, faces_released);
+    if (vertices_released > 0) room_for(free_vertices_, vertices_released);
+    const std::size_t reusable = free_faces_.size() + faces_released;
+    if (faces_added > reusable) {
+        const std::size_t appended_faces = faces_added - reusable;
+        room_for(face_vertices_, appended_faces);
+        room_for(face_code_, appended_faces);
+        room_for(opposite_, 3 * appended_faces);
+    }
+    if (vertex_added && free_vertices_.size() + vertices_released == 0) {
+        room_for(insertion_position_, 1);
+        room_for(vertex_halfedge_, 1);
+        room_for(vertex_info_, 1);
+        room_for(address_, 1);
+    }
+}
+
+VertexId Mesh::allocate_vertex(const NewVertex& added, const SurfacePoint& m) {
     const VertexId v(take_slot(free_vertices_, vertex_info_.size()));
     if (v.idx == vertex_info_.size()) {
         insertion_position_.emplace_back();
@@ -267,6 +297,11 @@ FaceList Mesh::replace_faces(std::span<const FaceId> old_faces, std::span<const 
             border.push_back({key(fv[i], fv[(i + 1) % 3]), o});
         }
     }
+    // Whatever can fail is done before the mesh changes: a replacement happens whole or not at all
+    // (an undo journal relies on that).
+    const std::optional<SurfacePoint> added_address = added ? std::optional(new_vertex_address(*added)) : std::nullopt;
+    make_room(old_faces.size(), new_faces.size(), removed_vertices.size(), added != nullptr);
+    // A failure here leaves the mesh unchanged (observers told so far heard of removals that did not happen).
     for (FaceId f : old_faces)
         for (MeshObserver* o : observers_) o->face_removed(*this, f);
     for (VertexId v : removed_vertices)
@@ -275,9 +310,22 @@ FaceList Mesh::replace_faces(std::span<const FaceId> old_faces, std::span<const 
     // new faces take the old faces' slots in order, keeping the region together in memory.
     for (auto it = old_faces.rbegin(); it != old_faces.rend(); ++it) release_face(*it);
     for (VertexId v : removed_vertices) release_vertex(v);
+    // From here on the mesh has changed, so every observer hears of every addition even if another
+    // fails; the first failure is rethrown once all have been told.
+    std::exception_ptr failure;
+    auto tell = [&](auto&& event) {
+        for (MeshObserver* o : observers_) {
+            try {
+                event(o);
+            } catch (...) {
+                if (!failure) failure = std::current_exception();
+            }
+        }
+    };
+    VertexId added_vertex;
     if (added) {
-        const VertexId v = allocate_vertex(*added);
-        for (MeshObserver* o : observers_) o->vertex_added(*this, v, added->a, added->b);
+        added_vertex = allocate_vertex(*added, *added_address);
+        tell([&](MeshObserver* o) { o->vertex_added(*this, added_vertex, added->a, added->b); });
     }
 
     FaceList created;
@@ -329,8 +377,8 @@ FaceList Mesh::replace_faces(std::span<const FaceId> old_faces, std::span<const 
         }
     for (const Stale& s : stale)
         if (reusable_vertex_halfedge(s.v, s.was)) vertex_halfedge_[s.v.idx] = s.was;
-    for (FaceId f : created)
-        for (MeshObserver* o : observers_) o->face_added(*this, f);
+    for (FaceId f : created) tell([&](MeshObserver* o) { o->face_added(*this, f); });
+    if (failure) std::rethrow_exception(failure);
     return created;
 }
 

@@ -187,31 +187,22 @@ public:
     // Caches p^inf(v). Logically const: the limit is a function of the base mesh alone, so caching it
     // never changes what the mesh means.
     void cache_limit(VertexId v, const glm::dvec3& p) const {
+        if (vertex_info_[v.idx] & kLimitBit) return;
         limits_.insert(v.idx, p);
         vertex_info_[v.idx] |= kLimitBit;
     }
     // Delete `old_faces` (and the listed vertices, which must be used by no new face), add `added` (in
     // slot next_vertex_slot()) and create `new_faces` over the same region. Adjacency with the outside
     // is rebuilt by matching edges. Observers hear of it in the order observer.h states. Returns the
-    // new face ids in the order given. At most six faces each way.
+    // new face ids in the order given. At most six faces each way. Whole or nothing: a failure
+    // (out of memory, a level beyond kMaxLevel, an observer throwing while told of a removal)
+    // leaves the mesh unchanged; an observer throwing while told of an addition is rethrown after
+    // the replacement is complete and every observer has been told.
     FaceList replace_faces(std::span<const FaceId> old_faces, std::span<const NewFace> new_faces,
                            std::span<const VertexId> removed_vertices = {}, const NewVertex* added = nullptr);
 
-    // Bytes of the core arrays in use (sizes, not reserved capacity): connectivity, positions, RGB
-    // codes and limit points, for the memory benchmark. The vertex addresses are counted apart.
-    std::size_t memory_bytes() const;
-    std::size_t address_bytes() const { return address_.size() * sizeof(PackedAddress); }
-
-private:
-    friend struct MeshState capture_state(const Mesh& mesh);
-    friend Mesh restore_state(const struct MeshState& state);
-
-    static constexpr std::uint8_t kDead = 0xff;
-    static constexpr std::uint8_t kLevelMask = 0x3f;
-    static constexpr std::uint8_t kBoundaryBit = 0x40;
-    static constexpr std::uint8_t kLimitBit = 0x80;  // the limit is in limits_ (a live level is below 63)
-    // A face's type in one byte: bits 0-2 are 0 for green, 1 + red edge for red, 4 + red edge for blue;
-    // bits 3-7 the level. 0xff marks a dead slot.
+    // A face's type in one byte (as stored here and in the undo journal): bits 0-2 are 0 for green,
+    // 1 + red edge for red, 4 + red edge for blue; bits 3-7 the level. 0xff marks a dead slot.
     static std::uint8_t pack(const FaceType& t) {
         const int kind = t.colour == Colour::Green ? 0 : (t.colour == Colour::Red ? 1 : 4) + t.red_edge;
         return static_cast<std::uint8_t>(kind | (t.level << 3));
@@ -225,12 +216,31 @@ private:
         return {colour_of(code), static_cast<std::uint8_t>(code >> 3),
                 static_cast<std::uint8_t>(kind == 0 ? 0 : (kind <= 3 ? kind - 1 : kind - 4))};
     }
+
+    // Bytes of the core arrays in use (sizes, not reserved capacity): connectivity, positions, RGB
+    // codes and limit points, for the memory benchmark. The vertex addresses are counted apart.
+    std::size_t memory_bytes() const;
+    std::size_t address_bytes() const { return address_.size() * sizeof(PackedAddress); }
+
+private:
+    friend struct MeshState capture_state(const Mesh& mesh);
+    friend Mesh restore_state(const struct MeshState& state);
+    friend void set_sharp_features(Mesh& mesh, const SharpFeatures& features);
+
+    static constexpr std::uint8_t kDead = 0xff;
+    static constexpr std::uint8_t kLevelMask = 0x3f;
+    static constexpr std::uint8_t kBoundaryBit = 0x40;
+    static constexpr std::uint8_t kLimitBit = 0x80;  // the limit is in limits_ (a live level is below 63)
     struct PackedAddress {
         std::uint32_t face, a1, a2;  // a0 = 2^level - a1 - a2
     };
 
     void init_base_state();
-    VertexId allocate_vertex(const NewVertex& added);
+    // Checks the level and gives the canonical address (throws before anything changes).
+    SurfacePoint new_vertex_address(const NewVertex& added) const;
+    // Grows the arrays so that a replacement of this size cannot fail for lack of memory half-way.
+    void make_room(std::size_t faces_released, std::size_t faces_added, std::size_t vertices_released, bool vertex_added);
+    VertexId allocate_vertex(const NewVertex& added, const SurfacePoint& address);
     FaceId allocate_face();
     void release_face(FaceId f);
     void release_vertex(VertexId v);

@@ -3,9 +3,10 @@
 // to re-upload only dirty ranges; the editor uses it to record undo; tests use it to track vertex
 // identity for the uniform Loop oracle.
 //
-// Order within one operator (one Mesh::replace_faces): face_removed for each deleted face (the face
-// is still readable), then vertex_removed (still readable), then vertex_added, then face_added for
-// each new face (already readable). The displayed position of a vertex changes only when a face
+// Order within one Mesh::replace_faces: face_removed for each deleted face (the face is still
+// readable), then vertex_removed (still readable), then vertex_added, then face_added for each new
+// face (already readable). A split is one such block (the swaps it implies are folded in); a removal
+// may swap before or after its merge, each swap a block of its own. The displayed position of a vertex changes only when a face
 // incident to it is added, so consumers refresh the vertices of added faces.
 #include "rgb/handles.h"
 

@@ -1,18 +1,17 @@
-// The brush's pieces on their own: falloff targets, mode inversion, stroke spacing, the undo
-// history's memory bound, and ray picking on a known triangle.
+// The brush's pieces on their own: falloff targets, mode inversion, stroke spacing, and ray picking
+// on a known triangle.
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
 
 #include "app/brush.h"
+#include "app/job_pacer.h"
 #include "app/stroke_sampler.h"
-#include "app/surface_picking.h"
-#include "app/undo_history.h"
+#include "app/surface_index.h"
 #include "render/mesh_changes.h"
 #include "render/surface_geometry.h"
 #include "rgb/mesh.h"
 #include "rgb/refine.h"
-#include "rgb/triangle_geometry.h"
 
 namespace app {
 namespace {
@@ -45,6 +44,34 @@ TEST(BrushTarget, ShiftSwapsRefineAndCoarsen) {
     EXPECT_EQ(effective_mode(BrushMode::Refine, false), BrushMode::Refine);
 }
 
+// The hit maps to the point with the same barycentric coordinates in the face's base-space
+// triangle; here the displayed triangle is the base one moved and scaled by 2, so the hit at
+// d0 + 0.25 (d1 - d0) + 0.5 (d2 - d0) is b0 + 0.25 (b1 - b0) + 0.5 (b2 - b0), and radii halve.
+TEST(BrushTarget, AHitMapsToBaseSpaceByItsBarycentricCoordinates) {
+    const std::vector<glm::dvec3> p{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    const std::vector<rgb::Triangle> t{{0, 1, 2}};
+    const rgb::Mesh mesh(p, t);
+    const std::array<glm::dvec3, 3> displayed{glm::dvec3(5, 5, 1), glm::dvec3(7, 5, 1), glm::dvec3(5, 7, 1)};
+    const glm::dvec3 point = displayed[0] + 0.25 * (displayed[1] - displayed[0]) + 0.5 * (displayed[2] - displayed[0]);
+    const BaseSpaceHit hit = to_base_space(mesh, rgb::FaceId(0), displayed, point, 0.4);
+    EXPECT_NEAR(hit.centre.x, 0.25, 1e-12);
+    EXPECT_NEAR(hit.centre.y, 0.5, 1e-12);
+    EXPECT_EQ(hit.centre.z, 0.0);
+    EXPECT_NEAR(hit.radius, 0.2, 1e-12);
+}
+
+// The work gets what drawing leaves of a 60 Hz frame, but never less than drawing takes.
+TEST(JobPacer, TheWorksShareFollowsTheFrameTime) {
+    EXPECT_DOUBLE_EQ(JobPacer::slice_ms(2.0), 1000.0 / 60.0 - 2.0);
+    EXPECT_DOUBLE_EQ(JobPacer::slice_ms(12.0), 12.0);  // half of a slow frame
+    EXPECT_DOUBLE_EQ(JobPacer::slice_ms(300.0), 300.0);
+    EXPECT_DOUBLE_EQ(JobPacer::slice_ms(5000.0), JobPacer::kMaxSliceMs);
+    JobPacer pacer;
+    EXPECT_EQ(pacer.slice(), std::chrono::microseconds(16666));
+    pacer.frame_drawn(200.0);
+    EXPECT_EQ(pacer.slice(), std::chrono::microseconds(200000));
+}
+
 TEST(StrokeSampler, SpacesDabsEvenlyAcrossSamples) {
     StrokeSampler sampler;
     EXPECT_EQ(sampler.begin({0.0f, 0.0f}).size(), 1u);
@@ -61,31 +88,16 @@ rgb::Mesh tetrahedron() {
     return rgb::Mesh(p, t);
 }
 
-TEST(UndoHistory, ForgetsTheOldestStepsBeyondTheBound) {
-    rgb::Mesh mesh = tetrahedron();
-    UndoHistory history;
-    for (int level = 1; level <= 3; ++level) {
-        history.begin_edit(mesh, "level " + std::to_string(level));
-        rgb::refine_uniform(mesh, level);
-        history.end_edit(mesh, true);
-    }
-    ASSERT_EQ(history.undo_steps(), 3u);
-    const std::size_t newest = state_bytes(rgb::capture_state(rgb::restore_state(rgb::capture_state(mesh))));
-    history.set_byte_bound(history.bytes() - 1);
-    EXPECT_EQ(history.undo_steps(), 2u);
-    EXPECT_EQ(history.undo_label(), "level 3");
-    EXPECT_LE(history.bytes(), history.byte_bound());
-    EXPECT_GT(newest, 0u);
-}
-
 TEST(SurfacePicking, HitsTheFrontFaceAndSkipsBackFaces) {
     rgb::Mesh mesh = tetrahedron();
     render::SurfaceGeometry geometry;
     geometry.rebuild(mesh);
+    SurfaceIndex index;
+    index.rebuild(mesh, geometry);
     // From far along +x+y+z, the slanted face {1,2,3} is the front one; its centroid is (1/3,1/3,1/3).
     const glm::dvec3 centroid(1.0 / 3.0);
     const Ray ray{glm::dvec3(3.0), glm::normalize(centroid - glm::dvec3(3.0))};
-    const std::optional<SurfaceHit> hit = pick_surface(geometry, ray);
+    const std::optional<SurfaceHit> hit = index.pick(geometry, ray);
     ASSERT_TRUE(hit.has_value());
     EXPECT_EQ(mesh.face_vertices(hit->face)[0].idx + mesh.face_vertices(hit->face)[1].idx +
                   mesh.face_vertices(hit->face)[2].idx,
@@ -93,28 +105,7 @@ TEST(SurfacePicking, HitsTheFrontFaceAndSkipsBackFaces) {
     EXPECT_NEAR(glm::distance(hit->point, centroid), 0.0, 1e-6);
     // The same line from inside looking out meets only back faces.
     const Ray inside{glm::dvec3(0.1), glm::normalize(glm::dvec3(1.0))};
-    EXPECT_FALSE(pick_surface(geometry, inside).has_value());
-}
-
-TEST(SurfacePicking, FootprintGrowsOnlyThroughFacesInTheSphere) {
-    rgb::Mesh mesh = tetrahedron();
-    rgb::refine_uniform(mesh, 3);
-    render::SurfaceGeometry geometry;
-    geometry.rebuild(mesh);
-    const Ray ray{glm::dvec3(3.0), glm::normalize(glm::dvec3(1.0 / 3.0) - glm::dvec3(3.0))};
-    const SurfaceHit hit = *pick_surface(geometry, ray);
-    const double radius = 0.1;
-    const std::vector<rgb::FaceId> footprint = faces_in_sphere(mesh, geometry, hit.face, hit.point, radius);
-    std::size_t expected = 0;
-    for (rgb::FaceId f : mesh.faces()) {
-        const auto v = geometry.vertices();
-        expected += rgb::distance_to_triangle(hit.point, glm::dvec3(v[3 * f.idx].position), glm::dvec3(v[3 * f.idx + 1].position),
-                                         glm::dvec3(v[3 * f.idx + 2].position)) <= radius;
-    }
-    // The sphere is small and within one flat face of the tetrahedron, so its faces are connected.
-    EXPECT_EQ(footprint.size(), expected);
-    EXPECT_GT(footprint.size(), 1u);
-    EXPECT_LT(footprint.size(), mesh.num_faces());
+    EXPECT_FALSE(index.pick(geometry, inside).has_value());
 }
 
 }  // namespace

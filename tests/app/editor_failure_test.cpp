@@ -33,10 +33,12 @@ protected:
         editor.mouse_moved({0.45f * kViewport.x, 0.55f * kViewport.y});
         editor.mouse_pressed(MouseButton::Left, {});
         editor.mouse_moved({0.55f * kViewport.x, 0.55f * kViewport.y});
+        editor.update(std::chrono::seconds(1));
     }
     void stroke() {
         press_and_drag();
         editor.mouse_released(MouseButton::Left);
+        editor.finish_work();
     }
     Editor editor{kViewport};
 };
@@ -93,7 +95,7 @@ TEST_F(EditorFailure, OutOfMemoryInAJobKeepsTheDocument) {
         editor.start_flood_fill(8);
         bool failed = false;
         for (int frame = 0; frame < 100000 && editor.job() != nullptr && !failed; ++frame)
-            failed = !editor.run_guarded([&] { editor.update(); });
+            failed = !editor.run_guarded([&] { editor.update(std::chrono::milliseconds(12)); });
         const bool kept = failed && editor.job() == nullptr &&
                           editor.message() == "out of memory during set all to level 8; set all to level 8 was rolled back, the mesh is as before it" &&
                           editor.document().mesh().num_faces() == faces_after_stroke &&

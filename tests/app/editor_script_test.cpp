@@ -4,13 +4,17 @@
 #include <fstream>
 #include <vector>
 
+#include <glm/geometric.hpp>
+
 #include <gtest/gtest.h>
 
 #include "app/editor.h"
 #include "io/mesh_file.h"
 #include "rgb/invariants.h"
 #include "rgb/state.h"
+#include "rgb/requests.h"
 #include "support/same_mesh.h"
+#include "support/same_slots.h"
 #include "stroke_support.h"
 
 namespace app {
@@ -36,6 +40,7 @@ protected:
         editor.mouse_pressed(MouseButton::Left, mods);
         for (int i = 1; i <= samples; ++i) editor.mouse_moved(from + (to - from) * (float(i) / float(samples)));
         editor.mouse_released(MouseButton::Left);
+        editor.finish_work();
     }
 
     // Where the stroke's path meets the surface, before painting changes it.
@@ -66,7 +71,7 @@ TEST_F(EditorScript, StrokeUndoRedoSaveRoundTrip) {
     EXPECT_GT(editor.document().mesh().num_faces(), original_faces);
     EXPECT_TRUE(editor.document().dirty());
     EXPECT_EQ(editor.window_title(), "bunny.obj* - rgbsub");
-    EXPECT_GT(editor.dab_timing().dabs, 10u);
+    EXPECT_GT(editor.timing().dabs, 10u);
     EXPECT_TRUE(rgb::check_invariants(editor.document().mesh()).ok());
     // Every point of the path got refined, not just the mouse samples.
     const std::size_t painted_near = test::faces_near(editor.document().mesh(), path, near_radius);
@@ -93,12 +98,13 @@ TEST_F(EditorScript, StrokeUndoRedoSaveRoundTrip) {
     EXPECT_GT(painted_near, original_near);
 }
 
+// Shift with the refine brush coarsens to the base level whatever the target, so it visibly removes
+// what refining added, even with the target the stroke was painted at.
 TEST_F(EditorScript, ShiftInvertsRefineIntoCoarsen) {
     const std::size_t original_faces = editor.document().mesh().num_faces();
     stroke(from, to, 3);
     const std::size_t refined_faces = editor.document().mesh().num_faces();
     ASSERT_GT(refined_faces, original_faces);
-    editor.brush().target_level = 0;
     stroke(from, to, 3, {.shift = true});
     EXPECT_LT(editor.document().mesh().num_faces(), refined_faces);
     EXPECT_TRUE(rgb::check_invariants(editor.document().mesh()).ok());
@@ -117,6 +123,30 @@ TEST_F(EditorScript, NavigationDragsDoNotPaint) {
     EXPECT_FALSE(editor.document().history().can_undo());
 }
 
+// The wheel zooms towards the cursor: the surface point under it stays under it.
+TEST_F(EditorScript, ZoomKeepsThePointUnderTheCursor) {
+    const glm::vec2 px{0.3f * kViewport.x, 0.5f * kViewport.y};
+    editor.mouse_moved(px);
+    const std::optional<SurfaceHit> before = editor.cursor_hit();
+    ASSERT_TRUE(before.has_value());
+    const float distance = editor.camera().camera().distance;
+    editor.scrolled(3.0f);
+    EXPECT_LT(editor.camera().camera().distance, distance);
+    const std::optional<SurfaceHit> after = editor.cursor_hit();
+    ASSERT_TRUE(after.has_value());
+    EXPECT_LT(glm::distance(after->point, before->point), 1e-3 * static_cast<double>(distance));
+}
+
+TEST_F(EditorScript, MinusAndEqualStepTheTargetLevel) {
+    editor.brush().target_level = 3;
+    editor.key_pressed(Key::Equal, {});
+    EXPECT_EQ(editor.brush().target_level, 4);
+    for (int i = 0; i < 10; ++i) editor.key_pressed(Key::Minus, {});
+    EXPECT_EQ(editor.brush().target_level, 0);
+    for (int i = 0; i < 20; ++i) editor.key_pressed(Key::Equal, {});
+    EXPECT_EQ(editor.brush().target_level, kMaxBrushLevel);
+}
+
 TEST_F(EditorScript, StrokeOffTheMeshLeavesNoUndoStep) {
     stroke({5.0f, 5.0f}, {40.0f, 5.0f}, 4);
     EXPECT_FALSE(editor.document().history().can_undo());
@@ -125,17 +155,20 @@ TEST_F(EditorScript, StrokeOffTheMeshLeavesNoUndoStep) {
 
 TEST_F(EditorScript, FloodFillRunsInSlicesAndUndoes) {
     const rgb::Mesh original = editor.document().mesh();
-    editor.start_flood_fill(1);
+    rgb::Mesh whole = original;
+    rgb::set_level(whole, 2);
+    editor.start_flood_fill(2);
     ASSERT_NE(editor.job(), nullptr);
     int frames = 0;
     while (editor.job() != nullptr && frames < 100000) {
         editor.update(std::chrono::microseconds(200));
         ++frames;
     }
-    EXPECT_GT(frames, 1) << "a flood fill must give the window frames while it works";
-    EXPECT_EQ(editor.document().mesh().num_faces(), 4 * original.num_faces());
+    EXPECT_GT(frames, 3) << "a flood fill must give the window frames while it works";
+    EXPECT_EQ(editor.document().mesh().num_faces(), 16 * original.num_faces());
+    EXPECT_TRUE(rgbtest::same_mesh(editor.document().mesh(), whole));
     EXPECT_TRUE(editor.undo());
-    EXPECT_TRUE(rgbtest::same_mesh(editor.document().mesh(), original));
+    EXPECT_TRUE(rgbtest::same_slots(editor.document().mesh(), original));
 }
 
 TEST_F(EditorScript, SampleLevelReadsTheFaceUnderTheCursor) {
@@ -160,12 +193,30 @@ TEST_F(EditorScript, UnsavedChangesAskBeforeQuitOrOpen) {
     editor.answer_pending(false);
     EXPECT_FALSE(editor.should_quit());
     const std::size_t painted = editor.document().mesh().num_faces();
+    // The file is read first (in the background), and only then the question comes.
     editor.request_open(bunny_path());
+    editor.finish_work();
     EXPECT_EQ(editor.pending(), Pending::DiscardForOpen);
     EXPECT_EQ(editor.document().mesh().num_faces(), painted);
     editor.answer_pending(true);
     EXPECT_LT(editor.document().mesh().num_faces(), painted);
     EXPECT_FALSE(editor.document().dirty());
+}
+
+TEST_F(EditorScript, AFileThatCannotBeOpenedAsksNothingAndTheMeshStays) {
+    stroke(from, to, 3);
+    const rgb::Mesh painted = editor.document().mesh();
+    const std::filesystem::path bad = std::filesystem::path(::testing::TempDir()) / "editor_bad_open.obj";
+    { std::ofstream(bad) << "v 0 0 0\nv 1 0 0\nf 1 2 7\n"; }
+    const std::uint64_t failures = editor.open_failures();
+    editor.request_open(bad.string());
+    editor.finish_work();
+    EXPECT_EQ(editor.pending(), Pending::None);
+    EXPECT_TRUE(editor.message_is_error());
+    EXPECT_NE(editor.message().find("editor_bad_open.obj:3"), std::string::npos) << editor.message();
+    EXPECT_EQ(editor.open_failures(), failures + 1);
+    EXPECT_TRUE(rgbtest::same_slots(editor.document().mesh(), painted));
+    EXPECT_EQ(editor.document().path(), bunny_path());
 }
 
 TEST_F(EditorScript, LoadErrorsBecomeMessages) {
@@ -187,6 +238,7 @@ TEST_F(EditorScript, SaveAsOverAnotherFileAsksFirst) {
     EXPECT_EQ(std::filesystem::file_size(other), 8u);
     editor.request_save_as(other.string());
     editor.answer_pending(true);
+    editor.finish_work();
     EXPECT_GT(std::filesystem::file_size(other), 8u);
     EXPECT_EQ(editor.document().path(), other.string());
 }

@@ -1,6 +1,7 @@
 // rgbsub edit --screenshot: a full editor frame through OSMesa, panels included.
 #include <gtest/gtest.h>
 
+#include "app/editor.h"
 #include "app/headless_frame.h"
 
 namespace app {
@@ -13,11 +14,12 @@ TEST(HeadlessFrame, DrawsTheMeshAndThePanel) {
     ASSERT_EQ(image.width, 800);
     ASSERT_EQ(image.height, 600);
     const glm::u8vec4 background = image.pixel(2, image.height / 2);
-    // The framed mesh covers the centre of the view, left of the panel.
-    EXPECT_NE(image.pixel(400, 320), background);
+    // The framed mesh covers the centre of what the panel leaves free, and not what it covers.
+    const int free_centre = static_cast<int>((800.0f - kPanelCover) / 2.0f);
+    EXPECT_NE(image.pixel(free_centre, 300), background);
     // The panel sits at the top right: its title bar is neither background nor mesh.
     EXPECT_NE(image.pixel(image.width - 100, 16), background);
-    EXPECT_NE(image.pixel(image.width - 100, 16), image.pixel(400, 320));
+    EXPECT_NE(image.pixel(image.width - 100, 16), image.pixel(free_centre, 300));
 }
 
 TEST(HeadlessFrame, ALoadErrorIsReported) {

@@ -1,8 +1,11 @@
-// Checks the files the Xvfb test saved from the real editor window (editor_window_test.sh):
-//   saved_files_check ORIGINAL PAINTED UNDONE REDONE X0 Y0 X1 Y1
-// Each saved file must load as a valid adaptive state; painting must have added triangles near the
-// stroke from pixel (X0,Y0) to (X1,Y1) of the 1280x800 window; undo must restore the original
-// triangle count exactly, and redo the painted mesh bit for bit.
+// Checks the files the Xvfb test saved from the real editor window and made with `rgbsub apply`
+// (editor_window_test.sh):
+//   saved_files_check ORIGINAL PANEL PAINTED UNDONE REDONE REPLAYED HALVES X0 Y0 X1 Y1
+// Each file must load as a valid adaptive state. A drag on the panel must have painted nothing;
+// painting must have added triangles near the stroke from pixel (X0,Y0) to (X1,Y1) of the 1280x800
+// window; undo must restore the original mesh exactly, and redo the painted mesh; the session's
+// script replayed by `rgbsub apply`, whole or in two halves with a save and reload between, must
+// give the painted mesh.
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -31,20 +34,26 @@ rgb::Mesh load_valid(const char* path) {
     return mesh;
 }
 
+void same(const rgb::Mesh& a, const rgb::Mesh& b, const std::string& what) {
+    const testing::AssertionResult result = rgbtest::same_mesh(a, b);
+    expect(result, what + (result ? "" : ": " + std::string(result.message())));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc != 9) {
-        std::fprintf(stderr, "usage: saved_files_check ORIGINAL PAINTED UNDONE REDONE X0 Y0 X1 Y1\n");
+    if (argc != 12) {
+        std::fprintf(stderr, "usage: saved_files_check ORIGINAL PANEL PAINTED UNDONE REDONE REPLAYED HALVES X0 Y0 X1 Y1\n");
         return 2;
     }
     // The stroke's surface points, seen by an editor framing the original mesh like the window did.
     app::Editor editor({1280, 800});
+    editor.set_covered_right(app::kPanelCover);
     if (!editor.open(argv[1])) {
         std::fprintf(stderr, "%s\n", editor.message().c_str());
         return 2;
     }
-    const glm::vec2 from(std::atof(argv[5]), std::atof(argv[6])), to(std::atof(argv[7]), std::atof(argv[8]));
+    const glm::vec2 from(std::atof(argv[8]), std::atof(argv[9])), to(std::atof(argv[10]), std::atof(argv[11]));
     std::vector<glm::dvec3> path;
     for (int i = 0; i <= 20; ++i) {
         editor.mouse_moved(from + (to - from) * (static_cast<float>(i) / 20.0f));
@@ -54,15 +63,19 @@ int main(int argc, char** argv) {
     const double radius = path.empty() ? 0.0 : editor.brush_world_radius(path.front());
     const rgb::Mesh& original = editor.document().mesh();
 
-    const rgb::Mesh painted = load_valid(argv[2]);
-    const rgb::Mesh undone = load_valid(argv[3]);
-    const rgb::Mesh redone = load_valid(argv[4]);
+    const rgb::Mesh panel = load_valid(argv[2]);
+    const rgb::Mesh painted = load_valid(argv[3]);
+    const rgb::Mesh undone = load_valid(argv[4]);
+    const rgb::Mesh redone = load_valid(argv[5]);
+    const rgb::Mesh replayed = load_valid(argv[6]);
+    const rgb::Mesh halves = load_valid(argv[7]);
+    same(panel, original, "a drag on the panel paints nothing");
     const std::size_t before = app::test::faces_near(original, path, radius);
     const std::size_t after = app::test::faces_near(painted, path, radius);
     expect(after > before, "more triangles near the stroke (" + std::to_string(before) + " -> " + std::to_string(after) + ")");
-    const testing::AssertionResult undo_ok = rgbtest::same_mesh(undone, original);
-    expect(undo_ok, std::string("undo restores the original mesh exactly") + (undo_ok ? "" : ": " + std::string(undo_ok.message())));
-    const testing::AssertionResult redo_ok = rgbtest::same_mesh(redone, painted);
-    expect(redo_ok, std::string("redo restores the painted mesh exactly") + (redo_ok ? "" : ": " + std::string(redo_ok.message())));
+    same(undone, original, "undo restores the original mesh exactly");
+    same(redone, painted, "redo restores the painted mesh exactly");
+    same(replayed, painted, "rgbsub apply replays the saved strokes to the painted mesh");
+    same(halves, painted, "replaying them in two halves, saved and reloaded between, gives it too");
     return failures == 0 ? 0 : 1;
 }

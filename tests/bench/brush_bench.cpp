@@ -1,28 +1,35 @@
-// Brush benchmark: replays a recorded brush path (a wavy stroke across the view, one mouse sample
-// per 5 px as a steady hand delivers them) through the editor's input layer on the bunny refined
-// uniformly, and reports engine time per dab (set_level_faces) and picking time per dab, p50/p95.
-// The radius shrinks with the level so the footprint stays near 2000 triangles: the claim under test
-// is that a dab's cost follows its footprint, not the mesh size.
-// Run on demand: ./brush_bench [levels...]   (default: 3 4, i.e. 235k and 940k triangles)
+// Brush benchmark: replays a recorded stroke (a wavy path across the view, one mouse sample per
+// 5 px, one editor frame per sample) through the editor's input layer on the bunny refined
+// uniformly, and reports what the editor costs at that size:
+//   - engine ms per frame (the queued stroke work done in Editor::update, at the slice JobPacer
+//     gives frames that draw in 4 ms), p50 / p95 / max,
+//   - pick ms per dab (the picking index, plus mapping the hit to base space), p50 / p95,
+//   - pick ms for rays through random pixels (the index alone),
+//   - the press that starts a stroke,
+//   - undo and redo of the stroke, with its splits, and of a shorter stroke of about 10k splits.
+// Run on demand: ./brush_bench [levels...]   (default: 4 5, i.e. 940k and 3.8M triangles)
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <random>
 #include <string>
 #include <vector>
 
 #include "app/editor.h"
+#include "app/job_pacer.h"
 #include "io/mesh_file.h"
 #include "rgb/refine.h"
 
 namespace {
 
+using Clock = std::chrono::steady_clock;
 constexpr glm::ivec2 kViewport{1280, 800};
+// What JobPacer gives the work when drawing takes 4 ms (a GPU drawing these meshes).
+const auto kFrameSlice = std::chrono::microseconds(static_cast<long long>(1000.0 * app::JobPacer::slice_ms(4.0)));
 
-struct Samples {
-    std::vector<double> engine_ms, pick_ms, operations;
-};
+double ms_since(Clock::time_point start) { return std::chrono::duration<double, std::milli>(Clock::now() - start).count(); }
 
 double percentile(std::vector<double> v, double p) {
     if (v.empty()) return 0.0;
@@ -38,37 +45,83 @@ std::vector<glm::vec2> recorded_path() {
     return path;
 }
 
-Samples replay(app::Editor& editor, app::Modifiers mods) {
-    Samples samples;
-    const std::vector<glm::vec2> path = recorded_path();
+struct StrokeResult {
+    std::vector<double> engine_ms, geometry_ms, pick_ms;
+    double press_ms = 0.0, undo_ms = 0.0, redo_ms = 0.0, undo_display_ms = 0.0, redo_display_ms = 0.0;
+    std::size_t splits = 0;
+    std::size_t frames = 0, faces_before = 0, faces_after = 0;
+};
+
+// The recorded path, or the part of it given by `fraction`.
+StrokeResult replay(app::Editor& editor, app::Modifiers mods, double fraction = 1.0) {
+    StrokeResult r;
+    r.faces_before = editor.document().mesh().num_faces();
+    std::vector<glm::vec2> path = recorded_path();
+    path.resize(std::max<std::size_t>(2, static_cast<std::size_t>(fraction * static_cast<double>(path.size()))));
     editor.mouse_moved(path.front());
-    const auto press_start = std::chrono::steady_clock::now();
     editor.mouse_pressed(app::MouseButton::Left, mods);
-    std::printf("    press (undo snapshot + first, whole-surface pick + dab) %.1f ms\n",
-                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - press_start).count());
-    std::size_t dabs = editor.dab_timing().dabs;
-    const auto record = [&] {
-        if (editor.dab_timing().dabs == dabs) return;
-        dabs = editor.dab_timing().dabs;
-        samples.engine_ms.push_back(editor.dab_timing().last_ms);
-        samples.pick_ms.push_back(editor.dab_timing().last_pick_ms);
-        samples.operations.push_back(static_cast<double>(editor.dab_timing().last_operations));
+    r.press_ms = editor.timing().stroke_start_ms;
+    std::size_t dabs = editor.timing().dabs;
+    auto frame = [&] {
+        if (editor.timing().dabs != dabs) r.pick_ms.push_back(editor.timing().last_pick_ms);
+        dabs = editor.timing().dabs;
+        editor.update(kFrameSlice);
+        r.engine_ms.push_back(editor.timing().frame_ms);
+        r.geometry_ms.push_back(editor.timing().geometry_ms);
     };
-    record();
+    frame();
     for (const glm::vec2& p : path) {
         editor.mouse_moved(p);
-        record();
+        frame();
     }
     editor.mouse_released(app::MouseButton::Left);
-    return samples;
+    while (editor.job() != nullptr) frame();
+    r.frames = r.engine_ms.size();
+    r.faces_after = editor.document().mesh().num_faces();
+    const std::size_t vertices = editor.document().mesh().num_vertices();
+    // Undo and redo, each followed by what the next frame does for picking (the renderer's buffers
+    // follow the same way).
+    auto start = Clock::now();
+    editor.undo();
+    r.undo_ms = ms_since(start);
+    r.splits = vertices > editor.document().mesh().num_vertices() ? vertices - editor.document().mesh().num_vertices()
+                                                                 : editor.document().mesh().num_vertices() - vertices;
+    start = Clock::now();
+    editor.document().geometry();
+    r.undo_display_ms = ms_since(start);
+    start = Clock::now();
+    editor.redo();
+    r.redo_ms = ms_since(start);
+    start = Clock::now();
+    editor.document().geometry();
+    r.redo_display_ms = ms_since(start);
+    return r;
 }
 
-void report(const char* what, const Samples& s) {
-    std::printf("  %-28s %4zu dabs  engine p50 %6.3f ms  p95 %6.3f ms  max %6.3f ms | pick p50 %6.3f ms  p95 %6.3f ms"
-                " | operations p50 %5.0f\n",
-                what, s.engine_ms.size(), percentile(s.engine_ms, 0.5), percentile(s.engine_ms, 0.95),
-                percentile(s.engine_ms, 1.0), percentile(s.pick_ms, 0.5), percentile(s.pick_ms, 0.95),
-                percentile(s.operations, 0.5));
+void report(const char* what, const StrokeResult& r) {
+    std::printf("  %s: %zu -> %zu triangles over %zu frames, %zu dabs\n", what, r.faces_before, r.faces_after, r.frames, r.pick_ms.size());
+    std::printf("    engine per frame p50 %6.2f ms  p95 %6.2f ms  max %6.2f ms | pick per dab p50 %5.3f ms  p95 %5.3f ms\n",
+                percentile(r.engine_ms, 0.5), percentile(r.engine_ms, 0.95), percentile(r.engine_ms, 1.0),
+                percentile(r.pick_ms, 0.5), percentile(r.pick_ms, 0.95));
+    std::printf("    picking geometry and index per frame p50 %5.2f ms  p95 %5.2f ms\n", percentile(r.geometry_ms, 0.5),
+                percentile(r.geometry_ms, 0.95));
+    std::printf("    stroke start %.3f ms | undo of %zu vertices %.1f ms (+%.1f ms display) | redo %.1f ms (+%.1f ms display)\n",
+                r.press_ms, r.splits, r.undo_ms, r.undo_display_ms, r.redo_ms, r.redo_display_ms);
+}
+
+void pick_rays(app::Editor& editor) {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> x(0.2f * kViewport.x, 0.8f * kViewport.x), y(0.2f * kViewport.y, 0.8f * kViewport.y);
+    std::vector<double> ms;
+    int hits = 0;
+    for (int i = 0; i < 1000; ++i) {
+        editor.mouse_moved({x(rng), y(rng)});
+        const auto start = Clock::now();
+        hits += editor.cursor_hit().has_value();
+        ms.push_back(ms_since(start));
+    }
+    std::printf("  pick through random pixels (%d of 1000 hit): p50 %.3f ms  p95 %.3f ms  max %.3f ms\n", hits, percentile(ms, 0.5),
+                percentile(ms, 0.95), percentile(ms, 1.0));
 }
 
 }  // namespace
@@ -76,21 +129,28 @@ void report(const char* what, const Samples& s) {
 int main(int argc, char** argv) {
     std::vector<int> levels;
     for (int i = 1; i < argc; ++i) levels.push_back(std::atoi(argv[i]));
-    if (levels.empty()) levels = {3, 4};
+    if (levels.empty()) levels = {4, 5};
     const std::string bunny = std::string(RGBSUB_SOURCE_DIR) + "/assets/bunny.obj";
     for (int level : levels) {
         rgb::Mesh mesh = rgbio::load_mesh(bunny);
         rgb::refine_uniform(mesh, level);
         std::printf("bunny at level %d: %zu triangles\n", level, mesh.num_faces());
         app::Editor editor(kViewport);
+        auto start = Clock::now();
         editor.document().adopt(std::move(mesh), "");
+        std::printf("  adopting it (display geometry and picking index) %.0f ms\n", ms_since(start));
         editor.reset_view();
-        editor.brush().radius_px = 25.0f / std::exp2(static_cast<float>(level - 3));
+        pick_rays(editor);
+        // A brush of about 4000 triangles at this level, one level deeper: about 10k splits a stroke.
+        editor.brush().radius_px = 50.0f / std::exp2(static_cast<float>(level - 3));
         editor.brush().falloff = 0.3f;
         editor.brush().target_level = level + 1;
         report("refine one level deeper", replay(editor, {}));
         editor.brush().target_level = level;
         report("coarsen back (Shift)", replay(editor, {.shift = true}));
+        // The start of the path: a stroke of about 10k splits, the size the undo goal is stated for.
+        editor.brush().target_level = level + 1;
+        report("a shorter stroke", replay(editor, {}, 0.17 / std::exp2(static_cast<double>(level - 4))));
     }
     return 0;
 }

@@ -141,7 +141,7 @@ TEST(Screenshot, LevelLegendShowsEachLevelsColour) {
         // Swatch centres, as laid out in level_legend.cpp (12 px margin, 16 px swatches, 4 px gap).
         const int y = view.size.y - 12 - (level + 1) * 20 + 4 + 8;
         const glm::u8vec4 p = image.pixel(12 + 8, y);
-        const glm::vec3 want = render::level_colour(level, max_level) * 255.0f;
+        const glm::vec3 want = render::level_colour(level) * 255.0f;
         EXPECT_NEAR(p.r, want.r, 1.0) << "level " << level;
         EXPECT_NEAR(p.g, want.g, 1.0) << "level " << level;
         EXPECT_NEAR(p.b, want.b, 1.0) << "level " << level;
@@ -205,6 +205,23 @@ TEST(Screenshot, MeshesFarFromUnitSizeLookAsAtUnitSize) {
             EXPECT_LE(differing, image.rgba.size() / 4 / 200) << "scale " << scale << ": pixels differing from the unit-size image";
         }
     }
+}
+
+}  // namespace
+
+namespace {
+
+// One triangle facing +z: seen from +z it shows the plain grey, from -z the back-face colour, so that
+// the inside of an open mesh never passes for its outside.
+TEST(Screenshot, BackFacesHaveAColourOfTheirOwn) {
+    const std::vector<glm::dvec3> p{{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}};
+    const std::vector<rgb::Triangle> t{{0, 1, 2}};
+    rgb::Mesh mesh(p, t);
+    const Image front = render::render_headless(mesh, RenderOptions{}, HeadlessView{{64, 64}, 0.0f, 0.0f});
+    const Image back = render::render_headless(mesh, RenderOptions{}, HeadlessView{{64, 64}, 180.0f, 0.0f});
+    const glm::u8vec4 f = front.pixel(32, 36), b = back.pixel(32, 36);
+    EXPECT_LE(std::abs(int{f.r} - int{f.g}), 6) << "the front is grey";
+    EXPECT_GT(int{b.r} - int{b.g}, 40) << "the back is reddish";
 }
 
 }  // namespace

@@ -1,0 +1,81 @@
+#include "app/background_task.h"
+
+#include <new>
+#include <thread>
+#include <utility>
+
+namespace app {
+
+struct BackgroundTask::Shared {
+    std::atomic<bool> done{false};
+    std::optional<std::string> error;
+    std::optional<LoadedDocument> document;
+};
+
+namespace {
+
+std::atomic<int> threads_running{0};
+
+// Runs `work` on a thread of its own, counted while it runs.
+template <class Work>
+void start_thread(Work&& work) {
+    ++threads_running;
+    std::thread([work = std::forward<Work>(work)]() mutable {
+        work();
+        --threads_running;
+    }).detach();
+}
+
+// The message of whatever the work threw.
+std::string describe(const std::exception& failure) {
+    return dynamic_cast<const std::bad_alloc*>(&failure) != nullptr ? std::string("out of memory") : std::string(failure.what());
+}
+
+}  // namespace
+
+BackgroundTask::BackgroundTask(Kind kind, std::string path)
+    : kind_(kind), path_(std::move(path)), start_(std::chrono::steady_clock::now()), shared_(std::make_shared<Shared>()) {}
+
+BackgroundTask::~BackgroundTask() = default;
+
+int BackgroundTask::running() { return threads_running.load(); }
+
+std::unique_ptr<BackgroundTask> BackgroundTask::open(const std::string& path, render::PositionSource source) {
+    std::unique_ptr<BackgroundTask> task(new BackgroundTask(Kind::Open, path));
+    start_thread([shared = task->shared_, path, source] {
+        try {
+            shared->document.emplace(load_document(path, source));
+        } catch (const std::exception& failure) {
+            shared->error = describe(failure);
+        }
+        shared->done.store(true, std::memory_order_release);
+    });
+    return task;
+}
+
+std::unique_ptr<BackgroundTask> BackgroundTask::save(rgb::Mesh copy, const std::string& path, const rgbio::SaveOptions& options) {
+    std::unique_ptr<BackgroundTask> task(new BackgroundTask(Kind::Save, path));
+    start_thread([shared = task->shared_, mesh = std::move(copy), path, options] {
+        try {
+            rgbio::save_mesh(mesh, path, options);
+        } catch (const std::exception& failure) {
+            shared->error = describe(failure);
+        }
+        shared->done.store(true, std::memory_order_release);
+    });
+    return task;
+}
+
+double BackgroundTask::seconds() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
+
+bool BackgroundTask::done() const { return shared_->done.load(std::memory_order_acquire); }
+
+const std::optional<std::string>& BackgroundTask::error() const { return shared_->error; }
+
+LoadedDocument BackgroundTask::take_document() {
+    LoadedDocument document = std::move(*shared_->document);
+    shared_->document.reset();
+    return document;
+}
+
+}  // namespace app

@@ -1,0 +1,274 @@
+// The editor's files: opening and saving (right away, or in the background with the questions
+// first), the questions themselves, the session's strokes as a script, and the recovery copy.
+#include <filesystem>
+#include <thread>
+#include <utility>
+
+#include "app/editor.h"
+#include "io/atomic_file.h"
+#include "io/obj_error.h"
+
+namespace app {
+
+// ---- right away -------------------------------------------------------------------------------
+
+bool Editor::open(const std::string& path) {
+    if (refuse_if_busy("open a file")) return false;
+    try {
+        load(path);
+    } catch (const rgbio::ObjError& error) {
+        report(error.what(), true);
+        ++open_failures_;
+        return false;
+    }
+    return true;
+}
+
+void Editor::load(const std::string& path) {
+    const std::vector<std::string> warnings = document_.open(path);
+    report(warnings.empty() ? "opened " + path : path + ": " + warnings.front() + (warnings.size() > 1 ? " (and more)" : ""), false);
+    remember_recent(path);
+    reset_view();
+    if (recovery_) recovery_->remove_own();
+}
+
+bool Editor::save() {
+    if (document_.path().empty()) {
+        report("the mesh has no file yet: use Save as", true);
+        return false;
+    }
+    return save_as(document_.path());
+}
+
+bool Editor::save_as(const std::string& path) {
+    if (refuse_if_busy("save")) return false;
+    try {
+        document_.save(path, save_options_);
+        report("saved " + path, false);
+    } catch (const rgbio::SaveError& error) {
+        report(error.what(), true);
+        return false;
+    }
+    remember_recent(path);
+    if (recovery_) recovery_->remove_own();
+    return true;
+}
+
+bool Editor::save_strokes(const std::string& path) {
+    const UndoHistory::SessionScript session = document_.history().session_script();
+    const std::string opened = document_.path().empty() ? std::string("the mesh") : document_.path();
+    try {
+        rgbio::write_file_atomically(path, "# rgbsub edit session on " + opened + ": rgbsub apply " + opened + " " + path +
+                                               " -o OUT.obj replays it\n" + session.text);
+    } catch (const rgbio::SaveError& error) {
+        report(error.what(), true);
+        return false;
+    }
+    if (session.unscripted_steps > 0)
+        report("saved the strokes to " + path + ", but " + std::to_string(session.unscripted_steps) +
+                   " edit(s) in effect (automatic LOD, or stopped before the end) have no script: a replay will differ",
+               true);
+    else
+        report("saved the strokes to " + path, false);
+    return true;
+}
+
+// ---- in the background, with questions ------------------------------------------------------
+
+void Editor::request_open(const std::string& path) {
+    if (file_task_) {
+        report("wait until " + file_task_->path() + " is " + (file_task_->kind() == BackgroundTask::Kind::Open ? "read" : "saved"), true);
+        return;
+    }
+    file_task_ = BackgroundTask::open(path, document_.geometry().source());
+    report("opening " + path + " ...", false);
+}
+
+void Editor::request_save() {
+    if (document_.path().empty()) {
+        report("the mesh has no file yet: use Save as", true);
+        return;
+    }
+    start_save(document_.path());
+}
+
+void Editor::request_save_as(const std::string& path) {
+    std::error_code error;
+    if (path != document_.path() && std::filesystem::exists(path, error)) {
+        pending_ = Pending::Overwrite;
+        pending_path_ = path;
+    } else {
+        start_save(path);
+    }
+}
+
+// The copy is made now, between frames, so the thread writing it shares nothing with the editor.
+void Editor::start_save(const std::string& path) {
+    if (file_task_) {
+        report("wait until " + file_task_->path() + " is " + (file_task_->kind() == BackgroundTask::Kind::Open ? "read" : "saved"), true);
+        return;
+    }
+    if (busy()) {
+        save_when_idle_ = path;
+        report("saving " + path + " once the work under way is done", false);
+        return;
+    }
+    save_when_idle_.reset();
+    saved_changes_ = document_.changes();
+    file_task_ = BackgroundTask::save(document_.mesh(), path, save_options_);
+    report("saving " + path + " ...", false);
+}
+
+void Editor::poll_file_task() {
+    if (save_when_idle_ && !busy() && !file_task_) start_save(*save_when_idle_);
+    if (!file_task_ || !file_task_->done()) return;
+    // A file read while strokes are still being applied waits for them: they belong to the mesh
+    // on screen, and they are what makes it unsaved.
+    if (file_task_->kind() == BackgroundTask::Kind::Open && busy()) return;
+    const std::unique_ptr<BackgroundTask> task = std::move(file_task_);
+    const bool recovering = std::exchange(recovering_, false);
+    if (task->error()) {
+        report(*task->error(), true);
+        quit_after_save_ = false;
+        open_failures_ += task->kind() == BackgroundTask::Kind::Open;
+        return;
+    }
+    if (task->kind() == BackgroundTask::Kind::Save) {
+        document_.saved_as(task->path(), saved_changes_);
+        remember_recent(task->path());
+        report("saved " + task->path() + " in " + std::to_string(static_cast<int>(task->seconds() * 1000.0)) + " ms", false);
+        if (recovery_ && !document_.dirty()) recovery_->remove_own();
+        quit_ = quit_ || quit_after_save_;
+        return;
+    }
+    if (recovering) {
+        document_.adopt(task->take_document(), offered_->document_path, true);
+        recovered_ = std::exchange(offered_, std::nullopt);
+        report("recovered the unsaved work" + (document_.path().empty() ? std::string() : " on " + document_.path()) +
+                   ": save it to keep it",
+               false);
+        reset_view();
+        keep_recovery_copy(true);
+        return;
+    }
+    if (document_.dirty()) {
+        // Read fine: now the question.
+        opened_ = task->take_document();
+        pending_ = Pending::DiscardForOpen;
+        pending_path_ = task->path();
+        return;
+    }
+    opened(task->take_document(), task->path());
+}
+
+void Editor::stop_opening() {
+    if (!file_task_ || file_task_->kind() != BackgroundTask::Kind::Open) return;
+    report("stopped opening " + file_task_->path(), false);
+    file_task_.reset();
+    recovering_ = false;
+}
+
+void Editor::opened(LoadedDocument loaded, const std::string& path) {
+    cancel_job();  // nothing may go on working on the mesh being replaced
+    const std::vector<std::string> warnings = std::move(loaded.warnings);
+    document_.adopt(std::move(loaded), path);
+    report(warnings.empty() ? "opened " + path : path + ": " + warnings.front() + (warnings.size() > 1 ? " (and more)" : ""), false);
+    remember_recent(path);
+    reset_view();
+    if (recovery_) recovery_->remove_own();
+}
+
+void Editor::request_quit() {
+    if (file_task_ && file_task_->kind() == BackgroundTask::Kind::Save) {
+        quit_after_save_ = true;
+        report("quitting once " + file_task_->path() + " is saved", false);
+    } else if (document_.dirty()) {
+        pending_ = Pending::DiscardForQuit;
+    } else {
+        quit_ = true;
+    }
+}
+
+void Editor::save_and_quit() {
+    pending_ = Pending::None;
+    if (document_.path().empty()) {
+        report("the mesh has no file yet: give it a name and use Save as", true);
+        return;
+    }
+    request_save();
+    quit_after_save_ = true;
+}
+
+bool Editor::should_quit() const { return quit_ && !(file_task_ && file_task_->kind() == BackgroundTask::Kind::Save) && !save_when_idle_; }
+
+void Editor::answer_pending(bool proceed) {
+    const Pending question = std::exchange(pending_, Pending::None);
+    switch (question) {
+        case Pending::DiscardForQuit: quit_ = proceed; break;
+        case Pending::DiscardForOpen:
+            if (proceed) opened(std::move(*opened_), pending_path_);
+            opened_.reset();
+            break;
+        case Pending::Overwrite:
+            if (proceed) start_save(pending_path_);
+            break;
+        case Pending::Recover:
+            if (proceed) {
+                recovering_ = true;
+                file_task_ = BackgroundTask::open(offered_->mesh_file.string(), document_.geometry().source());
+                report("recovering the unsaved work ...", false);
+            } else {
+                RecoveryStore::remove(*offered_);
+                offered_.reset();
+            }
+            break;
+        case Pending::None: break;
+    }
+}
+
+// ---- the recovery copy ------------------------------------------------------------------------
+
+void Editor::keep_recovery_copy(bool force) {
+    if (!recovery_ || recovery_task_ || !document_.dirty() || document_.changes() == recovery_changes_) return;
+    if (!force && std::chrono::steady_clock::now() < recovery_due_) return;
+    try {
+        recovery_->make_folder();
+    } catch (const std::filesystem::filesystem_error& error) {
+        report(std::string("cannot keep a recovery copy: ") + error.what(), true);
+        recovery_due_ = std::chrono::steady_clock::now() + recovery_interval_;
+        return;
+    }
+    recovery_changes_ = document_.changes();
+    recovery_task_ = BackgroundTask::save(document_.mesh(), recovery_->mesh_file().string(), rgbio::SaveOptions{});
+    recovery_due_ = std::chrono::steady_clock::now() + recovery_interval_;
+}
+
+void Editor::poll_recovery_task() {
+    if (!recovery_task_ || !recovery_task_->done()) return;
+    const std::unique_ptr<BackgroundTask> task = std::move(recovery_task_);
+    if (task->error()) {
+        report("cannot keep a recovery copy: " + *task->error(), true);
+        recovery_changes_ = 0;
+        return;
+    }
+    if (!document_.dirty()) {
+        // Saved meanwhile: nothing to recover.
+        recovery_->remove_own();
+        return;
+    }
+    try {
+        recovery_->write_note(document_.path());
+    } catch (const rgbio::SaveError& error) {
+        report(std::string("cannot keep a recovery copy: ") + error.what(), true);
+        return;
+    }
+    if (recovered_) RecoveryStore::remove(*std::exchange(recovered_, std::nullopt));
+}
+
+void Editor::close_session() {
+    while (recovery_task_ && !recovery_task_->done()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    recovery_task_.reset();
+    if (recovery_) recovery_->remove_own();
+}
+
+}  // namespace app

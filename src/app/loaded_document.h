@@ -1,0 +1,23 @@
+#pragma once
+// A mesh read from a file with everything the editor shows and picks on already built, so that
+// reading can happen away from the window's thread and handing it over costs nothing.
+#include <string>
+#include <vector>
+
+#include "app/surface_index.h"
+#include "render/surface_geometry.h"
+#include "rgb/mesh.h"
+
+namespace app {
+
+struct LoadedDocument {
+    rgb::Mesh mesh;
+    render::SurfaceGeometry geometry;
+    SurfaceIndex index;
+    std::vector<std::string> warnings;
+};
+
+// Reads `path` (throws rgbio::ObjError) and builds its geometry at `source` positions and its index.
+LoadedDocument load_document(const std::string& path, render::PositionSource source);
+
+}  // namespace app

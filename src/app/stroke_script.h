@@ -1,0 +1,22 @@
+#pragma once
+// A stroke's dabs as lines of a level-of-detail script (io/lod_script.h): a `brush` line whenever the
+// dab's base-space radius or settings differ from the previous dab's (always before the first), then
+// `dab X Y Z [VX VY VZ]`. Numbers are written so that they read back exactly, so `rgbsub apply`
+// makes the same requests the editor made.
+#include <optional>
+#include <string>
+
+#include "io/lod_script.h"
+#include "rgb/dab.h"
+
+namespace app {
+
+class StrokeScript {
+public:
+    std::string lines(const rgb::Dab& dab);
+
+private:
+    std::optional<rgbio::BrushEdit> brush_;
+};
+
+}  // namespace app
