@@ -72,7 +72,7 @@ DetailEdit detail_edit(const LineReader& r, DetailCriterion criterion) {
     DetailEdit edit;
     edit.criterion = criterion;
     const char* what = criterion == DetailCriterion::MaxEdge ? "an edge length" : "a tolerance";
-    if (r.size() != 2 && r.size() != 7) r.fail("expected '" + r[0] + " AMOUNT [sphere X Y Z R]'");
+    if (r.size() != 2 && r.size() != 7 && r.size() != 8) r.fail("expected '" + r[0] + " AMOUNT [sphere X Y Z R [refine|coarsen|set]]'");
     const auto amount = parse_amount(r[1]);
     if (!amount) r.fail("'" + r[0] + "' needs " + what + ": a positive number, or a percentage of the bounding-box diagonal like 0.5%");
     edit.amount = *amount;
@@ -80,6 +80,11 @@ DetailEdit detail_edit(const LineReader& r, DetailCriterion criterion) {
     if (r[2] != "sphere") r.fail("expected '" + r[0] + " AMOUNT sphere X Y Z R'");
     edit.sphere = rgb::Sphere{r.point(3, "a sphere coordinate"), r.number(6, "the sphere radius")};
     if (!(edit.sphere->radius > 0.0)) r.fail("the sphere radius must be positive");
+    if (r.size() == 8) {
+        if (r[7] == "refine") edit.kind = rgb::RequestKind::Refine;
+        else if (r[7] == "coarsen") edit.kind = rgb::RequestKind::Coarsen;
+        else if (r[7] != "set") r.fail("a ball's detail is refine, coarsen or set, not '" + r[7].substr(0, 40) + "'");
+    }
     return edit;
 }
 
@@ -203,6 +208,18 @@ std::string format_brush_line(const BrushEdit& brush) {
     std::string out = std::string("brush ") + mode_name(brush.mode) + " " + std::to_string(brush.level);
     append_double(out, brush.radius);
     append_double(out, brush.falloff);
+    return out;
+}
+
+std::string format_detail_line(const DetailEdit& edit) {
+    std::string out = edit.criterion == DetailCriterion::MaxEdge ? "max-edge " : "tolerance ";
+    out += format_amount(edit.amount);
+    if (!edit.sphere) return out;
+    out += " sphere";
+    for (int i = 0; i < 3; ++i) append_double(out, edit.sphere->centre[i]);
+    append_double(out, edit.sphere->radius);
+    if (edit.kind == rgb::RequestKind::Refine) out += " refine";
+    if (edit.kind == rgb::RequestKind::Coarsen) out += " coarsen";
     return out;
 }
 

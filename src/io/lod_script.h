@@ -10,6 +10,8 @@
 //   max-edge L [sphere X Y Z R]  no edge longer than L (world units, or L% of the bounding-box
 //                                diagonal) in the uniform mesh of its level, as coarse as that allows
 //   tolerance E [sphere X Y Z R] the displayed surface within E (or E%) of the Loop limit surface
+//                                (both in a ball: set by default; a trailing `refine` only adds the
+//                                detail, `coarsen` only removes it: rgb/lod_criteria.h)
 //   brush refine|coarsen|set LEVEL RADIUS [FALLOFF]
 //                                the brush that the following dabs use (FALLOFF: fraction 0..1)
 //   dab X Y Z [VX VY VZ]         one dab at X Y Z; with a view direction, only faces facing it and
@@ -78,5 +80,7 @@ private:
 // The lines the editor's stroke recorder writes; parse_lod_script reads them back exactly.
 std::string format_brush_line(const BrushEdit& brush);
 std::string format_dab_line(const DabEdit& dab);
+// A max-edge or tolerance line (the editor's detail-size dabs), numbers in shortest round-trip form.
+std::string format_detail_line(const DetailEdit& edit);
 
 }  // namespace rgbio

@@ -5,15 +5,19 @@
 #include <cmath>
 #include <filesystem>
 #include <string>
+#include <variant>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "cli/dispatch.h"
+#include "io/lod_script.h"
 #include "io/obj_reader.h"
 #include "obj_test_support.h"
 #include "rgb/limit_error.h"
 #include "rgb/lod_criteria.h"
 #include "rgb/mesh.h"
+#include "rgb/requests.h"
 #include "rgb/surface_error.h"
 #include "scratch_folder.h"
 #include "support/same_mesh.h"
@@ -79,6 +83,57 @@ TEST_F(CliDetail, ToleranceIsReachedAndPrinted) {
     const std::string applied_out = ::testing::internal::GetCapturedStdout();
     EXPECT_NE(applied_out.find("script.txt:2: tolerance 0.05%: maximum error "), std::string::npos) << applied_out;
     EXPECT_LE(rgb::displayed_surface_error(saved("applied.obj")).max_error, 0.0005 * kDiagonal);
+}
+
+// A ball's line may end in refine or coarsen (the editor's detail-size dabs write them): the core's
+// request of that kind; format_detail_line writes lines that read back to the same edit.
+TEST_F(CliDetail, BallLinesTakeAKindAndTheFormatterRoundTrips) {
+    const rgb::Sphere ball{{0.7, 0.2, 0.1}, 0.45};
+    rgb::Mesh base = octahedron();
+    rgb::set_level(base, 3);
+    for (const rgb::RequestKind kind : {rgb::RequestKind::Refine, rgb::RequestKind::Coarsen, rgb::RequestKind::Set}) {
+        DetailEdit edit;
+        edit.criterion = DetailCriterion::MaxEdge;
+        // Not short decimals: the line must still hold them exactly. Level 3's edges are about 0.18
+        // long, their parents about 0.35: refining to 1/30 adds detail, coarsening to 0.4 removes it.
+        edit.amount = {kind == rgb::RequestKind::Coarsen ? 1.2 / 3.0 : 0.1 / 3.0, false};
+        edit.kind = kind;
+        edit.sphere = ball;
+        const std::string line = format_detail_line(edit);
+        SCOPED_TRACE(line);
+        const std::vector<ScriptLine> parsed = parse_lod_script(line + "\n", "detail.txt");
+        ASSERT_EQ(parsed.size(), 1u);
+        const DetailEdit& back = std::get<DetailEdit>(parsed[0].edit);
+        EXPECT_EQ(back.criterion, edit.criterion);
+        EXPECT_EQ(back.amount.value, edit.amount.value);
+        EXPECT_FALSE(back.amount.percent);
+        EXPECT_EQ(back.kind, kind);
+        ASSERT_TRUE(back.sphere.has_value());
+        EXPECT_EQ(back.sphere->centre, ball.centre);
+        EXPECT_EQ(back.sphere->radius, ball.radius);
+
+        rgb::Mesh by_script = base;
+        ScriptRunner().run(by_script, parsed[0]);
+        rgb::Mesh by_request = base;
+        rgb::DetailRequest request;
+        request.kind = kind;
+        request.value = rgb::edge_length_value(by_request.shared_base());
+        request.threshold = edit.amount.value;
+        request.sphere = ball;
+        rgb::apply_detail_request(by_request, request);
+        EXPECT_TRUE(rgbtest::same_mesh(by_script, by_request));
+        // Refine only adds, coarsen only removes, set may do both.
+        if (kind == rgb::RequestKind::Refine) {
+            EXPECT_GT(by_script.num_faces(), base.num_faces());
+        } else if (kind == rgb::RequestKind::Coarsen) {
+            EXPECT_LT(by_script.num_faces(), base.num_faces());
+        }
+    }
+    EXPECT_EQ(format_detail_line({DetailCriterion::Tolerance, {0.5, true}, rgb::RequestKind::Set, std::nullopt}), "tolerance 0.5%");
+    write("bad.txt", "max-edge 1 sphere 0 0 0 1 thicken\n");
+    ::testing::internal::CaptureStderr();
+    EXPECT_EQ(run({"apply", path("octahedron.obj"), path("bad.txt"), "-o", path("out.obj")}), 2);
+    EXPECT_NE(::testing::internal::GetCapturedStderr().find("bad.txt:1: "), std::string::npos);
 }
 
 TEST_F(CliDetail, BadValuesAreRefused) {
