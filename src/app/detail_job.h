@@ -19,6 +19,14 @@ class Mesh;
 
 namespace app {
 
+// The editor's detail panel: a criterion with its amount for the whole mesh, and the pixel threshold
+// of the view-dependent mode (view_lod_job.h).
+struct DetailSettings {
+    rgbio::DetailCriterion criterion = rgbio::DetailCriterion::Tolerance;
+    rgbio::Amount amount{0.1, true};  // 0.1% of the bounding-box diagonal
+    double view_pixels = 4.0;
+};
+
 class DetailJob : public MeshJob {
 public:
     // Throws std::invalid_argument for an edit the core refuses.
@@ -32,10 +40,10 @@ public:
     float progress() const override;
     bool changed() const override;
     std::string label() const override;
-    void cancel() { cancelled_ = true; }
+    void cancel() override { cancelled_ = true; }
     // The edit's script line once it ran to its end within the triangle limit; a cut-short result
     // is no line's result.
-    std::optional<std::string> script() const;
+    std::optional<std::string> script() const override;
 
     // Once done, for a tolerance: the displayed surface's largest error (rgb::displayed_surface_error).
     const std::optional<double>& reached_error() const { return reached_error_; }

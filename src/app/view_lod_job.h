@@ -34,14 +34,15 @@ public:
     bool changed() const override;
     std::string label() const override { return "view-dependent LOD"; }
     // Freezes: the mesh stays as it is.
-    void cancel() { frozen_ = true; }
+    void cancel() override { frozen_ = true; }
     // A camera's detail is no script line.
-    std::optional<std::string> script() const { return std::nullopt; }
+    std::optional<std::string> script() const override { return std::nullopt; }
 
     bool converged() const { return lod_.converged(); }
     const rgb::ViewLodStats& stats() const { return lod_.stats(); }
     // Takes effect at the next step.
     void set_settings(const rgb::ViewLodSettings& settings) { lod_.set_settings(settings); }
+    const rgb::ViewLodSettings& settings() const { return lod_.settings(); }
 
 private:
     std::function<rgb::ScreenView()> current_view_;
