@@ -244,7 +244,7 @@ void Editor::dab(glm::vec2 px) {
     const auto displayed = document_.geometry().corners(hit->face);
     const BaseSpaceHit at = to_base_space(mesh, hit->face, displayed, hit->point, radius);
     timing_.last_pick_ms = milliseconds_since(pick_start);
-    if (brush_.target == BrushSettings::Target::DetailSize) {
+    if (brush_.target != BrushSettings::Target::Level) {
         detail_dab(at, hit->point);
     } else {
         const rgb::Dab request = make_dab(brush_, mods_.shift, at, camera_.ray_through(px, viewport_).direction);

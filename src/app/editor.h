@@ -198,7 +198,8 @@ private:
     void continue_stroke(glm::vec2 px);
     void end_stroke();
     void dab(glm::vec2 px);
-    // A detail-size dab (editor_detail.cpp): a max-edge request in the ball, applied whole.
+    // A detail-size or tolerance dab (editor_detail.cpp): a max-edge or tolerance request in the
+    // ball, applied whole.
     void detail_dab(const BaseSpaceHit& at, const glm::dvec3& hit_point);
     std::optional<SurfaceHit> pick(glm::vec2 px);
     void queue(std::unique_ptr<MeshJob> job);

@@ -46,11 +46,12 @@ void Editor::freeze_view_lod() {
     report("view-dependent LOD frozen: the mesh is an ordinary state now (Ctrl+Z undoes the mode's changes)", false);
 }
 
-// The size in the mesh's units: in pixels it is measured where the dab lands, so zooming in asks for
-// finer detail (Blender's relative detail); the script line holds the world size, so it replays.
+// The amount in the mesh's units: in pixels it is measured where the dab lands, so zooming in asks for
+// finer detail (Blender's relative detail; a tolerance in pixels bounds the error seen on screen);
+// the script line holds the world amount, so it replays.
 void Editor::detail_dab(const BaseSpaceHit& at, const glm::dvec3& hit_point) {
     rgbio::DetailEdit edit;
-    edit.criterion = rgbio::DetailCriterion::MaxEdge;
+    edit.criterion = brush_.target == BrushSettings::Target::Tolerance ? rgbio::DetailCriterion::Tolerance : rgbio::DetailCriterion::MaxEdge;
     const double size = brush_.detail_unit == RadiusUnit::ScreenPixels
                             ? brush_.detail_px * camera_.world_per_pixel(camera_.depth_of(hit_point), viewport_)
                             : static_cast<double>(brush_.detail_world);

@@ -74,6 +74,10 @@ void brush_panel(Editor& editor) {
     ImGui::SameLine();
     ImGui::RadioButton("detail size", &target, 1);
     tooltip("Dabs aim for an edge length: no edge longer, as coarse as that allows (no falloff)");
+    ImGui::SameLine();
+    ImGui::RadioButton("tolerance", &target, 2);
+    tooltip("Dabs aim for accuracy: the surface shown within the amount of the Loop limit surface,\n"
+            "with as few triangles as that allows (no falloff)");
     brush.target = static_cast<BrushSettings::Target>(target);
     if (brush.target == BrushSettings::Target::Level) {
         ImGui::SliderInt("target level", &brush.target_level, 0, kMaxBrushLevel);
@@ -81,15 +85,15 @@ void brush_panel(Editor& editor) {
     } else {
         int unit = static_cast<int>(brush.detail_unit);
         ImGui::RadioButton("px##detail", &unit, 0);
-        tooltip("Relative detail: the edge length in screen pixels where the dab lands (zoom in for finer)");
+        tooltip("Relative detail: the amount in screen pixels where the dab lands (zoom in for finer)");
         ImGui::SameLine();
         ImGui::RadioButton("world##detail", &unit, 1);
-        tooltip("Constant detail: the edge length in the mesh's units");
+        tooltip("Constant detail: the amount in the mesh's units");
         brush.detail_unit = static_cast<RadiusUnit>(unit);
         if (brush.detail_unit == RadiusUnit::ScreenPixels)
-            ImGui::SliderFloat("detail (px)", &brush.detail_px, 1.0f, 100.0f, "%.1f px", ImGuiSliderFlags_Logarithmic);
+            ImGui::SliderFloat("amount (px)", &brush.detail_px, 0.1f, 100.0f, "%.3g px", ImGuiSliderFlags_Logarithmic);
         else
-            ImGui::DragFloat("detail (world)", &brush.detail_world, brush.detail_world * 0.01f, 1e-6f, 1e6f, "%.4g units");
+            ImGui::DragFloat("amount (world)", &brush.detail_world, brush.detail_world * 0.01f, 1e-6f, 1e6f, "%.4g units");
     }
     int unit = static_cast<int>(brush.unit);
     ImGui::RadioButton("screen", &unit, 0);
@@ -111,7 +115,9 @@ void brush_panel(Editor& editor) {
     // What a drag does now: Shift visibly turns refining into removing detail.
     const BrushMode active = editor.active_mode();
     const std::string action = std::string(mode_name(active)) +
-                               (brush.target == BrushSettings::Target::Level ? " to level " + std::to_string(editor.active_level()) : " to the detail size");
+                               (brush.target == BrushSettings::Target::Level        ? " to level " + std::to_string(editor.active_level())
+                                : brush.target == BrushSettings::Target::DetailSize ? std::string(" to the detail size")
+                                                                                    : std::string(" to the tolerance"));
     if (active != brush.mode) ImGui::TextColored(kInvertedColour, "Shift held: drag will %s", action.c_str());
     else ImGui::TextDisabled("drag: %s (Shift: inverse)", action.c_str());
 }

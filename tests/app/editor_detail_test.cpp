@@ -126,6 +126,32 @@ TEST_F(EditorDetail, WholeMeshToleranceGivesTheCommandLinesMesh) {
     EXPECT_EQ(editor.document().history().undo_label(), "tolerance 0.3%");
 }
 
+// Paints a short stroke with the brush as set and waits for it; returns the session's script lines
+// after checking that they replay, on the file as opened, to the editor's mesh.
+std::vector<rgbio::ScriptLine> paint_and_replay(Editor& editor, const std::string& name) {
+    const glm::vec2 from{0.45f * kViewport.x, 0.5f * kViewport.y}, to{0.55f * kViewport.x, 0.55f * kViewport.y};
+    editor.mouse_moved(from);
+    editor.mouse_pressed(MouseButton::Left, {});
+    for (int i = 1; i <= 4; ++i) editor.mouse_moved(from + (to - from) * (static_cast<float>(i) / 4.0f));
+    editor.mouse_released(MouseButton::Left);
+    editor.finish_work();
+    EXPECT_EQ(editor.document().history().undo_steps(), 1u);
+    const std::filesystem::path script = std::filesystem::path(::testing::TempDir()) / name;
+    EXPECT_TRUE(editor.save_strokes(script.string())) << editor.message();
+    const std::vector<rgbio::ScriptLine> lines = rgbio::read_lod_script(script.string());
+    EXPECT_GE(lines.size(), 1u);
+    rgb::Mesh replayed = rgbio::load_mesh(bunny_path());
+    rgbio::ScriptRunner runner;
+    for (const rgbio::ScriptLine& line : lines) {
+        const auto* edit = std::get_if<rgbio::DetailEdit>(&line.edit);
+        EXPECT_TRUE(edit != nullptr && edit->sphere && edit->kind == rgb::RequestKind::Set) << line.text;
+        runner.run(replayed, line);
+    }
+    EXPECT_TRUE(rgbtest::same_mesh(replayed, editor.document().mesh()));
+    EXPECT_GT(editor.document().mesh().num_faces(), rgbio::load_mesh(bunny_path()).num_faces());
+    return lines;
+}
+
 // A detail-size stroke: its dabs are saved as max-edge lines with their balls, which replay to the
 // same mesh, and in each ball no green edge is longer than the size (checked edge by edge from the
 // edges' ends in the uniform mesh of their level).
@@ -136,32 +162,10 @@ TEST_F(EditorDetail, DetailSizeStrokesHoldTheSizeAndReplayFromTheirScript) {
     brush.detail_px = 8.0f;
     brush.radius_px = 50.0f;
     brush.mode = BrushMode::Set;
-    const glm::vec2 from{0.45f * kViewport.x, 0.5f * kViewport.y}, to{0.55f * kViewport.x, 0.55f * kViewport.y};
-    editor.mouse_moved(from);
-    editor.mouse_pressed(MouseButton::Left, {});
-    for (int i = 1; i <= 4; ++i) editor.mouse_moved(from + (to - from) * (static_cast<float>(i) / 4.0f));
-    editor.mouse_released(MouseButton::Left);
-    editor.finish_work();
-    ASSERT_EQ(editor.document().history().undo_steps(), 1u);
-
-    const std::filesystem::path script = std::filesystem::path(::testing::TempDir()) / "detail_stroke.lod";
-    ASSERT_TRUE(editor.save_strokes(script.string())) << editor.message();
-    const std::vector<rgbio::ScriptLine> lines = rgbio::read_lod_script(script.string());
-    ASSERT_GE(lines.size(), 1u);
-    rgb::Mesh replayed = rgbio::load_mesh(bunny_path());
-    rgbio::ScriptRunner runner;
     std::size_t checked = 0;
-    for (const rgbio::ScriptLine& line : lines) {
-        const auto* edit = std::get_if<rgbio::DetailEdit>(&line.edit);
-        ASSERT_NE(edit, nullptr) << line.text;
-        ASSERT_TRUE(edit->sphere.has_value());
-        EXPECT_EQ(edit->kind, rgb::RequestKind::Set);
-        runner.run(replayed, line);
-    }
-    EXPECT_TRUE(rgbtest::same_mesh(replayed, mesh()));
-    EXPECT_GT(mesh().num_faces(), rgbio::load_mesh(bunny_path()).num_faces());
-    for (const rgbio::ScriptLine& line : lines) {
+    for (const rgbio::ScriptLine& line : paint_and_replay(editor, "detail_stroke.lod")) {
         const auto& edit = std::get<rgbio::DetailEdit>(line.edit);
+        EXPECT_EQ(edit.criterion, rgbio::DetailCriterion::MaxEdge);
         for (rgb::FaceId f : mesh().faces())
             for (int i = 0; i < 3; ++i) {
                 const rgb::HalfedgeId h = rgb::Mesh::halfedge(f, i);
@@ -174,6 +178,30 @@ TEST_F(EditorDetail, DetailSizeStrokesHoldTheSizeAndReplayFromTheirScript) {
                 EXPECT_LE(glm::distance(rgb::control_point(mesh(), a, type.level), rgb::control_point(mesh(), b, type.level)),
                           edit.amount.value);
             }
+    }
+    EXPECT_GT(checked, 0u);
+}
+
+// A tolerance stroke in world units: saved as tolerance lines, and every vertex in a dab's ball is
+// shown within the tolerance of its limit point.
+TEST_F(EditorDetail, ToleranceStrokesHoldTheToleranceAndReplayFromTheirScript) {
+    BrushSettings& brush = editor.brush();
+    brush.target = BrushSettings::Target::Tolerance;
+    brush.detail_unit = RadiusUnit::World;
+    const double tolerance = rgbio::world_amount(mesh(), {0.1, true});
+    brush.detail_world = static_cast<float>(tolerance);
+    brush.radius_px = 50.0f;
+    brush.mode = BrushMode::Set;
+    std::size_t checked = 0;
+    for (const rgbio::ScriptLine& line : paint_and_replay(editor, "tolerance_stroke.lod")) {
+        const auto& edit = std::get<rgbio::DetailEdit>(line.edit);
+        EXPECT_EQ(edit.criterion, rgbio::DetailCriterion::Tolerance);
+        EXPECT_EQ(edit.amount.value, static_cast<double>(static_cast<float>(tolerance)));
+        for (rgb::VertexId v : mesh().vertices()) {
+            if (glm::distance(mesh().base_space_position(v), edit.sphere->centre) > edit.sphere->radius) continue;
+            ++checked;
+            EXPECT_LE(glm::distance(rgb::displayed_position(mesh(), v), rgb::limit_position(mesh(), v)), edit.amount.value);
+        }
     }
     EXPECT_GT(checked, 0u);
 }
