@@ -126,9 +126,11 @@ TEST_F(EditorDetail, WholeMeshToleranceGivesTheCommandLinesMesh) {
     EXPECT_EQ(editor.document().history().undo_label(), "tolerance 0.3%");
 }
 
-// Paints a short stroke with the brush as set and waits for it; returns the session's script lines
-// after checking that they replay, on the file as opened, to the editor's mesh.
+// Paints a short stroke (set, 50 px) with the brush's target as set and waits for it; returns the
+// session's script lines after checking that they replay, on the file as opened, to the editor's mesh.
 std::vector<rgbio::ScriptLine> paint_and_replay(Editor& editor, const std::string& name) {
+    editor.brush().radius_px = 50.0f;
+    editor.brush().mode = BrushMode::Set;
     const glm::vec2 from{0.45f * kViewport.x, 0.5f * kViewport.y}, to{0.55f * kViewport.x, 0.55f * kViewport.y};
     editor.mouse_moved(from);
     editor.mouse_pressed(MouseButton::Left, {});
@@ -160,8 +162,6 @@ TEST_F(EditorDetail, DetailSizeStrokesHoldTheSizeAndReplayFromTheirScript) {
     brush.target = BrushSettings::Target::DetailSize;
     brush.detail_unit = RadiusUnit::ScreenPixels;
     brush.detail_px = 8.0f;
-    brush.radius_px = 50.0f;
-    brush.mode = BrushMode::Set;
     std::size_t checked = 0;
     for (const rgbio::ScriptLine& line : paint_and_replay(editor, "detail_stroke.lod")) {
         const auto& edit = std::get<rgbio::DetailEdit>(line.edit);
@@ -190,8 +190,6 @@ TEST_F(EditorDetail, ToleranceStrokesHoldTheToleranceAndReplayFromTheirScript) {
     brush.detail_unit = RadiusUnit::World;
     const double tolerance = rgbio::world_amount(mesh(), {0.1, true});
     brush.detail_world = static_cast<float>(tolerance);
-    brush.radius_px = 50.0f;
-    brush.mode = BrushMode::Set;
     std::size_t checked = 0;
     for (const rgbio::ScriptLine& line : paint_and_replay(editor, "tolerance_stroke.lod")) {
         const auto& edit = std::get<rgbio::DetailEdit>(line.edit);
