@@ -117,6 +117,7 @@ void Editor::key_pressed(Key key, Modifiers mods) {
         case Key::Digit3: brush_.mode = BrushMode::Set; break;
         case Key::Escape:
             if (pending_ != Pending::None) answer_pending(false);
+            else if (view_lod()) freeze_view_lod();
             else if (!jobs_.empty()) cancel_job();
             else stop_opening();
             break;
@@ -157,9 +158,11 @@ void Editor::update(std::chrono::microseconds job_slice) {
 
 void Editor::finish_work() {
     if (stroke_) end_stroke();
-    while (!jobs_.empty() || file_task_ || recovery_task_ || save_when_idle_) {
+    // The view-dependent mode never ends by itself: it is done for now once settled for the camera.
+    const auto working = [this] { return !jobs_.empty() && !(view_lod() && view_lod()->converged()); };
+    while (working() || file_task_ || recovery_task_ || save_when_idle_) {
         update(std::chrono::seconds(1));
-        if (jobs_.empty()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        if (!working()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
     }
 }
 
@@ -240,10 +243,14 @@ void Editor::dab(glm::vec2 px) {
     const double radius = brush_world_radius(hit->point);
     const auto displayed = document_.geometry().corners(hit->face);
     const BaseSpaceHit at = to_base_space(mesh, hit->face, displayed, hit->point, radius);
-    const rgb::Dab request = make_dab(brush_, mods_.shift, at, camera_.ray_through(px, viewport_).direction);
     timing_.last_pick_ms = milliseconds_since(pick_start);
-    const int from_level = mesh.level(hit->face);
-    stroke_->add([&mesh, request, from_level] { return dab_pieces(mesh, request, from_level); }, stroke_script_.lines(request));
+    if (brush_.target != BrushSettings::Target::Level) {
+        detail_dab(at, hit->point);
+    } else {
+        const rgb::Dab request = make_dab(brush_, mods_.shift, at, camera_.ray_through(px, viewport_).direction);
+        const int from_level = mesh.level(hit->face);
+        stroke_->add([&mesh, request, from_level] { return dab_pieces(mesh, request, from_level); }, stroke_script_.lines(request));
+    }
     ++timing_.dabs;
     last_hit_point_ = hit->point;
 }

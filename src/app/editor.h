@@ -25,6 +25,7 @@
 #include "app/background_task.h"
 #include "app/brush.h"
 #include "app/crease_tool.h"
+#include "app/detail_job.h"
 #include "app/document.h"
 #include "app/input.h"
 #include "app/mesh_job.h"
@@ -33,6 +34,7 @@
 #include "app/stroke_sampler.h"
 #include "app/stroke_script.h"
 #include "app/surface_picking.h"
+#include "app/view_lod_job.h"
 #include "app/view_camera.h"
 #include "io/mesh_file.h"
 #include "io/triangle_limit.h"
@@ -133,6 +135,18 @@ public:
     // Gives the base mesh other crease tags as one undoable step; false (with a message) if refused.
     bool set_sharp_features(const rgb::SharpFeatures& features, std::string label);
 
+    // ---- detail by size, accuracy and view (detail_job.h, view_lod_job.h; editor_detail.cpp) ----
+    DetailSettings& detail_settings() { return detail_settings_; }
+    // Max edge or tolerance over the whole mesh, a slice per frame: one undoable step.
+    void start_detail_edit();
+    // The view-dependent mode: every frame the detail follows the camera, until frozen.
+    void start_view_lod();
+    // Ends the view-dependent mode: the mesh stays as it is, one undoable step (Esc does the same;
+    // saving and opening a file freeze it first).
+    void freeze_view_lod();
+    // The mode's job while it runs.
+    ViewLodJob* view_lod() const;
+
     // ---- files ----
     // Right away, on this thread (tests, headless frames); each returns false and sets an error
     // message when it cannot proceed.
@@ -192,6 +206,9 @@ private:
     void continue_stroke(glm::vec2 px);
     void end_stroke();
     void dab(glm::vec2 px);
+    // A detail-size or tolerance dab (editor_detail.cpp): a max-edge or tolerance request in the
+    // ball, applied whole.
+    void detail_dab(const BaseSpaceHit& at, const glm::dvec3& hit_point);
     std::optional<SurfaceHit> pick(glm::vec2 px);
     void queue(std::unique_ptr<MeshJob> job);
     // File tasks: start, and take what finished.
@@ -262,6 +279,8 @@ private:
     float covered_right_ = 0.0f;
     Browse browse_request_ = Browse::None;
     std::uint64_t open_failures_ = 0;
+
+    DetailSettings detail_settings_;
 
     CreaseToolSettings crease_tool_;
     std::optional<CreaseDrag> crease_drag_;

@@ -76,6 +76,7 @@ bool Editor::save_strokes(const std::string& path) {
 // ---- in the background, with questions ------------------------------------------------------
 
 void Editor::request_open(const std::string& path) {
+    freeze_view_lod();  // it would hold the opened file back for ever
     if (file_task_) {
         report("wait until " + file_task_->path() + " is " + (file_task_->kind() == BackgroundTask::Kind::Open ? "read" : "saved"), true);
         return;
@@ -108,6 +109,7 @@ void Editor::request_save_as(const std::string& path) {
 
 // The copy is made now, between frames, so the thread writing it shares nothing with the editor.
 void Editor::start_save(const std::string& path) {
+    freeze_view_lod();  // what is shown is saved, not a mesh that keeps changing
     if (file_task_) {
         report("wait until " + file_task_->path() + " is " + (file_task_->kind() == BackgroundTask::Kind::Open ? "read" : "saved"), true);
         return;

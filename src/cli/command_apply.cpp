@@ -38,6 +38,10 @@ int run_apply(std::span<const std::string> args) {
                      "  refine N [sphere X Y Z R]    at least level N there\n"
                      "  coarsen N [sphere X Y Z R]   at most level N there\n"
                      "  budget TRIANGLES             refine the longest edges up to a triangle count, or trim to it\n"
+                     "  max-edge L [sphere X Y Z R]  no edge longer than L (or L% of the bounding-box diagonal), as\n"
+                     "                               coarse as that allows\n"
+                     "  tolerance E [sphere X Y Z R] the displayed surface within E (or E%) of the Loop limit surface,\n"
+                     "                               with as few triangles as that allows; prints the error reached\n"
                      "  brush refine|coarsen|set LEVEL RADIUS [FALLOFF]   the brush for the dab lines that follow\n"
                      "  dab X Y Z [VX VY VZ]         one dab (with a view direction: facing, connected faces only)\n"
                      "Blank lines and lines starting with # are skipped. --timings prints the engine time per line,\n"
@@ -64,7 +68,7 @@ int run_apply(std::span<const std::string> args) {
     rgb::Mesh mesh = with_sharp_options(arguments, rgbio::load_mesh(input, &warnings, read_options(arguments)));
     print_warnings("apply", input, warnings);
     Progress progress("applying " + script_file);
-    rgbio::ScriptRunner runner;
+    rgbio::ScriptRunner runner(limit);
     std::vector<double> dab_ms;
     rgb::RequestStats dab_stats;
     for (std::size_t i = 0; i < script.size(); ++i) {
@@ -80,6 +84,9 @@ int run_apply(std::span<const std::string> args) {
         if (stats.level_cap_bound)
             std::cerr << "rgbsub apply: " << script_file << ':' << line.line << ": wanted detail stops at the maximum level "
                       << rgb::kMaxLevel << '\n';
+        if (const std::optional<double> error = runner.reached_error())
+            std::cout << script_file << ':' << line.line << ": " << line.text << ": maximum error " << *error << ", "
+                      << mesh.num_faces() << " triangles\n";
         if (dab) {
             dab_ms.push_back(elapsed.count());
             dab_stats += stats;

@@ -1,6 +1,8 @@
 #pragma once
 // One-shot headless rendering: an OSMesa context, a Renderer, a camera framing the mesh, one frame.
 // What `rgbsub render` and the screenshot tests use; same input, same bytes.
+#include <functional>
+
 #include <glm/vec2.hpp>
 
 #include "render/camera.h"
@@ -22,7 +24,10 @@ struct HeadlessView {
 // The camera that frames `bounds` for `view`.
 OrbitCamera framing_camera(const BoundingSphere& bounds, const HeadlessView& view);
 
-// Renders `mesh` framed automatically. Throws std::runtime_error if no context can be made.
-Image render_headless(rgb::Mesh& mesh, const RenderOptions& options, const HeadlessView& view);
+// Renders `mesh` framed automatically. `before_drawing`, if given, may change the mesh for the camera
+// just framed (the screen-space level of detail does); the frame shows the changed mesh from that
+// camera. Throws std::runtime_error if no context can be made.
+Image render_headless(rgb::Mesh& mesh, const RenderOptions& options, const HeadlessView& view,
+                      const std::function<void(const OrbitCamera&)>& before_drawing = {});
 
 }  // namespace render
