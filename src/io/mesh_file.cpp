@@ -1,11 +1,13 @@
 #include "io/mesh_file.h"
 
+#include <filesystem>
 #include <stdexcept>
 #include <string_view>
 
 #include <glm/geometric.hpp>
 
 #include "io/atomic_file.h"
+#include "io/labelled_faces.h"
 #include "io/number_format.h"
 #include "io/obj_error.h"
 #include "io/obj_reader.h"
@@ -67,15 +69,27 @@ struct StringOutput {
     void flush_if_full() {}
 };
 
+void append_vector(std::string& out, const char* keyword, const glm::dvec3& x) {
+    out += keyword;
+    for (int i = 0; i < 3; ++i) append_double(out, x[i]);
+}
+
 // Appends the OBJ text record by record; Output is StringOutput or AtomicFileWriter (save_mesh
-// streams the file instead of holding it whole).
+// streams the file instead of holding it whole). `output_folder`: where the file goes, for the
+// mtllib references.
 template <class Output>
-void write_obj(const rgb::Mesh& mesh, const SaveOptions& options, Output& output) {
+void write_obj(const rgb::Mesh& mesh, const SaveOptions& options, const std::string& output_folder, Output& output) {
+    const BaseAttributes* attributes = options.attributes.get();
+    // Texture coordinates and colours are the base mesh's: written only while the mesh is that.
+    const bool base_data = attributes && is_base_mesh(mesh);
+    const bool colours = base_data && !attributes->colours.empty();
+    const bool texcoords = base_data && !attributes->triangle_texcoords.empty();
     std::vector<std::uint32_t> obj_index;
     const std::vector<glm::dvec3> positions = written_positions(mesh, options.positions, obj_index);
+    const LabelledFaceOrder order = labelled_face_order(mesh, attributes ? attributes->labels : BaseFaceLabels{});
     std::vector<rgb::Triangle> triangles;
-    triangles.reserve(mesh.num_faces());
-    for (rgb::FaceId f : mesh.faces()) {
+    triangles.reserve(order.faces.size());
+    for (rgb::FaceId f : order.faces) {
         const auto& v = mesh.face_vertices(f);
         triangles.push_back({obj_index[v[0].idx], obj_index[v[1].idx], obj_index[v[2].idx]});
     }
@@ -85,31 +99,46 @@ void write_obj(const rgb::Mesh& mesh, const SaveOptions& options, Output& output
            " triangles; positions: " + (options.positions == SavedPositions::Limit ? "limit" : "displayed") +
            // Lets the reader tell a file cut before its state from one saved without it.
            (options.state ? std::string(kSavedStateNote) : std::string()) + "\n";
-    for (const glm::dvec3& p : positions) {
-        out += 'v';
-        for (int i = 0; i < 3; ++i) append_double(out, p[i]);
+    if (attributes)
+        for (const std::string& library : library_references(*attributes, output_folder)) out += "mtllib " + library + "\n";
+    for (std::size_t i = 0; i < positions.size(); ++i) {
+        append_vector(out, "v", positions[i]);
+        // At level 0 the live vertices are the base vertices, in base order.
+        if (colours)
+            for (int c = 0; c < 3; ++c) append_double(out, attributes->colours[i][c]);
         out += '\n';
         output.flush_if_full();
     }
-    if (options.normals)
-        for (const glm::dvec3& n : vertex_normals(positions, triangles)) {
-            out += "vn";
-            for (int i = 0; i < 3; ++i) append_double(out, n[i]);
+    if (texcoords)
+        for (const glm::dvec2& uv : attributes->texcoords) {
+            out += "vt";
+            for (int c = 0; c < 2; ++c) append_double(out, uv[c]);
             out += '\n';
             output.flush_if_full();
         }
-    for (const rgb::Triangle& t : triangles) {
+    if (options.normals)
+        for (const glm::dvec3& n : vertex_normals(positions, triangles)) {
+            append_vector(out, "vn", n);
+            out += '\n';
+            output.flush_if_full();
+        }
+    auto block = order.blocks.begin();
+    for (std::size_t i = 0; i < order.faces.size(); ++i) {
+        if (block != order.blocks.end() && block->first == i) out += (block++)->lines;
         out += 'f';
-        for (std::uint32_t v : t) {
-            const std::string index = std::to_string(std::size_t(v) + 1);
+        for (int c = 0; c < 3; ++c) {
+            const std::string index = std::to_string(std::size_t(triangles[i][c]) + 1);
+            const std::uint32_t uv = texcoords ? base_corner_texcoord(mesh, *attributes, order.faces[i], c) : kNoIndex;
             out += ' ' + index;
-            if (options.normals) out += "//" + index;
+            if (uv != kNoIndex) out += '/' + std::to_string(std::size_t(uv) + 1);
+            if (options.normals) out += (uv != kNoIndex ? "/" : "//") + index;
         }
         out += '\n';
         output.flush_if_full();
     }
     if (options.state)
-        write_state(rgb::capture_state(mesh), options.positions == SavedPositions::Limit, out, [&] { output.flush_if_full(); });
+        write_state(rgb::capture_state(mesh), options.positions == SavedPositions::Limit, out, [&] { output.flush_if_full(); },
+                    attributes ? attributes->labels : BaseFaceLabels{});
 }
 
 }  // namespace
@@ -117,13 +146,13 @@ void write_obj(const rgb::Mesh& mesh, const SaveOptions& options, Output& output
 std::string format_obj(const rgb::Mesh& mesh, const SaveOptions& options) {
     StringOutput output;
     output.text.reserve(40 * mesh.num_vertices() + 30 * mesh.num_faces());
-    write_obj(mesh, options, output);
+    write_obj(mesh, options, options.attributes ? options.attributes->library_folder : std::string(), output);
     return std::move(output.text);
 }
 
 void save_mesh(const rgb::Mesh& mesh, const std::string& path, const SaveOptions& options) {
     AtomicFileWriter file(path);
-    write_obj(mesh, options, file);
+    write_obj(mesh, options, std::filesystem::path(path).parent_path().string(), file);
     file.commit();
 }
 

@@ -8,6 +8,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "io/face_label_state.h"
 #include "io/material_library.h"
 #include "io/mesh_validation.h"
 #include "io/obj_error.h"
@@ -50,8 +51,9 @@ std::string read_text_file(const std::string& path) {
 namespace {
 
 // The mesh the state describes, if it is the body's own: one address per v line, only triangles, a
-// valid RGB mesh with these faces, and exactly these positions. Otherwise the reason it is not.
-std::shared_ptr<rgb::Mesh> adaptive_mesh(SavedState saved, const ObjRecords& records, std::string& reason) {
+// valid RGB mesh with these faces, exactly these positions and the labels of their base faces.
+// Otherwise the reason it is not.
+std::shared_ptr<rgb::Mesh> adaptive_mesh(SavedState& saved, const ObjRecords& records, std::string& reason) {
     if (saved.mesh.vertices.size() != records.positions.size()) {
         reason = "it describes " + std::to_string(saved.mesh.vertices.size()) + " vertices, the file has " +
                  std::to_string(records.positions.size());
@@ -84,6 +86,10 @@ std::shared_ptr<rgb::Mesh> adaptive_mesh(SavedState saved, const ObjRecords& rec
                  " vertex positions differ from the ones it gives";
         return nullptr;
     }
+    if (const std::optional<std::string> mismatch = label_mismatch(*mesh, saved.labels, records)) {
+        reason = *mismatch;
+        return nullptr;
+    }
     return mesh;
 }
 
@@ -97,9 +103,10 @@ LoadedMesh read_records(const ObjRecords& records, const std::string& name, cons
             warnings.push_back("ignored " + std::to_string(records.state.size()) +
                                " comment lines starting with #rgb (the first on line " + std::to_string(records.state.front().line) +
                                "): they are not an rgbsub state, which starts with '#rgb state'");
-        } else if (std::shared_ptr<rgb::Mesh> mesh = adaptive_mesh(std::move(*saved), records, reason)) {
+        } else if (std::shared_ptr<rgb::Mesh> mesh = adaptive_mesh(*saved, records, reason)) {
             LoadedMesh loaded = saved_mesh_content(records);
             loaded.adaptive = std::move(mesh);
+            loaded.adaptive_labels = std::move(saved->labels);
             return loaded;
         } else {
             warnings.push_back("the rgbsub state (#rgb lines) does not match the file, which was probably edited by another "

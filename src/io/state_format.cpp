@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "io/face_label_state.h"
 #include "io/number_format.h"
 #include "io/obj_error.h"
 
@@ -70,7 +71,8 @@ private:
 
 }  // namespace
 
-void write_state(const rgb::MeshState& state, bool limit_positions, std::string& out, const std::function<void()>& flush_if_full) {
+void write_state(const rgb::MeshState& state, bool limit_positions, std::string& out, const std::function<void()>& flush_if_full,
+                 const BaseFaceLabels& labels) {
     const std::size_t n0 = state.base_positions.size();
     out += "# rgbsub adaptive state: the #rgb lines restore the exact RGB mesh; other readers ignore them\n";
     out += "#rgb state " + std::to_string(kStateFormatVersion) + "\n";
@@ -101,6 +103,7 @@ void write_state(const rgb::MeshState& state, bool limit_positions, std::string&
         out += '\n';
         flush_if_full();
     }
+    append_face_label_section(labels, state.base_triangles.size(), out);
     out += "#rgb end\n";
 }
 
@@ -121,10 +124,12 @@ std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const
     std::size_t expected[4] = {0, 0, 0, 0};
     bool seen[4] = {false, false, false, false};
     std::vector<rgb::SurfacePoint> addresses;
+    FaceLabelSectionReader face_labels(file);
     bool ended = false;
     for (const ObjStateLine& line : lines.subspan(1)) {
         StateLineReader r(line, file);
         if (ended) r.fail("#rgb line after '#rgb end'");
+        if (face_labels.take(line)) continue;
         const std::string_view kind = r.word();
         if (kind == "positions") {
             const std::string_view which = r.word();
@@ -195,6 +200,7 @@ std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const
             placed[v] = true;
         }
     state.vertices.insert(state.vertices.end(), addresses.begin(), addresses.end());
+    saved.labels = face_labels.finish(state.base_triangles.size(), lines.back());
     return saved;
 }
 

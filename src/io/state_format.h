@@ -12,8 +12,11 @@
 //   #rgb section addresses N           then lines     #rgb a FACE A1 A2 LEVEL [...]
 //                                      one address per non-base vertex, in v-line order after the
 //                                      base vertices (which come first, in base order)
+//   #rgb section face-labels N         optional: the base faces' usemtl/g/o/s labels (face_label_state.h)
 //   #rgb end
-// A later version adds sections; a reader refuses a section it does not know, naming it.
+// A later version adds sections; a reader refuses a section it does not know, naming it. Optional
+// sections (face-labels) are written only when there is something to say, so a mesh without them
+// stays readable by an rgbsub that does not know them.
 #include <functional>
 #include <optional>
 #include <span>
@@ -30,11 +33,14 @@ inline constexpr unsigned kStateFormatVersion = 2;
 struct SavedState {
     rgb::MeshState mesh;           // faces are not part of the state: the reader takes the f lines
     bool limit_positions = false;  // the v lines hold limit positions, not displayed ones
+    BaseFaceLabels labels;         // empty without a face-labels section
 };
 
 // Appends the state's lines to `out`, calling flush_if_full() between lines so that a file writer can
 // empty the buffer (the state of a large mesh is tens of megabytes).
-void write_state(const rgb::MeshState& state, bool limit_positions, std::string& out, const std::function<void()>& flush_if_full);
+// `labels` (per base face) become the optional face-labels section.
+void write_state(const rgb::MeshState& state, bool limit_positions, std::string& out, const std::function<void()>& flush_if_full,
+                 const BaseFaceLabels& labels = {});
 
 // The #rgb lines of a file, or nothing when they are not an rgbsub state at all (no `#rgb state`
 // header first: some other program's comments). Throws ObjError(BadState) naming the offending line,
