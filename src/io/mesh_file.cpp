@@ -4,8 +4,6 @@
 #include <stdexcept>
 #include <string_view>
 
-#include <glm/geometric.hpp>
-
 #include "io/atomic_file.h"
 #include "io/labelled_faces.h"
 #include "io/number_format.h"
@@ -13,6 +11,7 @@
 #include "io/obj_reader.h"
 #include "io/state_format.h"
 #include "io/truncation_check.h"
+#include "rgb/limit_normals.h"
 #include "rgb/loop_geometry.h"
 
 namespace rgbio {
@@ -32,18 +31,6 @@ std::vector<glm::dvec3> written_positions(const rgb::Mesh& mesh, SavedPositions 
         positions.push_back(written_position(mesh, v, which));
     }
     return positions;
-}
-
-std::vector<glm::dvec3> vertex_normals(const std::vector<glm::dvec3>& positions, const std::vector<rgb::Triangle>& triangles) {
-    std::vector<glm::dvec3> normals(positions.size(), glm::dvec3(0.0));
-    for (const rgb::Triangle& t : triangles) {
-        // The cross product's length is twice the area, so the sum is area-weighted.
-        const glm::dvec3 n = glm::cross(positions[t[1]] - positions[t[0]], positions[t[2]] - positions[t[0]]);
-        for (std::uint32_t v : t) normals[v] += n;
-    }
-    for (glm::dvec3& n : normals)
-        if (glm::length(n) > 0) n = glm::normalize(n);
-    return normals;
 }
 
 }  // namespace
@@ -87,15 +74,9 @@ void write_obj(const rgb::Mesh& mesh, const SaveOptions& options, const std::str
     std::vector<std::uint32_t> obj_index;
     const std::vector<glm::dvec3> positions = written_positions(mesh, options.positions, obj_index);
     const LabelledFaceOrder order = labelled_face_order(mesh, attributes ? attributes->labels : BaseFaceLabels{});
-    std::vector<rgb::Triangle> triangles;
-    triangles.reserve(order.faces.size());
-    for (rgb::FaceId f : order.faces) {
-        const auto& v = mesh.face_vertices(f);
-        triangles.push_back({obj_index[v[0].idx], obj_index[v[1].idx], obj_index[v[2].idx]});
-    }
 
     std::string& out = output.buffer();
-    out += "# rgbsub mesh: " + std::to_string(positions.size()) + " vertices, " + std::to_string(triangles.size()) +
+    out += "# rgbsub mesh: " + std::to_string(positions.size()) + " vertices, " + std::to_string(order.faces.size()) +
            " triangles; positions: " + (options.positions == SavedPositions::Limit ? "limit" : "displayed") +
            // Lets the reader tell a file cut before its state from one saved without it.
            (options.state ? std::string(kSavedStateNote) : std::string()) + "\n";
@@ -116,18 +97,20 @@ void write_obj(const rgb::Mesh& mesh, const SaveOptions& options, const std::str
             out += '\n';
             output.flush_if_full();
         }
-    if (options.normals)
-        for (const glm::dvec3& n : vertex_normals(positions, triangles)) {
-            append_vector(out, "vn", n);
+    if (options.normals) {
+        const std::vector<glm::dvec3> normals = rgb::limit_normals(mesh);
+        for (rgb::VertexId v : mesh.vertices()) {
+            append_vector(out, "vn", normals[v.idx]);
             out += '\n';
             output.flush_if_full();
         }
+    }
     auto block = order.blocks.begin();
     for (std::size_t i = 0; i < order.faces.size(); ++i) {
         if (block != order.blocks.end() && block->first == i) out += (block++)->lines;
         out += 'f';
         for (int c = 0; c < 3; ++c) {
-            const std::string index = std::to_string(std::size_t(triangles[i][c]) + 1);
+            const std::string index = std::to_string(std::size_t(obj_index[mesh.face_vertices(order.faces[i])[c].idx]) + 1);
             const std::uint32_t uv = texcoords ? base_corner_texcoord(mesh, *attributes, order.faces[i], c) : kNoIndex;
             out += ' ' + index;
             if (uv != kNoIndex) out += '/' + std::to_string(std::size_t(uv) + 1);

@@ -1,7 +1,8 @@
 #pragma once
 // OBJ files <-> rgb::Mesh: the entry points for the editor and the CLI.
 //
-// A saved file is a standard OBJ of the current adaptive mesh (v, optional vn, f) followed by the
+// A saved file is a standard OBJ of the current adaptive mesh (v, optional vn, f, and what rides on
+// the base mesh: base_attributes.h) followed by the
 // exact adaptive state in "#rgb" comment lines (state_format.h). Loading such a file restores the
 // adaptive mesh slot for slot; a plain OBJ loads as a base mesh (all green, level 0).
 #include <cstddef>
@@ -28,7 +29,7 @@ enum class SavedPositions {
 
 struct SaveOptions {
     SavedPositions positions = SavedPositions::Displayed;
-    bool normals = false;      // area-weighted vertex normals of the written positions
+    bool normals = false;      // vn: exact normals of the Loop limit surface (rgb/limit_normals.h)
     bool state = true;         // the #rgb lines that make the file resumable
     // What rides on the base mesh (labels, material libraries, texture coordinates, colours), written
     // with the mesh: faces grouped by label (labelled_faces.h), mtllib references that still lead to
