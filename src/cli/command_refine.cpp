@@ -1,4 +1,4 @@
-// rgbsub refine IN.obj -o OUT.obj --level N [--sphere X,Y,Z,R] [--positions display|limit]
+// rgbsub refine IN.obj -o OUT.obj|OUT.glb|OUT.gltf --level N [--sphere X,Y,Z,R] [--positions display|limit]
 #include <charconv>
 #include <cmath>
 #include <iostream>
@@ -36,7 +36,7 @@ int run_refine(std::span<const std::string> args) {
     const Arguments arguments(args, {"--normals", "--plain", kStrictSwitch},
                               {"--output", "--level", "--sphere", "--positions", "--max-triangles"}, {{"-o", "--output"}});
     if (arguments.has("--help")) {
-        std::cout << "usage: rgbsub refine IN.obj -o OUT.obj --level N [--sphere X,Y,Z,R] [--positions display|limit]\n"
+        std::cout << "usage: rgbsub refine IN.obj -o OUT --level N [--sphere X,Y,Z,R] [--positions display|limit]\n"
                      "                     [--normals] [--max-triangles N] [--plain] [--strict]\n"
                      "Sets the level of detail to N (0.." << rgb::kMaxLevel << ") inside the sphere (everywhere without\n"
                      "--sphere; its coordinates are those of IN.obj's base mesh): every face meeting it gets level N.\n"
@@ -44,7 +44,7 @@ int run_refine(std::span<const std::string> args) {
                      "base mesh. --positions limit writes Loop limit positions. A request estimated to exceed\n"
                      "--max-triangles (default: from this machine's memory) is refused before it runs.\n"
                      "--plain writes an OBJ without the adaptive state (#rgb lines), for tools that dislike them.\n"
-                  << kStrictHelp;
+                  << kOutputHelp << kStrictHelp;
         return exit_ok;
     }
     if (arguments.positional().size() != 1) throw UsageError("expects exactly one IN.obj");
@@ -62,16 +62,16 @@ int run_refine(std::span<const std::string> args) {
     save.state = !arguments.has("--plain");
     const std::string& input = arguments.positional()[0];
 
-    std::vector<std::string> warnings;
-    rgb::Mesh mesh = rgbio::load_mesh(input, &warnings, read_options(arguments));
-    print_warnings("refine", input, warnings);
+    rgbio::LoadedAsset asset = load_input("refine", input, arguments);
+    rgb::Mesh& mesh = asset.mesh;
+    save.attributes = asset.attributes;
     rgbio::check_request_size(mesh, request, limit);
     {
         Progress progress("refining");
         progress.update(0, 1, "to level " + std::to_string(request.level));
         rgb::apply_request(mesh, request);
     }
-    rgbio::save_mesh(mesh, *output, save);
+    save_output("refine", mesh, *output, save);
     return exit_ok;
 }
 

@@ -1,6 +1,7 @@
 #include "io/base_attributes.h"
 
 #include <filesystem>
+#include <iterator>
 
 #include "io/material_library.h"
 #include "io/mesh_file.h"
@@ -92,7 +93,11 @@ std::vector<std::string> library_references(const BaseAttributes& attributes, co
     const fs::path to = fs::absolute(output_folder.empty() ? "." : output_folder).lexically_normal();
     for (const std::string& written : attributes.material_libraries) {
         const fs::path target = resolve_file_reference(written, from);
-        const std::string moved = target.lexically_relative(to).generic_string();
+        // Relative where the two share a top folder (a project tree moved as a whole keeps working),
+        // absolute across unrelated places.
+        const bool related = std::next(target.begin()) != target.end() && std::next(to.begin()) != to.end() &&
+                             *std::next(target.begin()) == *std::next(to.begin());
+        const std::string moved = related ? target.lexically_relative(to).generic_string() : target.generic_string();
         // mtllib names are split at blanks: a path with one cannot be written.
         const bool keep = from == to || fs::path(written).is_absolute() || moved.empty() ||
                           moved.find_first_of(" \t") != std::string::npos;

@@ -59,7 +59,8 @@ bool is_base_mesh(const rgb::Mesh& mesh);
 std::uint32_t base_corner_texcoord(const rgb::Mesh& mesh, const BaseAttributes& attributes, rgb::FaceId f, int corner);
 
 // The mtllib references for a file written into `output_folder`: as the input wrote them where
-// they still lead to the same file (absolute names, or the same folder), else made relative to it.
+// they still lead to the same file (absolute names, or the same folder); else relative to the output
+// folder where the two share their top folder (a tree moved whole keeps working), else absolute.
 std::vector<std::string> library_references(const BaseAttributes& attributes, const std::string& output_folder);
 
 // What a save of `mesh` leaves out of the attributes, one sentence each (empty when nothing).

@@ -256,6 +256,12 @@ TEST_F(LabelledMesh, MaterialLibrariesStillLeadToTheirFileFromAnotherFolder) {
     const LoadedMesh moved = read_obj_file(path("out/deeper/moved.obj"));
     ASSERT_EQ(moved.materials.size(), 2u);
     EXPECT_EQ(moved.materials[1].diffuse, glm::dvec3(0, 0, 1));
+    // Unrelated places: absolute. Absolute names stay as written.
+    BaseAttributes elsewhere;
+    elsewhere.material_libraries = {"sub/a.mtl", "/opt/b.mtl"};
+    elsewhere.library_folder = "/usr/share/models";
+    EXPECT_EQ(library_references(elsewhere, "/tmp/out"), (std::vector<std::string>{"/usr/share/models/sub/a.mtl", "/opt/b.mtl"}));
+    EXPECT_EQ(library_references(elsewhere, "/usr/share/models/x"), (std::vector<std::string>{"../sub/a.mtl", "/opt/b.mtl"}));
 }
 
 }  // namespace
