@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "io/gltf_export.h"
+#include "rgb/state.h"
 
 namespace app {
 
@@ -68,18 +69,25 @@ void Document::end_edit(bool changed, std::optional<std::string> script) {
 
 bool Document::abandon_edit() { return history_.abandon_edit(); }
 
-bool Document::undo() {
-    if (!history_.undo()) return false;
+bool Document::undo() { return step(&UndoHistory::undo); }
+
+bool Document::redo() { return step(&UndoHistory::redo); }
+
+bool Document::step(bool (UndoHistory::*cross)()) {
+    const std::uint64_t base = mesh_.base().serial();
+    if (!(history_.*cross)()) return false;
     dirty_ = true;
     ++changes_count_;
+    // A retag moved every vertex without telling the observers.
+    if (mesh_.base().serial() != base) resync();
     return true;
 }
 
-bool Document::redo() {
-    if (!history_.redo()) return false;
+void Document::set_sharp_features(const rgb::SharpFeatures& features, std::string label) {
+    history_.retag(std::move(label), features);
     dirty_ = true;
     ++changes_count_;
-    return true;
+    resync();
 }
 
 const render::SurfaceGeometry& Document::geometry() {

@@ -60,6 +60,10 @@ public:
     bool abandon_edit();
     bool undo();
     bool redo();
+    // The base mesh with other crease and corner tags, as one undoable edit labelled `label`: the
+    // vertex set stays, every position follows the new rules. Throws std::invalid_argument for tags
+    // the base mesh refuses (the document is unchanged then).
+    void set_sharp_features(const rgb::SharpFeatures& features, std::string label);
     UndoHistory& history() { return history_; }
     const UndoHistory& history() const { return history_; }
 
@@ -78,6 +82,8 @@ public:
     std::optional<SurfaceHit> pick(const Ray& ray);
 
 private:
+    // Undo or redo (`cross`), and what follows the mesh.
+    bool step(bool (UndoHistory::*cross)());
     void replace_mesh(rgb::Mesh mesh);
     // Rebuilds what follows the mesh from scratch.
     void resync();

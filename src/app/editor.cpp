@@ -54,6 +54,7 @@ void Editor::mouse_moved(glm::vec2 px) {
     if (drag_ == Drag::Orbit) camera_.orbit(delta);
     if (drag_ == Drag::Pan) camera_.pan(delta, viewport_);
     if (painting_) continue_stroke(px);
+    if (crease_drag_) crease_drag_to(px);
 }
 
 void Editor::mouse_pressed(MouseButton button, Modifiers mods) {
@@ -64,6 +65,8 @@ void Editor::mouse_pressed(MouseButton button, Modifiers mods) {
         drag_ = Drag::Orbit;
     } else if (button == MouseButton::Middle || (button == MouseButton::Left && mods.alt && mods.shift)) {
         drag_ = Drag::Pan;
+    } else if (button == MouseButton::Left && pending_ == Pending::None && crease_tool_.active) {
+        if (!refuse_if_busy("tag creases")) begin_crease_drag(mods.shift);
     } else if (button == MouseButton::Left && pending_ == Pending::None && !refuse_if_whole_mesh_job("paint")) {
         begin_stroke(mouse_);
     }
@@ -71,6 +74,7 @@ void Editor::mouse_pressed(MouseButton button, Modifiers mods) {
 
 void Editor::mouse_released(MouseButton button) {
     if (button == MouseButton::Left && painting_) end_stroke();
+    if (button == MouseButton::Left && crease_drag_) end_crease_drag();
     if (button != MouseButton::Left || drag_ != Drag::None) drag_ = Drag::None;
 }
 
@@ -277,12 +281,27 @@ bool Editor::redo() {
 
 void Editor::start_flood_fill(int level) {
     if (refuse_if_busy("set all")) return;
+    level = std::clamp(level, 0, kMaxBrushLevel);
+    rgb::LevelRequest everywhere;
+    everywhere.level = level;  // a Set over the whole surface
+    try {
+        rgbio::check_request_size(document_.mesh(), everywhere, triangle_limit_);
+    } catch (const rgbio::TooLarge& refused) {
+        report("set all to level " + std::to_string(level) + " refused: " + refused.what(), true);
+        return;
+    }
     keep_recovery_copy(true);
-    queue(make_flood_fill(document_.mesh(), std::clamp(level, 0, kMaxBrushLevel)));
+    queue(make_flood_fill(document_.mesh(), level));
 }
 
 void Editor::start_auto_lod() {
     if (refuse_if_busy("start automatic LOD")) return;
+    try {
+        rgbio::check_budget_size(auto_lod_settings_.triangle_budget, triangle_limit_);
+    } catch (const rgbio::TooLarge& refused) {
+        report(std::string("automatic LOD refused: ") + refused.what(), true);
+        return;
+    }
     keep_recovery_copy(true);
     queue(std::make_unique<AutoLodJob>(document_.mesh(), auto_lod_settings_));
 }

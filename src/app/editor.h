@@ -23,6 +23,7 @@
 #include "app/auto_lod.h"
 #include "app/background_task.h"
 #include "app/brush.h"
+#include "app/crease_tool.h"
 #include "app/document.h"
 #include "app/input.h"
 #include "app/mesh_job.h"
@@ -33,6 +34,7 @@
 #include "app/surface_picking.h"
 #include "app/view_camera.h"
 #include "io/mesh_file.h"
+#include "io/triangle_limit.h"
 
 namespace app {
 
@@ -111,8 +113,12 @@ public:
     void reset_view();
     bool undo();
     bool redo();
+    // Both refuse (with a message naming the estimate) a result above the triangle limit.
     void start_flood_fill(int level);
     void start_auto_lod();
+    // The most triangles a whole-mesh action may make (default: sized to the machine's memory).
+    std::size_t triangle_limit() const { return triangle_limit_; }
+    void set_triangle_limit(std::size_t limit) { triangle_limit_ = limit; }
     // Esc: stops the work under way (what is done stays as one undoable step) and drops what waits.
     void cancel_job();
     // The work under way, if any: a stroke still being applied or a whole-mesh job.
@@ -120,6 +126,11 @@ public:
     std::size_t jobs_waiting() const { return jobs_.empty() ? 0 : jobs_.size() - 1; }
     // The level of the face under the cursor becomes the brush's target level.
     bool sample_level_under_cursor();
+
+    // ---- crease tool (crease_tool.h; editor_creases.cpp) ----
+    CreaseToolSettings& crease_tool() { return crease_tool_; }
+    // Gives the base mesh other crease tags as one undoable step; false (with a message) if refused.
+    bool set_sharp_features(const rgb::SharpFeatures& features, std::string label);
 
     // ---- files ----
     // Right away, on this thread (tests, headless frames); each returns false and sets an error
@@ -191,10 +202,13 @@ private:
     void poll_recovery_task();
     // Ends the job at the front (its edit with it) and starts on the next.
     void finish_front();
+    void begin_crease_drag(bool untag);
+    void crease_drag_to(glm::vec2 px);
+    void end_crease_drag();
     void remember_recent(const std::string& path);
     void report(std::string message, bool error);
     void recover_from(const std::exception& failure);
-    bool busy() const { return !jobs_.empty() || painting_; }
+    bool busy() const { return !jobs_.empty() || painting_ || crease_drag_.has_value(); }
     // Refuse (with a message) while work is under way / while a whole-mesh job is (strokes queue
     // behind strokes).
     bool refuse_if_busy(const char* action);
@@ -205,6 +219,7 @@ private:
     glm::ivec2 viewport_;
     BrushSettings brush_;
     AutoLodSettings auto_lod_settings_;
+    std::size_t triangle_limit_ = rgbio::default_triangle_limit();
     rgbio::SaveOptions save_options_;
 
     glm::vec2 mouse_{0.0f};
@@ -244,6 +259,11 @@ private:
     float covered_right_ = 0.0f;
     Browse browse_request_ = Browse::None;
     std::uint64_t open_failures_ = 0;
+
+    CreaseToolSettings crease_tool_;
+    std::optional<CreaseDrag> crease_drag_;
+    glm::vec2 crease_last_px_{0.0f};
+    std::optional<SurfaceHit> crease_hit_;  // the last sample's hit
 
     Pending pending_ = Pending::None;
     std::string pending_path_;

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "app/crease_panel.h"
 #include "app/editor.h"
 #include "app/editor_dialogs.h"
 #include "render/colour_map.h"
@@ -281,6 +282,7 @@ void draw_panels(Editor& editor, PanelState& state, render::RenderOptions& optio
     if (state.panel_open) {
         ImGui::PushItemWidth(-120.0f);
         brush_panel(editor);
+        crease_panel(editor);
         actions_panel(editor, state);
         files_panel(editor, state);
         display_panel(options);

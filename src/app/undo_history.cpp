@@ -3,10 +3,11 @@
 #include <utility>
 
 #include "rgb/mesh.h"
+#include "rgb/state.h"
 
 namespace app {
 
-UndoHistory::UndoHistory(rgb::Mesh& mesh, std::size_t byte_bound) : journal_(mesh), byte_bound_(byte_bound) {}
+UndoHistory::UndoHistory(rgb::Mesh& mesh, std::size_t byte_bound) : mesh_(mesh), journal_(mesh), byte_bound_(byte_bound) {}
 
 void UndoHistory::begin_edit(std::string label) {
     forget_if_stale();
@@ -20,7 +21,16 @@ void UndoHistory::end_edit(bool changed, std::optional<std::string> script) {
     if (!changed || record.empty()) return;
     for (const Step& step : redo_) bytes_ -= step.record.bytes();
     redo_.clear();
-    push(undo_, Step{std::move(pending_label_), std::move(record), std::move(script)});
+    push(undo_, Step{std::move(pending_label_), std::move(record), std::move(script), std::nullopt});
+}
+
+void UndoHistory::retag(std::string label, const rgb::SharpFeatures& features) {
+    forget_if_stale();
+    rgb::SharpFeatures replaced = mesh_.base().sharp_features();
+    rgb::set_sharp_features(mesh_, features);
+    for (const Step& step : redo_) bytes_ -= step.record.bytes();
+    redo_.clear();
+    push(undo_, Step{std::move(label), {}, std::nullopt, std::move(replaced)});
 }
 
 bool UndoHistory::abandon_edit() {
@@ -41,6 +51,12 @@ bool UndoHistory::cross(std::deque<Step>& from, std::deque<Step>& to) {
     Step step = std::move(from.back());
     from.pop_back();
     bytes_ -= step.record.bytes();
+    if (step.retag) {
+        rgb::SharpFeatures replaced = mesh_.base().sharp_features();
+        rgb::set_sharp_features(mesh_, *step.retag);
+        push(to, Step{std::move(step.label), {}, std::move(step.script), std::move(replaced)});
+        return true;
+    }
     journal_.start();
     try {
         journal_.revert(step.record);
@@ -50,7 +66,7 @@ bool UndoHistory::cross(std::deque<Step>& from, std::deque<Step>& to) {
         clear();
         throw;
     }
-    push(to, Step{std::move(step.label), journal_.stop(), std::move(step.script)});
+    push(to, Step{std::move(step.label), journal_.stop(), std::move(step.script), std::nullopt});
     return true;
 }
 

@@ -14,6 +14,7 @@
 #include <string>
 
 #include "rgb/journal.h"
+#include "rgb/sharp_features.h"
 
 namespace rgb {
 class Mesh;
@@ -31,6 +32,10 @@ public:
     void begin_edit(std::string label);
     void end_edit(bool changed, std::optional<std::string> script = std::nullopt);
     bool editing() const { return journal_.recording(); }
+    // Gives the base mesh other crease tags (rgb::set_sharp_features) as one step, outside any edit:
+    // a retag keeps every slot, so the journal's records stay valid, and its step sets the tags it
+    // replaced back. Throws std::invalid_argument for refused tags (nothing changes then).
+    void retag(std::string label, const rgb::SharpFeatures& features);
     // Ends the edit under way without a step and puts the mesh back as it was at begin_edit (for an
     // edit that failed half-way). False when no edit is under way.
     bool abandon_edit();
@@ -64,6 +69,8 @@ private:
         std::string label;
         rgb::JournalRecord record;  // what the step did; reverting it crosses to the other side
         std::optional<std::string> script;
+        // For a retag, the tags that crossing the step sets (then `record` is empty).
+        std::optional<rgb::SharpFeatures> retag;
     };
     // Pops the newest step of `from`, reverts it, and pushes the reversal's record onto `to`.
     bool cross(std::deque<Step>& from, std::deque<Step>& to);
@@ -72,6 +79,7 @@ private:
     void push(std::deque<Step>& side, Step step);
     void enforce_bound();
 
+    rgb::Mesh& mesh_;
     rgb::Journal journal_;
     std::size_t byte_bound_;
     std::size_t bytes_ = 0;

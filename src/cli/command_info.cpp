@@ -1,5 +1,6 @@
 // rgbsub info FILE.obj: the loader's validation report and the mesh's statistics.
 #include <iostream>
+#include <optional>
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
@@ -24,26 +25,48 @@ void print_attributes(std::ostream& out, const rgbio::LoadedMesh& loaded) {
     if (!loaded.face_objects.empty()) out << "objects: " << loaded.face_objects.names.size() << '\n';
 }
 
+// The base mesh's crease and corner tags, when it has any.
+void print_sharp_features(std::ostream& out, const rgb::BaseMesh& base) {
+    const rgb::SharpFeatures& f = base.sharp_features();
+    if (f == rgb::SharpFeatures{}) return;
+    std::size_t infinite = 0, single_face_corners = 0;
+    for (const rgb::EdgeSharpness& e : f.edges) infinite += e.sharpness >= rgb::kInfiniteSharpness;
+    for (std::uint32_t v = 0; v < base.num_vertices(); ++v)
+        single_face_corners += base.is_boundary_vertex(v) && base.valence(v) == 2;
+    out << "sharp edges: " << f.edges.size() << " (" << infinite << " infinitely sharp, " << f.edges.size() - infinite
+        << " semi-sharp)\n";
+    out << "corners: " << f.corners.size() << " tagged";
+    if (f.boundary == rgb::BoundaryInterpolation::EdgeAndCorner)
+        out << ", and " << single_face_corners << " boundary vertices with a single face";
+    out << "\nboundary interpolation: " << rgb::boundary_interpolation_name(f.boundary) << '\n';
+}
+
 }  // namespace
 
 int run_info(std::span<const std::string> args) {
-    const Arguments arguments(args, {kStrictSwitch}, {});
+    const Arguments arguments(args, {kStrictSwitch}, {kSharpAngleOption, kBoundaryOption});
     if (arguments.has("--help")) {
-        std::cout << "usage: rgbsub info FILE.obj [--strict]\n"
+        std::cout << "usage: rgbsub info FILE.obj [--strict] [--sharp-angle DEG] [--boundary edge-only|edge-and-corner]\n"
                      "Validates FILE.obj as rgbsub loads it (fixes are reported as warnings, problems as errors\n"
-                     "naming the line) and prints V, E, F, boundary loops, Euler characteristic, and the\n"
-                     "triangles per colour and per level.\n"
-                  << kStrictHelp;
+                     "naming the line) and prints V, E, F, boundary loops, Euler characteristic, the\n"
+                     "triangles per colour and per level, and the crease tags (sharp edges, corners).\n"
+                  << kStrictHelp << kSharpHelp;
         return exit_ok;
     }
     if (arguments.positional().size() != 1) throw UsageError("expects exactly one FILE.obj");
     const std::string& file = arguments.positional()[0];
     const rgbio::LoadedMesh loaded = rgbio::read_obj_file(file, read_options(arguments));
-    const rgb::Mesh mesh = rgbio::build_mesh(loaded);
+    // A saved file's adaptive mesh is summarized where it is unless options retag it: copying millions
+    // of faces costs time.
+    const bool retag = arguments.has(kSharpAngleOption) || arguments.value(kBoundaryOption).has_value();
+    const std::optional<rgb::Mesh> copy =
+        loaded.adaptive && !retag ? std::nullopt : std::optional<rgb::Mesh>(with_sharp_options(arguments, rgbio::build_mesh(loaded)));
+    const rgb::Mesh& mesh = copy ? *copy : *loaded.adaptive;
     std::cout << file << ": valid" << (loaded.warnings.empty() ? "" : " after fixes") << '\n';
     for (const std::string& warning : loaded.warnings) std::cout << "warning: " << warning << '\n';
     std::cout << "adaptive state: " << (loaded.adaptive ? "restored from the file's #rgb lines" : "none (base mesh)") << '\n';
     print_attributes(std::cout, loaded);
+    print_sharp_features(std::cout, mesh.base());
     print_summary(std::cout, summarize(mesh));
     return exit_ok;
 }

@@ -1,4 +1,5 @@
 // rgbsub refine IN.obj -o OUT.obj|OUT.glb|OUT.gltf --level N [--sphere X,Y,Z,R] [--positions display|limit]
+// [--sharp-angle DEG]
 #include <charconv>
 #include <cmath>
 #include <iostream>
@@ -34,17 +35,20 @@ rgb::Sphere parse_sphere(const std::string& text) {
 
 int run_refine(std::span<const std::string> args) {
     const Arguments arguments(args, {"--normals", "--plain", kStrictSwitch},
-                              {"--output", "--level", "--sphere", "--positions", "--max-triangles"}, {{"-o", "--output"}});
+                              {"--output", "--level", "--sphere", "--positions", "--max-triangles", kSharpAngleOption,
+                               kBoundaryOption},
+                              {{"-o", "--output"}});
     if (arguments.has("--help")) {
         std::cout << "usage: rgbsub refine IN.obj -o OUT --level N [--sphere X,Y,Z,R] [--positions display|limit]\n"
-                     "                     [--normals] [--max-triangles N] [--plain] [--strict]\n"
+                     "                     [--normals] [--max-triangles N] [--plain] [--strict] [--sharp-angle DEG]\n"
+                     "                     [--boundary edge-only|edge-and-corner]\n"
                      "Sets the level of detail to N (0.." << rgb::kMaxLevel << ") inside the sphere (everywhere without\n"
                      "--sphere; its coordinates are those of IN.obj's base mesh): every face meeting it gets level N.\n"
                      "OUT.obj keeps the adaptive state, so it can be refined further; '--level 0' on it returns the\n"
                      "base mesh. --positions limit writes Loop limit positions. A request estimated to exceed\n"
                      "--max-triangles (default: from this machine's memory) is refused before it runs.\n"
                      "--plain writes an OBJ without the adaptive state (#rgb lines), for tools that dislike them.\n"
-                  << kOutputHelp << kStrictHelp;
+                  << kOutputHelp << kStrictHelp << kSharpHelp;
         return exit_ok;
     }
     if (arguments.positional().size() != 1) throw UsageError("expects exactly one IN.obj");

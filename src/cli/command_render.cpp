@@ -21,7 +21,8 @@ namespace {
 
 constexpr std::string_view kUsage =
     "usage: rgbsub render IN.obj -o OUT.png [--size WxH] [--mode shaded|flat|rgb|level] [--wire]\n"
-    "                     [--view AZIMUTH,ELEVATION] [--limit] [--base] [--strict]\n"
+    "                     [--view AZIMUTH,ELEVATION] [--limit] [--base] [--strict] [--sharp-angle DEG]\n"
+    "                     [--boundary edge-only|edge-and-corner]\n"
     "Renders the mesh headless (OSMesa, no display needed), framed automatically.\n"
     "  -o, --output PATH   the PNG to write (saved like OBJ files: see the README)\n"
     "  --size WxH          image size in pixels (default 1024x768)\n"
@@ -33,6 +34,8 @@ constexpr std::string_view kUsage =
     "                      displayed positions elsewhere (the count is reported)\n"
     "  --base              overlay the base mesh's edges\n"
     "  --strict            refuse a non-manifold input instead of cutting it apart\n"
+    "  --sharp-angle DEG, --boundary B   crease tags added to the file's (see rgbsub refine --help);\n"
+    "                      sharp edges are drawn as coloured lines\n"
     "The same input gives the same bytes.\n";
 
 constexpr int kMaxImageSide = 8192;
@@ -86,7 +89,7 @@ void apply_mode(const std::string& mode, render::RenderOptions& options) {
 }  // namespace
 
 int run_render(std::span<const std::string> args) {
-    const Arguments arguments(args, {"--wire", "--limit", "--base", kStrictSwitch}, {"--output", "--size", "--mode", "--view"},
+    const Arguments arguments(args, {"--wire", "--limit", "--base", kStrictSwitch}, {"--output", "--size", "--mode", "--view", kSharpAngleOption, kBoundaryOption},
                               {{"-o", "--output"}});
     if (arguments.has("--help")) {
         std::cout << kUsage;
@@ -108,7 +111,7 @@ int run_render(std::span<const std::string> args) {
 
     const std::string& input = arguments.positional().front();
     std::vector<std::string> warnings;
-    rgb::Mesh mesh = rgbio::load_mesh(input, &warnings, read_options(arguments));
+    rgb::Mesh mesh = with_sharp_options(arguments, rgbio::load_mesh(input, &warnings, read_options(arguments)));
     for (const std::string& warning : warnings) std::cerr << "rgbsub render: " << input << ": " << warning << '\n';
     render::Image image;
     try {

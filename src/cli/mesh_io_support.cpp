@@ -4,6 +4,8 @@
 
 #include "cli/commands.h"
 #include "io/gltf_export.h"
+#include "rgb/sharp_angle.h"
+#include "rgb/state.h"
 
 namespace cli {
 
@@ -15,15 +17,39 @@ rgbio::LoadedAsset load_input(const char* command, const std::string& file, cons
     std::vector<std::string> warnings;
     rgbio::LoadedAsset asset = rgbio::load_asset(file, &warnings, read_options(arguments));
     print_warnings(command, file, warnings);
+    asset.mesh = with_sharp_options(arguments, std::move(asset.mesh));
     return asset;
 }
 
 void save_output(const char* command, const rgb::Mesh& mesh, const std::string& file, const rgbio::SaveOptions& save) {
-    print_warnings(command, file, rgbio::dropped_attributes(mesh, save.attributes.get()));
+    std::vector<std::string> warnings = rgbio::dropped_attributes(mesh, save.attributes.get());
+    if (mesh.base().has_sharp_features() && (save.normals || rgbio::is_gltf_path(file)))
+        warnings.push_back("the normals follow the smooth Loop rules (rgb/limit_normals.h): at vertices on tagged creases and "
+                           "corners, whose tangent masks are not implemented yet, they are approximate");
+    print_warnings(command, file, warnings);
     rgbio::save_mesh_file(mesh, file, save);
 }
 
 rgbio::ReadOptions read_options(const Arguments& arguments) { return {.strict = arguments.has(kStrictSwitch)}; }
+
+rgb::Mesh with_sharp_options(const Arguments& arguments, rgb::Mesh mesh) {
+    const std::optional<std::string> boundary = arguments.value(kBoundaryOption);
+    if (!arguments.has(kSharpAngleOption) && !boundary) return mesh;
+    rgb::SharpFeatures features = mesh.base().sharp_features();
+    if (boundary) {
+        const auto parsed = rgb::parse_boundary_interpolation(*boundary);
+        if (!parsed) throw UsageError("--boundary must be 'edge-only' or 'edge-and-corner', not '" + *boundary + "'");
+        features.boundary = *parsed;
+    }
+    if (arguments.has(kSharpAngleOption)) {
+        const double degrees = arguments.number(kSharpAngleOption, 0.0);
+        if (degrees < 0.0 || degrees > 180.0) throw UsageError("--sharp-angle must be between 0 and 180 degrees");
+        // Later tags replace earlier ones (BaseMesh), so an edge the file tags semi-sharp becomes infinite.
+        for (const rgb::EdgeSharpness& e : rgb::edges_sharper_than(mesh.base(), degrees)) features.edges.push_back(e);
+    }
+    if (features == mesh.base().sharp_features()) return mesh;
+    return rgb::with_sharp_features(mesh, features);
+}
 
 rgbio::SavedPositions parse_positions(const std::string& value) {
     if (value == "display") return rgbio::SavedPositions::Displayed;

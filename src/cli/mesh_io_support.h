@@ -1,6 +1,6 @@
 #pragma once
 // What the mesh commands (info, refine, apply, render, edit) share: `--strict`, printing loader
-// warnings and reading `--positions`.
+// warnings, reading `--positions`, and the crease options `--sharp-angle` and `--boundary`.
 #include <string>
 #include <string_view>
 #include <vector>
@@ -17,12 +17,27 @@ inline constexpr std::string_view kStrictHelp =
     "  --strict            refuse a non-manifold input (bow-tie vertices, edges of more than two faces)\n"
     "                      with exit code 2 instead of cutting it apart into a manifold\n";
 
+// The crease options every command that reads a mesh accepts, and their lines for --help.
+inline constexpr std::string_view kSharpAngleOption = "--sharp-angle";
+inline constexpr std::string_view kBoundaryOption = "--boundary";
+inline constexpr std::string_view kSharpHelp =
+    "  --sharp-angle DEG   also tag as infinitely sharp (a crease) every interior base edge whose two\n"
+    "                      face normals differ by more than DEG degrees (0-180; a flat edge has 0)\n"
+    "  --boundary edge-only|edge-and-corner\n"
+    "                      OpenSubdiv's boundary rule: edge-and-corner keeps boundary vertices with a\n"
+    "                      single face fixed (default: the file's, else edge-only)\n";
+
+// The mesh with the tags these options add to its base mesh's (the file's t lines or saved state);
+// the mesh itself when neither is given. Throws UsageError for a bad value.
+rgb::Mesh with_sharp_options(const Arguments& arguments, rgb::Mesh mesh);
+
 // How to read the input mesh given the command's arguments (which must accept kStrictSwitch).
 rgbio::ReadOptions read_options(const Arguments& arguments);
 
 void print_warnings(const char* command, const std::string& file, const std::vector<std::string>& warnings);
 
-// Reads `file` with the command's --strict, printing the loader's warnings.
+// Reads `file` with the command's --strict, printing the loader's warnings, and adds the tags of
+// --sharp-angle and --boundary (with_sharp_options).
 rgbio::LoadedAsset load_input(const char* command, const std::string& file, const Arguments& arguments);
 
 // Saves `mesh` with what rides on its base (save.attributes) to `file`: glTF for .glb/.gltf, OBJ

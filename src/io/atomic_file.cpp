@@ -49,6 +49,9 @@ mode_t current_umask() {
 struct AtomicFileWriter::Temporary {
     Temporary(SaveTarget resolved, const std::string& named)
         : target(std::move(resolved)), path(temporary_pattern(target)) {
+        // A termination signal between creating the file and registering it would leave the file:
+        // it waits until the registration is made.
+        const DeferredTerminationSignals held;
         fd = ::mkostemp(path.data(), O_CLOEXEC);
         if (fd < 0) fail(named, "cannot create a temporary file in its folder", errno);
         registration = std::make_unique<TemporaryRegistration>(path.c_str());

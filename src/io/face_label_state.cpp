@@ -125,6 +125,35 @@ BaseFaceLabels FaceLabelSectionReader::finish(std::size_t base_faces, const ObjS
     return labels;
 }
 
+BaseFaceLabels body_labels(const rgb::Mesh& mesh, const ObjRecords& records) {
+    BaseFaceLabels labels;
+    const std::vector<std::string>* file_names[3] = {&records.material_names, &records.group_names, &records.object_names};
+    std::uint32_t ObjPolygon::*field[3] = {&ObjPolygon::material, &ObjPolygon::group, &ObjPolygon::object};
+    const std::size_t base_faces = mesh.base().num_faces();
+    std::vector<bool> seen(base_faces, false);
+    std::vector<std::uint32_t> of_base[3], smoothing(base_faces, 0);
+    for (auto& indices : of_base) indices.assign(base_faces, kNoIndex);
+    bool any[4] = {false, false, false, false};
+    std::size_t slot = 0;
+    for (rgb::FaceId f : mesh.faces()) {
+        const ObjPolygon polygon = records.polygons[slot++];
+        const std::uint32_t b = rgb::base_face_of(mesh, f);
+        if (seen[b]) continue;
+        seen[b] = true;
+        for (int t = 0; t < 3; ++t) {
+            of_base[t][b] = polygon.*field[t];
+            any[t] = any[t] || polygon.*field[t] != kNoIndex;
+        }
+        smoothing[b] = polygon.smoothing_group;
+        any[3] = any[3] || polygon.smoothing_group != 0;
+    }
+    FaceLabels* tables[3] = {&labels.materials, &labels.groups, &labels.objects};
+    for (int t = 0; t < 3; ++t)
+        if (any[t]) *tables[t] = {*file_names[t], std::move(of_base[t])};
+    if (any[3]) labels.smoothing_groups = std::move(smoothing);
+    return labels;
+}
+
 std::optional<std::string> label_mismatch(const rgb::Mesh& mesh, const BaseFaceLabels& labels, const ObjRecords& records) {
     const std::vector<std::string>* file_names[3] = {&records.material_names, &records.group_names, &records.object_names};
     std::uint32_t ObjPolygon::*field[3] = {&ObjPolygon::material, &ObjPolygon::group, &ObjPolygon::object};

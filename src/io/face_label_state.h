@@ -13,6 +13,7 @@
 // A reader without this section refuses it by name ("unknown section 'face-labels'"), so a file
 // with labels is never resumed without them. The body of a saved file writes the same labels on its
 // faces (labelled_faces.h); loading checks that the two agree (an edit in another program wins).
+// A state without the section takes its base faces' labels from the body, if its faces agree.
 #include <cstddef>
 #include <optional>
 #include <span>
@@ -48,6 +49,11 @@ private:
     std::vector<std::uint32_t> indices_[3];        // per base face, 1-based (0: none)
     std::vector<std::uint32_t> smoothing_groups_;  // per base face
 };
+
+// The base faces' labels as the file's faces give them (records.polygons: face slot i is f line i),
+// each from the first face inside it: for a state saved without a face-labels section, whose body
+// another program labelled. label_mismatch then tells whether every face agrees with them.
+BaseFaceLabels body_labels(const rgb::Mesh& mesh, const ObjRecords& records);
 
 // Why the labels the file's faces carry (records.polygons: face slot i is f line i) differ from those
 // their base faces have in the state, or nothing when every face agrees, by name.

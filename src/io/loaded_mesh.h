@@ -61,6 +61,10 @@ struct LoadedMesh {
     std::vector<glm::dvec3> positions;
     std::vector<rgb::Triangle> triangles;
     std::vector<std::string> warnings;  // fixes and ignored content, one readable sentence each
+    // Crease and corner tags from OpenSubdiv tag lines (crease_tags.h), in this mesh's numbering.
+    rgb::SharpFeatures sharp_features;
+    // Per vertex: the 0-based index of the file's v line it comes from (repairs can copy one).
+    std::vector<std::uint32_t> file_vertex;
     // Present when the file was saved by rgbsub with its adaptive state and the state gives back the
     // file's v and f lines exactly: the adaptive mesh. positions/triangles then are the file's plain
     // OBJ content (what other programs see).

@@ -44,6 +44,7 @@ void compact_vertices(const ObjRecords& records, TriangleSoup& soup, LoadedMesh&
     for (const rgb::Triangle& t : soup.triangles)
         for (std::uint32_t v : t) new_index[v] = 0;
     std::size_t unused = 0, first_line = 0;
+    mesh.positions.reserve(new_index.size());
     for (std::size_t v = 0; v < new_index.size(); ++v) {
         if (new_index[v] == kNoIndex) {
             if (unused++ == 0) first_line = records.position_lines[soup.vertex_origin[v]];
@@ -54,6 +55,7 @@ void compact_vertices(const ObjRecords& records, TriangleSoup& soup, LoadedMesh&
         soup.vertex_origin[mesh.positions.size() - 1] = soup.vertex_origin[v];
     }
     soup.vertex_origin.resize(mesh.positions.size());
+    mesh.file_vertex = soup.vertex_origin;
     for (rgb::Triangle& t : soup.triangles)
         for (std::uint32_t& v : t) v = new_index[v];
     mesh.triangles = std::move(soup.triangles);
@@ -101,10 +103,9 @@ void attach_texcoords(const ObjRecords& records, const TriangleSoup& soup, Loade
 
 // Per triangle, the label its polygon carries; empty when no polygon has one.
 template <class Value>
-std::vector<Value> per_triangle(const ObjRecords& records, const TriangleSoup& soup, Value ObjPolygon::*field, Value none) {
-    const bool any = std::any_of(records.polygons.begin(), records.polygons.end(), [&](const ObjPolygon& p) { return p.*field != none; });
+std::vector<Value> per_triangle(const ObjRecords& records, const TriangleSoup& soup, Value ObjPolygon::*field) {
     std::vector<Value> values;
-    if (!any) return values;
+    if (!records.polygons.has_labels(field)) return values;
     values.reserve(soup.polygons.size());
     for (std::uint32_t p : soup.polygons) values.push_back(records.polygons[p].*field);
     return values;
@@ -113,7 +114,7 @@ std::vector<Value> per_triangle(const ObjRecords& records, const TriangleSoup& s
 FaceLabels labels(const ObjRecords& records, const TriangleSoup& soup, const std::vector<std::string>& names,
                   std::uint32_t ObjPolygon::*field) {
     FaceLabels result;
-    result.of_triangle = per_triangle(records, soup, field, kNoIndex);
+    result.of_triangle = per_triangle(records, soup, field);
     if (!result.of_triangle.empty()) result.names = names;
     return result;
 }
@@ -127,7 +128,7 @@ LoadedMesh assemble_loaded_mesh(const ObjRecords& records, TriangleSoup&& soup, 
     mesh.face_materials = labels(records, soup, records.material_names, &ObjPolygon::material);
     mesh.face_groups = labels(records, soup, records.group_names, &ObjPolygon::group);
     mesh.face_objects = labels(records, soup, records.object_names, &ObjPolygon::object);
-    mesh.face_smoothing_groups = per_triangle(records, soup, &ObjPolygon::smoothing_group, 0u);
+    mesh.face_smoothing_groups = per_triangle(records, soup, &ObjPolygon::smoothing_group);
     mesh.material_libraries = records.material_libraries;
     attach_texcoords(records, soup, mesh);
     compact_vertices(records, soup, mesh);

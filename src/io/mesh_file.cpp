@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "io/atomic_file.h"
+#include "io/crease_tags.h"
 #include "io/labelled_faces.h"
 #include "io/number_format.h"
 #include "io/obj_error.h"
@@ -22,22 +23,11 @@ glm::dvec3 written_position(const rgb::Mesh& mesh, rgb::VertexId v, SavedPositio
     return which == SavedPositions::Limit ? rgb::limit_position(mesh, v) : rgb::displayed_position(mesh, v);
 }
 
-std::vector<glm::dvec3> written_positions(const rgb::Mesh& mesh, SavedPositions which, std::vector<std::uint32_t>& obj_index) {
-    std::vector<glm::dvec3> positions;
-    positions.reserve(mesh.num_vertices());
-    obj_index.assign(mesh.vertex_capacity(), UINT32_MAX);
-    for (rgb::VertexId v : mesh.vertices()) {
-        obj_index[v.idx] = static_cast<std::uint32_t>(positions.size());
-        positions.push_back(written_position(mesh, v, which));
-    }
-    return positions;
-}
-
 }  // namespace
 
 rgb::Mesh build_mesh(const LoadedMesh& loaded) {
     if (loaded.adaptive) return *loaded.adaptive;
-    return rgb::Mesh(loaded.positions, loaded.triangles);
+    return rgb::Mesh(std::make_shared<const rgb::BaseMesh>(loaded.positions, loaded.triangles, loaded.sharp_features));
 }
 
 rgb::Mesh load_mesh(const std::string& path, std::vector<std::string>* warnings, const ReadOptions& options) {
@@ -62,8 +52,8 @@ void append_vector(std::string& out, const char* keyword, const glm::dvec3& x) {
 }
 
 // Appends the OBJ text record by record; Output is StringOutput or AtomicFileWriter (save_mesh
-// streams the file instead of holding it whole). `output_folder`: where the file goes, for the
-// mtllib references.
+// streams the file instead of holding it whole); positions and faces are computed as they are
+// written. `output_folder`: where the file goes, for the mtllib references.
 template <class Output>
 void write_obj(const rgb::Mesh& mesh, const SaveOptions& options, const std::string& output_folder, Output& output) {
     const BaseAttributes* attributes = options.attributes.get();
@@ -71,20 +61,22 @@ void write_obj(const rgb::Mesh& mesh, const SaveOptions& options, const std::str
     const bool base_data = attributes && is_base_mesh(mesh);
     const bool colours = base_data && !attributes->colours.empty();
     const bool texcoords = base_data && !attributes->triangle_texcoords.empty();
-    std::vector<std::uint32_t> obj_index;
-    const std::vector<glm::dvec3> positions = written_positions(mesh, options.positions, obj_index);
     const LabelledFaceOrder order = labelled_face_order(mesh, attributes ? attributes->labels : BaseFaceLabels{});
 
     std::string& out = output.buffer();
-    out += "# rgbsub mesh: " + std::to_string(positions.size()) + " vertices, " + std::to_string(order.faces.size()) +
+    out += "# rgbsub mesh: " + std::to_string(mesh.num_vertices()) + " vertices, " + std::to_string(order.faces.size()) +
            " triangles; positions: " + (options.positions == SavedPositions::Limit ? "limit" : "displayed") +
            // Lets the reader tell a file cut before its state from one saved without it.
            (options.state ? std::string(kSavedStateNote) : std::string()) + "\n";
     if (attributes)
         for (const std::string& library : library_references(*attributes, output_folder)) out += "mtllib " + library + "\n";
-    for (std::size_t i = 0; i < positions.size(); ++i) {
-        append_vector(out, "v", positions[i]);
+    std::vector<std::uint32_t> obj_index(mesh.vertex_capacity(), UINT32_MAX);
+    std::uint32_t written = 0;
+    for (rgb::VertexId v : mesh.vertices()) {
         // At level 0 the live vertices are the base vertices, in base order.
+        const std::uint32_t i = written++;
+        obj_index[v.idx] = i;
+        append_vector(out, "v", written_position(mesh, v, options.positions));
         if (colours)
             for (int c = 0; c < 3; ++c) append_double(out, attributes->colours[i][c]);
         out += '\n';
@@ -119,8 +111,9 @@ void write_obj(const rgb::Mesh& mesh, const SaveOptions& options, const std::str
         out += '\n';
         output.flush_if_full();
     }
+    append_tag_lines(mesh, obj_index, out);
     if (options.state)
-        write_state(rgb::capture_state(mesh), options.positions == SavedPositions::Limit, out, [&] { output.flush_if_full(); },
+        write_state(mesh, options.positions == SavedPositions::Limit, out, [&] { output.flush_if_full(); }, order.faces,
                     attributes ? attributes->labels : BaseFaceLabels{});
 }
 

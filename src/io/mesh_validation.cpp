@@ -21,32 +21,32 @@ TriangleSoup empty_soup(const ObjRecords& records) {
     return soup;
 }
 
-bool has_texcoords(const ObjRecords& records) {
-    return std::any_of(records.polygons.begin(), records.polygons.end(), [](const ObjPolygon& p) { return !p.texcoords.empty(); });
+// The texture coordinates of the given corners of a polygon (kNoIndex where it has none).
+std::array<std::uint32_t, 3> corner_texcoords(const ObjPolygon& polygon, const std::array<std::uint32_t, 3>& corners) {
+    std::array<std::uint32_t, 3> uv{kNoIndex, kNoIndex, kNoIndex};
+    if (!polygon.texcoords.empty())
+        for (int i = 0; i < 3; ++i) uv[i] = polygon.texcoords[corners[i]];
+    return uv;
 }
 
 // Appends the triangle of the given corners of polygon p (with_texcoords: some face has them).
 void add_triangle(TriangleSoup& soup, const ObjRecords& records, bool with_texcoords, std::uint32_t p,
                   const std::array<std::uint32_t, 3>& corners) {
-    const ObjPolygon& polygon = records.polygons[p];
+    const ObjPolygon polygon = records.polygons[p];
     soup.triangles.push_back({polygon.vertices[corners[0]], polygon.vertices[corners[1]], polygon.vertices[corners[2]]});
-    if (with_texcoords) {
-        std::array<std::uint32_t, 3> uv{kNoIndex, kNoIndex, kNoIndex};
-        if (!polygon.texcoords.empty())
-            for (int i = 0; i < 3; ++i) uv[i] = polygon.texcoords[corners[i]];
-        soup.texcoords.push_back(uv);
-    }
+    if (with_texcoords) soup.texcoords.push_back(corner_texcoords(polygon, corners));
     soup.polygons.push_back(p);
     soup.lines.push_back(polygon.line);
 }
 
 TriangleSoup triangulate(const ObjRecords& records, const std::string& file, std::vector<std::string>& warnings) {
     TriangleSoup soup = empty_soup(records);
-    const bool with_texcoords = has_texcoords(records);
+    const bool with_texcoords = records.polygons.has_texcoords();
     std::size_t quads = 0, ngons = 0, from_polygons = 0;
+    std::vector<std::uint32_t> sorted;
     for (std::uint32_t p = 0; p < records.polygons.size(); ++p) {
-        const ObjPolygon& polygon = records.polygons[p];
-        std::vector<std::uint32_t> sorted = polygon.vertices;
+        const ObjPolygon polygon = records.polygons[p];
+        sorted.assign(polygon.vertices.begin(), polygon.vertices.end());
         std::sort(sorted.begin(), sorted.end());
         const auto repeated = std::adjacent_find(sorted.begin(), sorted.end());
         if (repeated != sorted.end())
@@ -160,10 +160,16 @@ LoadedMesh validate_mesh(const ObjRecords& records, const std::string& file, con
     return assemble_loaded_mesh(records, std::move(soup), std::move(warnings));
 }
 
-LoadedMesh saved_mesh_content(const ObjRecords& records) {
+LoadedMesh saved_mesh_content(const ObjRecords& records, std::vector<rgb::Triangle> triangles) {
     TriangleSoup soup = empty_soup(records);
-    const bool with_texcoords = has_texcoords(records);
-    for (std::uint32_t p = 0; p < records.polygons.size(); ++p) add_triangle(soup, records, with_texcoords, p, {0, 1, 2});
+    // Lines stay empty: only repairs report them.
+    soup.triangles = std::move(triangles);
+    soup.polygons.resize(records.polygons.size());
+    std::iota(soup.polygons.begin(), soup.polygons.end(), 0u);
+    if (records.polygons.has_texcoords()) {
+        soup.texcoords.reserve(records.polygons.size());
+        for (std::uint32_t p = 0; p < records.polygons.size(); ++p) soup.texcoords.push_back(corner_texcoords(records.polygons[p], {0, 1, 2}));
+    }
     return assemble_loaded_mesh(records, std::move(soup), {});
 }
 

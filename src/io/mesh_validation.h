@@ -15,6 +15,7 @@ namespace rgbio {
 LoadedMesh validate_mesh(const ObjRecords& records, const std::string& file, const ReadOptions& options = {});
 
 // The faces of a file saved by rgbsub (all triangles, already clean) with their data, unchanged.
-LoadedMesh saved_mesh_content(const ObjRecords& records);
+// `triangles`: those faces' corners, which the caller has at hand already (one per face).
+LoadedMesh saved_mesh_content(const ObjRecords& records, std::vector<rgb::Triangle> triangles);
 
 }  // namespace rgbio

@@ -30,6 +30,7 @@ const char* problem_name(ObjProblem p) {
         case ObjProblem::BadState: return "bad rgbsub state";
         case ObjProblem::ComplexPolygon: return "polygon too complex";
         case ObjProblem::Truncated: return "truncated file";
+        case ObjProblem::BadTag: return "bad tag line";
     }
     return "unknown problem";
 }

@@ -27,6 +27,7 @@ enum class ObjProblem {
     BadState,             // the rgbsub state comments are malformed or not a valid RGB mesh
     ComplexPolygon,       // a polygon too tangled to triangulate within the work budget
     Truncated,            // a file rgbsub wrote (its header says so) that was cut short
+    BadTag,               // an OpenSubdiv tag line (t crease/corner/...) is malformed or names no edge/vertex
 };
 
 const char* problem_name(ObjProblem p);

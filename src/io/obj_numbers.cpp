@@ -1,5 +1,6 @@
 #include "io/obj_numbers.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 
@@ -49,10 +50,16 @@ std::variant<double, RealProblem> read_obj_real(std::string_view token) {
 
 std::variant<std::uint32_t, IndexProblem> read_obj_index(std::string_view token, std::size_t count) {
     long long value = 0;
-    const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
-    if (token.empty() || end != token.data() + token.size() || (ec != std::errc() && ec != std::errc::result_out_of_range))
-        return IndexProblem::NotAnInteger;
-    if (ec == std::errc::result_out_of_range) return IndexProblem::OutOfRange;
+    // Up to 18 plain digits (every index of a file below 4 GiB) are read here directly: a saved
+    // file has millions of them, and from_chars is a call with more cases than these need.
+    if (!token.empty() && token.size() <= 18 && std::all_of(token.begin(), token.end(), [](char c) { return c >= '0' && c <= '9'; })) {
+        for (char c : token) value = 10 * value + (c - '0');
+    } else {
+        const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
+        if (token.empty() || end != token.data() + token.size() || (ec != std::errc() && ec != std::errc::result_out_of_range))
+            return IndexProblem::NotAnInteger;
+        if (ec == std::errc::result_out_of_range) return IndexProblem::OutOfRange;
+    }
     if (value == 0) return IndexProblem::Zero;
     const long long resolved = value > 0 ? value - 1 : static_cast<long long>(count) + value;
     if (resolved < 0 || resolved >= static_cast<long long>(count)) return IndexProblem::OutOfRange;

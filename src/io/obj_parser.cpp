@@ -7,16 +7,16 @@
 #include <limits>
 #include <map>
 
+#include "io/obj_blocks.h"
 #include "io/obj_error.h"
 #include "io/obj_numbers.h"
 #include "io/printable_text.h"
 #include "io/text_lines.h"
+#include "rgb/parallel.h"
 
 namespace rgbio {
 
 namespace {
-
-constexpr std::string_view kWhitespace = " \t\r\f\v";
 
 // OBJ statements for free-form geometry, display and rendering attributes: valid OBJ that a
 // triangle-mesh tool has no use for (reported as ignored, unlike keywords that are not OBJ at all).
@@ -44,17 +44,23 @@ void check_encoding(std::string_view text, const std::string& file) {
     }
 }
 
+// OBJ whitespace within a line, tested directly rather than searched for in a set (this runs for every byte).
+bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
+
 std::string_view trim(std::string_view s) {
-    const std::size_t b = s.find_first_not_of(kWhitespace);
-    if (b == std::string_view::npos) return {};
-    return s.substr(b, s.find_last_not_of(kWhitespace) - b + 1);
+    std::size_t b = 0, e = s.size();
+    while (b < e && is_blank(s[b])) ++b;
+    while (e > b && is_blank(s[e - 1])) --e;
+    return s.substr(b, e - b);
 }
 
 // Splits off the next whitespace-separated token.
 std::string_view next_token(std::string_view& rest) {
-    rest.remove_prefix(std::min(rest.find_first_not_of(kWhitespace), rest.size()));
-    const std::size_t e = std::min(rest.find_first_of(kWhitespace), rest.size());
-    std::string_view token = rest.substr(0, e);
+    std::size_t b = 0;
+    while (b < rest.size() && is_blank(rest[b])) ++b;
+    std::size_t e = b;
+    while (e < rest.size() && !is_blank(rest[e])) ++e;
+    const std::string_view token = rest.substr(b, e - b);
     rest.remove_prefix(e);
     return token;
 }
@@ -83,10 +89,20 @@ private:
 
 class LineParser {
 public:
-    LineParser(const std::string& file, ObjRecords& out) : file_(file), out_(out) {}
+    // The lines to parse come after `before` (the whole file: after nothing); line numbers and
+    // indices are the file's.
+    LineParser(const std::string& file, ObjRecords& out, const LinesBefore& before) : file_(file), out_(out), before_(before) {
+        if (before.material) material_.set(*before.material);
+        if (before.group) group_.set(*before.group);
+        if (before.object) object_.set(*before.object);
+        if (before.smoothing) parse_smoothing_group(*before.smoothing);
+    }
 
-    void parse(std::size_t line, std::string_view content) {
-        line_ = line;
+    // line_in_block: the line's number among the lines given to this parser.
+    void parse(std::size_t line_in_block, std::string_view content) {
+        const std::size_t line = line_ = out_.last_line = before_.lines + line_in_block;
+        out_.v_line_starts += content.starts_with("v ");
+        out_.f_line_starts += content.starts_with("f ");
         std::string_view rest = content;
         const std::string_view keyword = next_token(rest);
         if (keyword.empty()) return;
@@ -102,6 +118,7 @@ public:
         else if (keyword == "l") ++out_.line_elements;
         else if (keyword == "p") ++out_.point_elements;
         else if (keyword == "#rgb") out_.state.push_back({trim(rest), line});
+        else if (keyword == "t") out_.tags.push_back({trim(rest), line});
         else if (keyword[0] == '#') return;
         else if (std::find(kUnsupportedStatements.begin(), kUnsupportedStatements.end(), keyword) != kUnsupportedStatements.end())
             out_.unsupported.add(line, keyword);
@@ -198,31 +215,32 @@ private:
     }
 
     void parse_face(std::string_view rest) {
-        ObjPolygon polygon;
-        polygon.line = line_;
+        corners_.clear();
+        corner_texcoords_.clear();
         std::size_t corners = 0;
         for (std::string_view token = next_token(rest); !token.empty(); token = next_token(rest), ++corners) {
             // v, v/vt, v//vn or v/vt/vn; the normal index is not read (input normals are dropped).
-            const std::size_t slash = token.find('/');
-            polygon.vertices.push_back(parse_index(token.substr(0, slash), token, out_.positions.size(), "face index", "vertices"));
+            // A loop, not find(): memchr's call costs more than a face corner's few bytes.
+            std::size_t slash = 0;
+            while (slash < token.size() && token[slash] != '/') ++slash;
+            if (slash == token.size()) slash = std::string_view::npos;
+            corners_.push_back(parse_index(token.substr(0, slash), token, before_.positions + out_.positions.size(), "face index", "vertices"));
             if (slash == std::string_view::npos) continue;
             const std::string_view after = token.substr(slash + 1);
             if (std::count(after.begin(), after.end(), '/') > 1)
                 fail(ObjProblem::Syntax, "face corner " + quoted_file_text(token) + " is not v, v/vt, v//vn or v/vt/vn");
             const std::string_view texcoord = after.substr(0, after.find('/'));
             if (texcoord.empty()) continue;
-            polygon.texcoords.resize(corners, kNoIndex);
-            polygon.texcoords.push_back(
-                parse_index(texcoord, token, out_.texcoords.size(), "texture coordinate index", "texture coordinates (vt)"));
+            corner_texcoords_.resize(corners, kNoIndex);
+            corner_texcoords_.push_back(
+                parse_index(texcoord, token, before_.texcoords + out_.texcoords.size(), "texture coordinate index",
+                            "texture coordinates (vt)"));
         }
-        if (polygon.vertices.size() < 3)
-            fail(ObjProblem::Syntax, "face has " + std::to_string(polygon.vertices.size()) + " vertices, needs at least 3");
-        if (!polygon.texcoords.empty()) polygon.texcoords.resize(corners, kNoIndex);
-        polygon.material = material_.id(out_.material_names);
-        polygon.group = group_.id(out_.group_names);
-        polygon.object = object_.id(out_.object_names);
-        polygon.smoothing_group = smoothing_group_;
-        out_.polygons.push_back(std::move(polygon));
+        if (corners_.size() < 3)
+            fail(ObjProblem::Syntax, "face has " + std::to_string(corners_.size()) + " vertices, needs at least 3");
+        if (!corner_texcoords_.empty()) corner_texcoords_.resize(corners, kNoIndex);
+        out_.polygons.add(corners_, corner_texcoords_, line_, material_.id(out_.material_names), group_.id(out_.group_names),
+                          object_.id(out_.object_names), smoothing_group_);
     }
 
     void parse_smoothing_group(std::string_view value) {
@@ -240,12 +258,89 @@ private:
 
     const std::string& file_;
     ObjRecords& out_;
+    const LinesBefore& before_;
     std::size_t line_ = 0;
     CurrentLabel material_, group_, object_;
     std::uint32_t smoothing_group_ = 0;
+    std::vector<std::uint32_t> corners_, corner_texcoords_;  // the face being read
 };
 
 }  // namespace
+
+ObjPolygon ObjPolygons::operator[](std::size_t i) const {
+    ObjPolygon p;
+    const std::size_t first = start_[i], count = start_[i + 1] - first;
+    p.vertices = std::span<const std::uint32_t>(vertices_).subspan(first, count);
+    if (!texcoords_.empty()) {
+        const auto texcoords = std::span<const std::uint32_t>(texcoords_).subspan(first, count);
+        if (std::any_of(texcoords.begin(), texcoords.end(), [](std::uint32_t t) { return t != kNoIndex; })) p.texcoords = texcoords;
+    }
+    p.line = lines_[i];
+    auto label = [i](const std::vector<std::uint32_t>& column, std::uint32_t none) { return column.empty() ? none : column[i]; };
+    p.material = label(material_, kNoIndex);
+    p.group = label(group_, kNoIndex);
+    p.object = label(object_, kNoIndex);
+    p.smoothing_group = label(smoothing_group_, 0);
+    return p;
+}
+
+bool ObjPolygons::has_labels(std::uint32_t ObjPolygon::*field) const {
+    // A column is filled from the first face with a label other than the default on.
+    if (field == &ObjPolygon::material) return !material_.empty();
+    if (field == &ObjPolygon::group) return !group_.empty();
+    if (field == &ObjPolygon::object) return !object_.empty();
+    return !smoothing_group_.empty();
+}
+
+void ObjPolygons::reserve(std::size_t faces, std::size_t corners) {
+    start_.reserve(faces + 1);
+    lines_.reserve(faces);
+    vertices_.reserve(corners);
+}
+
+void ObjPolygons::add(std::span<const std::uint32_t> vertices, std::span<const std::uint32_t> texcoords, std::size_t line,
+                      std::uint32_t material, std::uint32_t group, std::uint32_t object, std::uint32_t smoothing_group) {
+    const std::size_t before = size();
+    if (!texcoords.empty() && texcoords_.empty()) texcoords_.assign(vertices_.size(), kNoIndex);
+    if (!texcoords.empty()) texcoords_.insert(texcoords_.end(), texcoords.begin(), texcoords.end());
+    else if (!texcoords_.empty()) texcoords_.insert(texcoords_.end(), vertices.size(), kNoIndex);
+    vertices_.insert(vertices_.end(), vertices.begin(), vertices.end());
+    start_.push_back(static_cast<std::uint32_t>(vertices_.size()));
+    lines_.push_back(static_cast<std::uint32_t>(line));
+    auto label = [before](std::vector<std::uint32_t>& column, std::uint32_t value, std::uint32_t none) {
+        if (value != none && column.empty()) column.assign(before, none);
+        if (value != none || !column.empty()) column.push_back(value);
+    };
+    label(material_, material, kNoIndex);
+    label(group_, group, kNoIndex);
+    label(object_, object, kNoIndex);
+    label(smoothing_group_, smoothing_group, 0);
+}
+
+void ObjPolygons::append(const ObjPolygons& other, std::span<const std::uint32_t> material, std::span<const std::uint32_t> group,
+                         std::span<const std::uint32_t> object) {
+    const std::size_t before = size(), corners_before = vertices_.size();
+    vertices_.reserve(corners_before + other.vertices_.size());
+    start_.reserve(start_.size() + other.size());
+    lines_.reserve(before + other.size());
+    if (!other.texcoords_.empty() && texcoords_.empty()) texcoords_.assign(corners_before, kNoIndex);
+    if (!other.texcoords_.empty()) texcoords_.insert(texcoords_.end(), other.texcoords_.begin(), other.texcoords_.end());
+    else if (!texcoords_.empty()) texcoords_.insert(texcoords_.end(), other.vertices_.size(), kNoIndex);
+    vertices_.insert(vertices_.end(), other.vertices_.begin(), other.vertices_.end());
+    for (std::size_t i = 1; i < other.start_.size(); ++i) start_.push_back(static_cast<std::uint32_t>(corners_before + other.start_[i]));
+    lines_.insert(lines_.end(), other.lines_.begin(), other.lines_.end());
+    auto label = [&](std::vector<std::uint32_t>& column, const std::vector<std::uint32_t>& added, std::span<const std::uint32_t> id,
+                     std::uint32_t none) {
+        if (added.empty() && column.empty()) return;
+        column.resize(before, none);
+        if (added.empty()) column.resize(size(), none);
+        for (std::uint32_t x : added) column.push_back(x == none || id.empty() ? x : id[x]);
+    };
+    label(material_, other.material_, material, kNoIndex);
+    label(group_, other.group_, group, kNoIndex);
+    label(object_, other.object_, object, kNoIndex);
+    label(smoothing_group_, other.smoothing_group_, {}, 0);
+}
 
 void SkippedLines::add(std::size_t line, std::string_view keyword) {
     if (count++ == 0) {
@@ -254,15 +349,79 @@ void SkippedLines::add(std::size_t line, std::string_view keyword) {
     }
 }
 
+namespace {
+
+// The lines of `text`, which come after `before`; `room` (if known): what the records are to hold
+// in the end (the whole file's counts), reserved at once.
+ObjRecords parse_lines(std::string_view text, const LinesBefore& before, const std::string& file, const LinesBefore& room = {}) {
+    ObjRecords records;
+    records.positions.reserve(room.positions);
+    records.position_lines.reserve(room.positions);
+    records.texcoords.reserve(room.texcoords);
+    records.polygons.reserve(room.faces, 3 * room.faces);  // exact for triangles
+    LineParser parser(file, records, before);
+    for_each_line(text, [&](std::size_t line, std::string_view content) { parser.parse(line, content); });
+    return records;
+}
+
+// What the lines of `text` define for later ones, by the keywords LineParser reads them with.
+LinesBefore summarize_lines(std::string_view text) {
+    LinesBefore summary;
+    for_each_line(text, [&](std::size_t, std::string_view content) {
+        ++summary.lines;
+        std::string_view rest = content;
+        const std::string_view keyword = next_token(rest);
+        if (keyword == "v") ++summary.positions;
+        else if (keyword == "vt") ++summary.texcoords;
+        else if (keyword == "f") ++summary.faces;
+        else if (keyword == "usemtl") summary.material = trim(rest);
+        else if (keyword == "g") summary.group = trim(rest);
+        else if (keyword == "o") summary.object = trim(rest);
+        else if (keyword == "s") summary.smoothing = trim(rest);
+    });
+    return summary;
+}
+
+// Below this many bytes per thread, starting threads costs more than it saves.
+constexpr std::size_t kBlockBytes = std::size_t(4) << 20;
+
+}  // namespace
+
+ObjRecords parse_obj_in_blocks(std::string_view text, const std::string& file, std::size_t count) {
+    const std::vector<std::string_view> blocks = line_blocks(text, count);
+    if (blocks.size() <= 1) return parse_lines(text, {}, file);
+    // Each block is parsed knowing what the blocks before it define; that takes a quick pass over
+    // them first, itself in parallel. The first block's records, which the others join, are sized
+    // for the whole file at once.
+    std::vector<LinesBefore> summaries(blocks.size());
+    rgb::parallel_blocks_for(summaries.size(), summaries.size(),
+                             [&](std::size_t b, std::size_t, std::size_t) { summaries[b] = summarize_lines(blocks[b]); });
+    std::vector<LinesBefore> before(blocks.size() + 1);
+    for (std::size_t b = 1; b <= blocks.size(); ++b) before[b] = before[b - 1].then(summaries[b - 1]);
+    std::vector<ObjRecords> parsed(blocks.size());
+    std::vector<std::uint8_t> failed(blocks.size(), 0);
+    rgb::parallel_blocks_for(blocks.size(), blocks.size(), [&](std::size_t b, std::size_t, std::size_t) {
+        try {
+            parsed[b] = parse_lines(blocks[b], before[b], file, b == 0 ? before.back() : LinesBefore{});
+        } catch (const ObjError&) {
+            if (b == 0) throw;
+            failed[b] = 1;
+        }
+    });
+    // A later block's error message may depend on lines before it (the hint about unknown keywords
+    // before a bad index): the whole text, read in one piece, says it exactly as usual.
+    if (std::find(failed.begin(), failed.end(), 1) != failed.end()) return parse_lines(text, {}, file);
+    ObjRecords records = std::move(parsed[0]);
+    for (std::size_t b = 1; b < blocks.size(); ++b) append_records(records, parsed[b]);
+    return records;
+}
+
 ObjRecords parse_obj(std::string_view text, const std::string& file) {
     if (text.starts_with("\xef\xbb\xbf")) text.remove_prefix(3);  // UTF-8 byte order mark
     check_encoding(text, file);
     if (text.size() >= std::numeric_limits<std::uint32_t>::max())
         throw ObjError(ObjProblem::Unreadable, file, 0, "the file is larger than 4 GiB");
-    ObjRecords records;
-    LineParser parser(file, records);
-    for_each_line(text, [&](std::size_t line, std::string_view content) { parser.parse(line, content); });
-    return records;
+    return parse_obj_in_blocks(text, file, rgb::parallel_blocks(text.size(), kBlockBytes));
 }
 
 }  // namespace rgbio

@@ -5,12 +5,14 @@
 // whole-mesh checks are in mesh_validation.h.
 //
 // Read: v (x y z [w] or x y z r g b), vt (u [v [w]]), f (v, v/vt, v//vn, v/vt/vn corners), usemtl,
-// g, o, s, mtllib, #rgb. Counted and reported: vn (dropped: normals of the input surface do not
+// g, o, s, mtllib, #rgb, t (OpenSubdiv tags, collected for crease_tags.h). Counted and reported: vn (dropped: normals of the input surface do not
 // belong to the subdivided one), l, p, free-form statements and unknown keywords. Lines end at LF,
 // CRLF or a lone CR. Numbers are parsed with std::from_chars, which is correctly rounded, so a
 // coordinate written with 17 significant digits (or shortest round-trip form) comes back bit for bit.
 #include <cstddef>
 #include <cstdint>
+#include <iterator>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -26,14 +28,69 @@ namespace rgbio {
 // precision in the subdivision arithmetic, and real models are never that large.
 inline constexpr double kMaxCoordinate = 1e12;
 
+// One face as read: views into ObjPolygons' flat arrays, valid while the ObjRecords live.
 struct ObjPolygon {
-    std::vector<std::uint32_t> vertices;   // 0-based, already resolved (negative OBJ indices too)
-    std::vector<std::uint32_t> texcoords;  // empty when no corner names a vt; else per corner, or kNoIndex
+    std::span<const std::uint32_t> vertices;   // 0-based, already resolved (negative OBJ indices too)
+    std::span<const std::uint32_t> texcoords;  // empty when no corner names a vt; else per corner, or kNoIndex
     std::size_t line = 0;
     std::uint32_t material = kNoIndex;  // indices into ObjRecords' name tables
     std::uint32_t group = kNoIndex;
     std::uint32_t object = kNoIndex;
     std::uint32_t smoothing_group = 0;  // 0: off
+};
+
+// The faces of a file in flat arrays: a few allocations for all of them rather than one per face
+// (a saved 6M-triangle file has 6M faces). A label column stays empty while every face has the
+// default label.
+class ObjPolygons {
+public:
+    class iterator {
+    public:
+        using iterator_category = std::input_iterator_tag;
+        using value_type = ObjPolygon;
+        using difference_type = std::ptrdiff_t;
+        using pointer = void;
+        using reference = ObjPolygon;
+        iterator(const ObjPolygons* polygons, std::size_t i) : polygons_(polygons), i_(i) {}
+        ObjPolygon operator*() const { return (*polygons_)[i_]; }
+        iterator& operator++() {
+            ++i_;
+            return *this;
+        }
+        bool operator==(const iterator& o) const { return i_ == o.i_; }
+
+    private:
+        const ObjPolygons* polygons_;
+        std::size_t i_;
+    };
+
+    std::size_t size() const { return lines_.size(); }
+    bool empty() const { return lines_.empty(); }
+    ObjPolygon operator[](std::size_t i) const;
+    // Every face's vertices one after the other (3 per face where all are triangles).
+    std::span<const std::uint32_t> all_vertices() const { return vertices_; }
+    // Whether some face has a texture coordinate, or a label other than the default in the given
+    // field (material, group, object or smoothing_group), without looking at every face.
+    bool has_texcoords() const { return !texcoords_.empty(); }
+    bool has_labels(std::uint32_t ObjPolygon::*field) const;
+    iterator begin() const { return {this, 0}; }
+    iterator end() const { return {this, size()}; }
+
+    void reserve(std::size_t faces, std::size_t corners);
+    // `texcoords` is empty or has one entry per vertex (kNoIndex where a corner names none).
+    void add(std::span<const std::uint32_t> vertices, std::span<const std::uint32_t> texcoords, std::size_t line,
+             std::uint32_t material, std::uint32_t group, std::uint32_t object, std::uint32_t smoothing_group);
+    // Appends the faces of a later part of the file, their label ids mapped through the tables (the
+    // new id of each of `other`'s ids).
+    void append(const ObjPolygons& other, std::span<const std::uint32_t> material, std::span<const std::uint32_t> group,
+                std::span<const std::uint32_t> object);
+
+private:
+    std::vector<std::uint32_t> start_{0};  // polygon i's corners are [start_[i], start_[i + 1])
+    std::vector<std::uint32_t> vertices_;
+    std::vector<std::uint32_t> texcoords_;  // empty, or one per corner
+    std::vector<std::uint32_t> lines_;      // the file is below 4 GiB, so are its line numbers
+    std::vector<std::uint32_t> material_, group_, object_, smoothing_group_;  // empty: all default
 };
 
 struct ObjStateLine {
@@ -45,7 +102,7 @@ struct ObjStateLine {
 struct SkippedLines {
     std::size_t count = 0;
     std::size_t first_line = 0;
-    std::string_view first_keyword;  // a view into the parsed text
+    std::string first_keyword;  // a copy: the records outlive the text when a saved file is loaded
     void add(std::size_t line, std::string_view keyword);
 };
 
@@ -58,7 +115,7 @@ struct ObjRecords {
     std::vector<std::uint8_t> has_colour;
     std::vector<glm::dvec2> texcoords;
     SkippedLines texcoord_w;  // vt lines with a non-zero w, which is dropped
-    std::vector<ObjPolygon> polygons;
+    ObjPolygons polygons;
     std::vector<std::string> material_names, group_names, object_names;  // in order of first use by a face
     std::vector<std::string> material_libraries;
     std::size_t line_elements = 0;   // `l` lines, ignored
@@ -67,6 +124,10 @@ struct ObjRecords {
     SkippedLines unsupported;        // OBJ statements rgbsub does not use (free-form geometry, ...)
     SkippedLines unknown;            // keywords that are not OBJ
     std::vector<ObjStateLine> state;  // views into the text passed to parse_obj
+    // Lines starting "v " and "f " exactly, and the number of the last line: what a truncation check
+    // counts (truncation_check.h), gathered on the way so that it needs no second pass over the text.
+    std::size_t v_line_starts = 0, f_line_starts = 0, last_line = 0;
+    std::vector<ObjStateLine> tags;   // OpenSubdiv tag lines (t), after "t "; read by crease_tags.h
 };
 
 // Throws ObjError (Empty, Binary, Utf16, Syntax, FaceIndexZero, FaceIndexOutOfRange,

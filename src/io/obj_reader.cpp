@@ -3,11 +3,13 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "io/crease_tags.h"
 #include "io/face_label_state.h"
 #include "io/material_library.h"
 #include "io/mesh_validation.h"
@@ -15,8 +17,8 @@
 #include "io/obj_parser.h"
 #include "io/state_format.h"
 #include "io/truncation_check.h"
-#include "rgb/loop_geometry.h"
 #include "rgb/mesh.h"
+#include "rgb/position_check.h"
 #include "rgb/state.h"
 
 namespace rgbio {
@@ -52,21 +54,28 @@ namespace {
 
 // The mesh the state describes, if it is the body's own: one address per v line, only triangles, a
 // valid RGB mesh with these faces, exactly these positions and the labels of their base faces.
-// Otherwise the reason it is not.
+// Otherwise the reason it is not. The state is completed on the way (its faces are the f lines').
 std::shared_ptr<rgb::Mesh> adaptive_mesh(SavedState& saved, const ObjRecords& records, std::string& reason) {
     if (saved.mesh.vertices.size() != records.positions.size()) {
         reason = "it describes " + std::to_string(saved.mesh.vertices.size()) + " vertices, the file has " +
                  std::to_string(records.positions.size());
         return nullptr;
     }
-    saved.mesh.faces.reserve(records.polygons.size());
-    for (const ObjPolygon& p : records.polygons) {
-        if (p.vertices.size() != 3) {
-            reason = "the file has a face with " + std::to_string(p.vertices.size()) + " vertices (line " + std::to_string(p.line) + ")";
-            return nullptr;
-        }
-        saved.mesh.faces.push_back({p.vertices[0], p.vertices[1], p.vertices[2]});
+    if (std::optional<std::string> missing = take_from_body(saved, records.positions, records.polygons)) {
+        reason = std::move(*missing);
+        return nullptr;
     }
+    const std::span<const std::uint32_t> corners = records.polygons.all_vertices();
+    if (corners.size() != 3 * records.polygons.size()) {
+        for (const ObjPolygon& p : records.polygons)
+            if (p.vertices.size() != 3) {
+                reason = "the file has a face with " + std::to_string(p.vertices.size()) + " vertices (line " + std::to_string(p.line) + ")";
+                return nullptr;
+            }
+    }
+    // All triangles: their corners are the faces, three by three.
+    saved.mesh.faces.resize(records.polygons.size());
+    std::memcpy(saved.mesh.faces.data(), corners.data(), corners.size_bytes());
     std::shared_ptr<rgb::Mesh> mesh;
     try {
         mesh = std::make_shared<rgb::Mesh>(rgb::restore_state(saved.mesh));
@@ -75,17 +84,14 @@ std::shared_ptr<rgb::Mesh> adaptive_mesh(SavedState& saved, const ObjRecords& re
         return nullptr;
     }
     // An edit elsewhere (moved or scaled vertices) must win over the state, not be silently undone.
-    std::size_t differing = 0;
-    std::uint32_t i = 0;
-    for (rgb::VertexId v : mesh->vertices()) {
-        const glm::dvec3 p = saved.limit_positions ? rgb::limit_position(*mesh, v) : rgb::displayed_position(*mesh, v);
-        differing += p != records.positions[i++];
-    }
+    const std::size_t differing = rgb::count_differing_positions(*mesh, records.positions, saved.limit_positions);
     if (differing > 0) {
         reason = std::to_string(differing) + " of " + std::to_string(records.positions.size()) +
                  " vertex positions differ from the ones it gives";
         return nullptr;
     }
+    // Saved without labels, the body's (added elsewhere) become the base faces'.
+    if (saved.labels.empty()) saved.labels = body_labels(*mesh, records);
     if (const std::optional<std::string> mismatch = label_mismatch(*mesh, saved.labels, records)) {
         reason = *mismatch;
         return nullptr;
@@ -94,46 +100,71 @@ std::shared_ptr<rgb::Mesh> adaptive_mesh(SavedState& saved, const ObjRecords& re
 }
 
 // A state's mesh, or the plain mesh with a warning saying why the state was not used.
-LoadedMesh read_records(const ObjRecords& records, const std::string& name, const ReadOptions& options) {
+// release_text() is called once a state is parsed: nothing after needs the text.
+LoadedMesh read_records(const ObjRecords& records, const std::string& name, const ReadOptions& options,
+                        const std::function<void()>& release_text) {
     std::vector<std::string> warnings;
     if (!records.state.empty()) {
-        std::optional<SavedState> saved = parse_state(records.state, name);
-        std::string reason;
+        std::optional<SavedState> saved = parse_state(records.state, name, records.positions.size(), records.polygons.size());
         if (!saved) {
             warnings.push_back("ignored " + std::to_string(records.state.size()) +
                                " comment lines starting with #rgb (the first on line " + std::to_string(records.state.front().line) +
                                "): they are not an rgbsub state, which starts with '#rgb state'");
-        } else if (std::shared_ptr<rgb::Mesh> mesh = adaptive_mesh(*saved, records, reason)) {
-            LoadedMesh loaded = saved_mesh_content(records);
-            loaded.adaptive = std::move(mesh);
-            loaded.adaptive_labels = std::move(saved->labels);
-            return loaded;
         } else {
+            release_text();
+            std::string reason;
+            if (std::shared_ptr<rgb::Mesh> mesh = adaptive_mesh(*saved, records, reason)) {
+                LoadedMesh loaded = saved_mesh_content(records, std::move(saved->mesh.faces));
+                loaded.adaptive = std::move(mesh);
+                loaded.adaptive_labels = std::move(saved->labels);
+                return loaded;
+            }
             warnings.push_back("the rgbsub state (#rgb lines) does not match the file, which was probably edited by another "
                                "program: " + reason + "; it is loaded as a plain mesh");
         }
     }
     LoadedMesh loaded = validate_mesh(records, name, options);
+    attach_file_tags(parse_tag_lines(records.tags, records.positions.size(), name), loaded, name);
     loaded.warnings.insert(loaded.warnings.begin(), warnings.begin(), warnings.end());
     return loaded;
 }
 
 }  // namespace
 
-LoadedMesh read_obj_text(std::string_view text, const std::string& name, const ReadOptions& options) {
+namespace {
+
+// What read_obj_text does; `owned`, when not null, is the text itself, given up by the caller and
+// released once a saved file's state is parsed (its mesh is built without the text, which for a
+// 6M-triangle file is 370 MB).
+LoadedMesh read_text(std::string_view text, std::string* owned, const std::string& name, const ReadOptions& options) {
     const std::optional<SavedFileHeader> header = read_saved_file_header(text);
-    if (!header) return read_records(parse_obj(text, name), name, options);
+    if (!header) return read_records(parse_obj(text, name), name, options, [] {});
+    ObjRecords records;
     try {
-        const ObjRecords records = parse_obj(text, name);
+        records = parse_obj(text, name);
         check_saved_file_complete(*header, records, text, name);
-        return read_records(records, name, options);
     } catch (const ObjError& error) {
         throw truncation_or(error, *header, text, name);
     }
+    const TextEnd end = text_end(records, text);
+    try {
+        return read_records(records, name, options, [owned] {
+            if (owned) std::string().swap(*owned);
+        });
+    } catch (const ObjError& error) {
+        throw truncation_or(error, *header, end, name);
+    }
+}
+
+}  // namespace
+
+LoadedMesh read_obj_text(std::string_view text, const std::string& name, const ReadOptions& options) {
+    return read_text(text, nullptr, name, options);
 }
 
 LoadedMesh read_obj_file(const std::string& path, const ReadOptions& options) {
-    LoadedMesh loaded = read_obj_text(read_text_file(path), path, options);
+    std::string text = read_text_file(path);
+    LoadedMesh loaded = read_text(text, &text, path, options);
     loaded.materials = read_material_libraries(loaded.material_libraries, std::filesystem::path(path).parent_path(),
                                                loaded.face_materials, loaded.warnings);
     return loaded;

@@ -1,12 +1,17 @@
 #include "io/state_format.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
+#include "io/crease_tags.h"
 #include "io/face_label_state.h"
 #include "io/number_format.h"
 #include "io/obj_error.h"
+#include "rgb/loop_geometry.h"
+#include "rgb/mesh.h"
 
 namespace rgbio {
 
@@ -27,15 +32,15 @@ public:
     StateLineReader(const ObjStateLine& line, const std::string& file) : rest_(line.text), line_(line.line), file_(file) {}
 
     std::string_view word() {
-        const std::size_t b = std::min(rest_.find_first_not_of(" \t\r"), rest_.size());
-        rest_.remove_prefix(b);
-        const std::size_t e = std::min(rest_.find_first_of(" \t\r"), rest_.size());
+        skip_blanks();
+        std::size_t e = 0;
+        while (e < rest_.size() && !is_blank(rest_[e])) ++e;
         const std::string_view w = rest_.substr(0, e);
         rest_.remove_prefix(e);
         return w;
     }
     bool at_end() {
-        rest_.remove_prefix(std::min(rest_.find_first_not_of(" \t\r"), rest_.size()));
+        skip_blanks();
         return rest_.empty();
     }
     template <class T>
@@ -64,58 +69,140 @@ public:
     }
 
 private:
+    // Tested directly rather than searched for in a set: a saved file has millions of state numbers.
+    static bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+    void skip_blanks() {
+        std::size_t b = 0;
+        while (b < rest_.size() && is_blank(rest_[b])) ++b;
+        rest_.remove_prefix(b);
+    }
+
     std::string_view rest_;
     std::size_t line_;
     const std::string& file_;
 };
 
+constexpr std::size_t kNoLine = static_cast<std::size_t>(-1);
+
+// The position a v line of the saved file holds.
+glm::dvec3 written_position(const rgb::Mesh& mesh, rgb::VertexId v, bool limit_positions) {
+    return limit_positions ? rgb::limit_position(mesh, v) : rgb::displayed_position(mesh, v);
+}
+
+// Per base face, the index among the f lines (`face_lines`, or live faces in slot order when empty)
+// of the mesh face that is it: the face in its slot when that still has its corners in its order;
+// kNoLine otherwise.
+std::vector<std::size_t> base_face_lines(const rgb::Mesh& mesh, std::span<const rgb::FaceId> face_lines) {
+    const std::span<const rgb::Triangle> triangles = mesh.base().faces();
+    std::vector<std::size_t> lines(triangles.size(), kNoLine);
+    std::size_t line = 0;
+    auto look_at = [&](rgb::FaceId f) {
+        if (f.idx < triangles.size()) {
+            const auto& v = mesh.face_vertices(f);
+            const rgb::Triangle& t = triangles[f.idx];
+            if (v[0].idx == t[0] && v[1].idx == t[1] && v[2].idx == t[2]) lines[f.idx] = line;
+        }
+        ++line;
+    };
+    if (face_lines.empty())
+        for (rgb::FaceId f : mesh.faces()) look_at(f);
+    else
+        for (rgb::FaceId f : face_lines) look_at(f);
+    return lines;
+}
+
 }  // namespace
 
-void write_state(const rgb::MeshState& state, bool limit_positions, std::string& out, const std::function<void()>& flush_if_full,
-                 const BaseFaceLabels& labels) {
-    const std::size_t n0 = state.base_positions.size();
+void write_state(const rgb::Mesh& mesh, bool limit_positions, std::string& out, const std::function<void()>& flush_if_full,
+                 std::span<const rgb::FaceId> face_lines, const BaseFaceLabels& labels) {
+    const rgb::BaseMesh& base = mesh.base();
+    const std::size_t n0 = base.num_vertices();
     out += "# rgbsub adaptive state: the #rgb lines restore the exact RGB mesh; other readers ignore them\n";
-    out += "#rgb state " + std::to_string(kStateFormatVersion) + "\n";
+    std::string tag_records;
+    append_state_tag_records(base.sharp_features(), tag_records);
+    out += "#rgb state " + std::to_string(tag_records.empty() ? kStateFormatVersion : kTaggedStateFormatVersion) + "\n";
     out += limit_positions ? "#rgb positions limit\n" : "#rgb positions displayed\n";
     out += "#rgb section base-vertices " + std::to_string(n0) + "\n";
-    for (const glm::dvec3& p : state.base_positions) {
+    std::size_t run = 0;
+    auto end_run = [&](const std::string& record) {
+        if (run > 0) out += record + std::to_string(run) + "\n";
+        run = 0;
+    };
+    for (std::uint32_t v = 0; v < n0; ++v) {
+        // Where its v line puts it (bit for bit: -0 is not 0 here), it is not repeated.
+        const glm::dvec3 p = base.position(v), written = written_position(mesh, rgb::VertexId(v), limit_positions);
+        if (std::memcmp(&p, &written, sizeof p) == 0) {
+            ++run;
+            continue;
+        }
+        end_run("#rgb p-as-v ");
         out += "#rgb p";
         for (int i = 0; i < 3; ++i) append_double(out, p[i]);
         out += '\n';
-    }
-    out += "#rgb section base-faces " + std::to_string(state.base_triangles.size()) + "\n";
-    for (std::size_t i = 0; i < state.base_triangles.size(); i += kPerLine) {
-        out += "#rgb t";
-        for (std::size_t k = i; k < std::min(state.base_triangles.size(), i + kPerLine); ++k)
-            for (std::uint32_t v : state.base_triangles[k]) append_number(out, v);
-        out += '\n';
         flush_if_full();
     }
-    const std::size_t addresses = state.vertices.size() - std::min(n0, state.vertices.size());
-    out += "#rgb section addresses " + std::to_string(addresses) + "\n";
-    for (std::size_t i = n0; i < state.vertices.size(); i += kPerLine) {
-        out += "#rgb a";
-        for (std::size_t k = i; k < std::min(state.vertices.size(), i + kPerLine); ++k) {
-            const rgb::SurfacePoint& p = state.vertices[k];
-            for (std::uint64_t x : {std::uint64_t(p.face), std::uint64_t(p.a[1]), std::uint64_t(p.a[2]), std::uint64_t(p.level)})
-                append_number(out, x);
+    end_run("#rgb p-as-v ");
+    const std::span<const rgb::Triangle> triangles = base.faces();
+    out += "#rgb section base-faces " + std::to_string(triangles.size()) + "\n";
+    // A base face still in its own slot, corner for corner, is an f line already.
+    const std::vector<std::size_t> face_line = base_face_lines(mesh, face_lines);
+    std::size_t first_line = 0;
+    std::vector<rgb::Triangle> explicit_faces;
+    auto end_explicit = [&] {
+        for (std::size_t i = 0; i < explicit_faces.size(); i += kPerLine) {
+            out += "#rgb t";
+            for (std::size_t k = i; k < std::min(explicit_faces.size(), i + kPerLine); ++k)
+                for (std::uint32_t v : explicit_faces[k]) append_number(out, v);
+            out += '\n';
+            flush_if_full();
         }
-        out += '\n';
-        flush_if_full();
+        explicit_faces.clear();
+    };
+    for (std::size_t f = 0; f < triangles.size(); ++f) {
+        if (face_line[f] == kNoLine) {
+            end_run("#rgb t-as-f " + std::to_string(first_line) + " ");
+            explicit_faces.push_back(triangles[f]);
+            continue;
+        }
+        end_explicit();
+        if (run > 0 && face_line[f] != first_line + run) end_run("#rgb t-as-f " + std::to_string(first_line) + " ");
+        if (run == 0) first_line = face_line[f];
+        ++run;
     }
-    append_face_label_section(labels, state.base_triangles.size(), out);
+    end_explicit();
+    end_run("#rgb t-as-f " + std::to_string(first_line) + " ");
+    // Live vertices in slot order, as capture_state lists them: the base vertices (always live, in
+    // slots 0..n0-1) first, then one address per other vertex.
+    out += "#rgb section addresses " + std::to_string(mesh.num_vertices() - n0) + "\n";
+    std::size_t on_line = 0, index = 0;
+    for (rgb::VertexId v : mesh.vertices()) {
+        if (index++ < n0) continue;
+        if (on_line == 0) out += "#rgb a";
+        const rgb::SurfacePoint p = mesh.address(v);
+        for (std::uint64_t x : {std::uint64_t(p.face), std::uint64_t(p.a[1]), std::uint64_t(p.a[2]), std::uint64_t(p.level)})
+            append_number(out, x);
+        if (++on_line == kPerLine) {
+            out += '\n';
+            on_line = 0;
+            flush_if_full();
+        }
+    }
+    if (on_line > 0) out += '\n';
+    out += tag_records;
+    append_face_label_section(labels, triangles.size(), out);
     out += "#rgb end\n";
 }
 
-std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const std::string& file) {
+std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const std::string& file, std::size_t body_vertices,
+                                      std::size_t body_faces) {
     if (lines.empty()) return std::nullopt;
     StateLineReader header(lines.front(), file);
     // Another program's comments that happen to start with "#rgb": not a state at all.
     if (header.word() != "state") return std::nullopt;
     const unsigned version = header.number<unsigned>();
-    if (version != kStateFormatVersion)
-        header.fail("state format version " + std::to_string(version) + " (this rgbsub reads version " +
-                    std::to_string(kStateFormatVersion) + ")");
+    if (version < kOldestStateFormatVersion || version > kTaggedStateFormatVersion)
+        header.fail("state format version " + std::to_string(version) + " (this rgbsub reads versions " +
+                    std::to_string(kOldestStateFormatVersion) + " to " + std::to_string(kTaggedStateFormatVersion) + ")");
     header.expect_end();
 
     SavedState saved;
@@ -124,6 +211,7 @@ std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const
     std::size_t expected[4] = {0, 0, 0, 0};
     bool seen[4] = {false, false, false, false};
     std::vector<rgb::SurfacePoint> addresses;
+    std::vector<ObjStateLine> tag_records;  // version 4
     FaceLabelSectionReader face_labels(file);
     bool ended = false;
     for (const ObjStateLine& line : lines.subspan(1)) {
@@ -146,14 +234,29 @@ std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const
             if (seen[s]) r.fail("section '" + std::string(name) + "' appears twice");
             seen[s] = true;
             // Counts are bounded by what the lines can hold, so a forged count cannot exhaust memory.
-            expected[s] = r.number<std::size_t>(kPerLine * lines.size());
+            expected[s] = r.number<std::size_t>(kPerLine * lines.size() + std::max(body_vertices, body_faces));
             r.expect_end();
+            if (section == Section::BaseVertices) state.base_positions.reserve(expected[s]);
+            if (section == Section::BaseFaces) state.base_triangles.reserve(expected[s]);
+            if (section == Section::Addresses) addresses.reserve(expected[s]);
         } else if (kind == "p") {
             if (section != Section::BaseVertices) r.fail("a base vertex outside its section");
             glm::dvec3 p;
             for (int i = 0; i < 3; ++i) p[i] = r.number<double>();
             r.expect_end();
             state.base_positions.push_back(p);
+        } else if (kind == "p-as-v") {
+            if (section != Section::BaseVertices) r.fail("base vertices outside their section");
+            const std::size_t count = r.number<std::size_t>(body_vertices);
+            r.expect_end();
+            saved.vertices_as_v.push_back({state.base_positions.size(), count, 0});
+            state.base_positions.resize(std::min(state.base_positions.size() + count, body_vertices + 1));
+        } else if (kind == "t-as-f") {
+            if (section != Section::BaseFaces) r.fail("base faces outside their section");
+            const std::size_t first = r.number<std::size_t>(body_faces), count = r.number<std::size_t>(body_faces);
+            r.expect_end();
+            saved.faces_as_f.push_back({state.base_triangles.size(), count, first});
+            state.base_triangles.resize(std::min(state.base_triangles.size() + count, body_faces + 1));
         } else if (kind == "t") {
             if (section != Section::BaseFaces) r.fail("base faces outside their section");
             while (!r.at_end()) {
@@ -174,6 +277,8 @@ std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const
                 p.a[0] = static_cast<std::uint32_t>(total - p.a[1] - p.a[2]);
                 addresses.push_back(p);
             }
+        } else if (version == kTaggedStateFormatVersion && is_state_tag_record(kind)) {
+            tag_records.push_back(line);
         } else if (kind == "end") {
             r.expect_end();
             ended = true;
@@ -189,19 +294,48 @@ std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const
         if (!seen[s] || got[s] != expected[s])
             last.fail(std::string("section '") + names[s] + "' " + (seen[s] ? "announces " + std::to_string(expected[s]) +
                       " entries but holds " + std::to_string(got[s]) : std::string("is missing")));
-    // A base vertex's address is its corner of a base face that uses it.
+    for (const rgb::Triangle& t : state.base_triangles)
+        for (std::uint32_t v : t)
+            if (v >= state.base_positions.size()) last.fail("a base face uses a missing base vertex");
+    // The base vertices' addresses follow once every base face is known (take_from_body).
+    state.vertices.reserve(state.base_positions.size() + addresses.size());
     state.vertices.assign(state.base_positions.size(), rgb::SurfacePoint{});
-    std::vector<bool> placed(state.base_positions.size(), false);
+    state.vertices.insert(state.vertices.end(), addresses.begin(), addresses.end());
+    state.sharp_features = parse_state_tag_records(tag_records, file);
+    saved.labels = face_labels.finish(state.base_triangles.size(), lines.back());
+    return saved;
+}
+
+std::optional<std::string> take_from_body(SavedState& saved, std::span<const glm::dvec3> positions, const ObjPolygons& polygons) {
+    rgb::MeshState& state = saved.mesh;
+    for (const SavedState::Run& run : saved.vertices_as_v) {
+        if (run.first_base + run.count > positions.size())
+            return "it takes base vertices from v lines " + std::to_string(run.first_base + 1) + " to " +
+                   std::to_string(run.first_base + run.count) + ", and the file has " + std::to_string(positions.size());
+        std::copy_n(positions.begin() + static_cast<std::ptrdiff_t>(run.first_base), run.count,
+                    state.base_positions.begin() + static_cast<std::ptrdiff_t>(run.first_base));
+    }
+    const std::size_t n0 = state.base_positions.size();
+    for (const SavedState::Run& run : saved.faces_as_f) {
+        if (run.first_face + run.count > polygons.size())
+            return "it takes base faces from f lines " + std::to_string(run.first_face + 1) + " to " +
+                   std::to_string(run.first_face + run.count) + ", and the file has " + std::to_string(polygons.size());
+        for (std::size_t k = 0; k < run.count; ++k) {
+            const ObjPolygon face = polygons[run.first_face + k];
+            if (face.vertices.size() != 3 || std::any_of(face.vertices.begin(), face.vertices.end(), [&](std::uint32_t v) { return v >= n0; }))
+                return "the face on line " + std::to_string(face.line) + " is not the base face the state takes it for";
+            std::copy(face.vertices.begin(), face.vertices.end(), state.base_triangles[run.first_base + k].begin());
+        }
+    }
+    // A base vertex's address is its corner of a base face that uses it.
+    std::vector<bool> placed(n0, false);
     for (std::uint32_t f = 0; f < state.base_triangles.size(); ++f)
         for (int c = 0; c < 3; ++c) {
             const std::uint32_t v = state.base_triangles[f][c];
-            if (v >= placed.size()) last.fail("a base face uses a missing base vertex");
             if (!placed[v]) state.vertices[v] = rgb::corner_point(f, c);
             placed[v] = true;
         }
-    state.vertices.insert(state.vertices.end(), addresses.begin(), addresses.end());
-    saved.labels = face_labels.finish(state.base_triangles.size(), lines.back());
-    return saved;
+    return std::nullopt;
 }
 
 }  // namespace rgbio

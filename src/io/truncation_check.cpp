@@ -34,6 +34,8 @@ BodyCounts count_body(std::string_view text) {
     return counts;
 }
 
+bool ends_mid_line(std::string_view text) { return !text.ends_with('\n') && !text.ends_with('\r'); }
+
 ObjError truncated(const SavedFileHeader& header, std::size_t vertices, std::size_t faces, std::size_t line,
                    const std::string& file, const std::string& detail) {
     return ObjError(ObjProblem::Truncated, file, line,
@@ -59,7 +61,7 @@ void check_saved_file_complete(const SavedFileHeader& header, const ObjRecords& 
     const std::size_t vertices = records.positions.size(), faces = records.polygons.size();
     // The state's end line marks a complete file; without state, the newline after the last face.
     const bool state_cut = (header.state && records.state.empty()) || (!records.state.empty() && records.state.back().text != "end");
-    const bool last_line_cut = records.state.empty() && !text.ends_with('\n') && !text.ends_with('\r');
+    const bool last_line_cut = records.state.empty() && ends_mid_line(text);
     if (vertices >= header.vertices && faces >= header.triangles && !state_cut && !last_line_cut) return;
     throw truncated(header, vertices, faces, count_body(text).last_line, file,
                     state_cut       ? "; its adaptive state (#rgb lines) is missing or stops before its end line"
@@ -67,13 +69,21 @@ void check_saved_file_complete(const SavedFileHeader& header, const ObjRecords& 
                                     : "");
 }
 
+TextEnd text_end(const ObjRecords& records, std::string_view text) {
+    return {records.v_line_starts, records.f_line_starts, records.last_line, ends_mid_line(text)};
+}
+
 ObjError truncation_or(const ObjError& error, const SavedFileHeader& header, std::string_view text, const std::string& file) {
     if (error.problem() == ObjProblem::Unreadable) return error;
     const BodyCounts counts = count_body(text);
-    const bool cut_mid_line = !text.ends_with('\n') && !text.ends_with('\r');
-    if (!cut_mid_line && counts.vertices >= header.vertices && counts.faces >= header.triangles) return error;
-    return truncated(header, counts.vertices, counts.faces, counts.last_line, file,
-                     std::string(cut_mid_line ? ", and its last line stops without a newline" : "") +
+    return truncation_or(error, header, TextEnd{counts.vertices, counts.faces, counts.last_line, ends_mid_line(text)}, file);
+}
+
+ObjError truncation_or(const ObjError& error, const SavedFileHeader& header, const TextEnd& end, const std::string& file) {
+    if (error.problem() == ObjProblem::Unreadable) return error;
+    if (!end.cut_mid_line && end.v_lines >= header.vertices && end.f_lines >= header.triangles) return error;
+    return truncated(header, end.v_lines, end.f_lines, end.last_line, file,
+                     std::string(end.cut_mid_line ? ", and its last line stops without a newline" : "") +
                          "; reading it stopped" + (error.line() ? " at line " + std::to_string(error.line()) : std::string()) + ": " +
                          error.reason());
 }

@@ -30,9 +30,20 @@ std::optional<SavedFileHeader> read_saved_file_header(std::string_view text);
 void check_saved_file_complete(const SavedFileHeader& header, const ObjRecords& records, std::string_view text,
                                const std::string& file);
 
+// What truncation_or needs to know of a text: how many lines start "v " and "f ", the number of its
+// last line, and whether it ends without a line break.
+struct TextEnd {
+    std::size_t v_lines = 0, f_lines = 0, last_line = 0;
+    bool cut_mid_line = false;
+};
+// The same for records parsed from `text` (which counted its lines on the way).
+TextEnd text_end(const ObjRecords& records, std::string_view text);
+
 // For an error found while reading a file with the header: ObjError(Truncated) (naming the
 // original reason) when the text ends without a newline or holds fewer v/f lines than announced;
 // otherwise the error itself.
 ObjError truncation_or(const ObjError& error, const SavedFileHeader& header, std::string_view text, const std::string& file);
+// The same, once the text is gone (a loaded saved file's text is released before its mesh is built).
+ObjError truncation_or(const ObjError& error, const SavedFileHeader& header, const TextEnd& end, const std::string& file);
 
 }  // namespace rgbio

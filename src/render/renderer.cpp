@@ -12,6 +12,7 @@
 #include "render/level_legend.h"
 #include "render/mesh_changes.h"
 #include "render/shader_program.h"
+#include "render/sharp_edge_lines.h"
 #include "render/surface_buffer.h"
 #include "rgb/mesh.h"
 
@@ -22,6 +23,7 @@ constexpr glm::vec3 kPlainColour{0.78f, 0.78f, 0.76f};
 constexpr glm::vec3 kWireColour{0.12f, 0.12f, 0.12f};
 constexpr glm::vec3 kBackColour{0.62f, 0.36f, 0.32f};
 constexpr glm::vec3 kBaseMeshColour{0.1f, 0.1f, 0.1f};
+constexpr glm::vec3 kSharpEdgeColour{0.85f, 0.05f, 0.55f};
 constexpr glm::vec3 kLegendTextColour{0.1f, 0.1f, 0.1f};
 constexpr float kBrushWidthPx = 2.0f;
 constexpr float kOverlayDepthBias = 1e-3f;
@@ -65,6 +67,7 @@ struct Renderer::State {
     ShaderProgram overlay_program{"overlay.vert", "overlay.frag"};
     SurfaceBuffer surface;
     SimpleVertices base_lines;
+    SimpleVertices sharp_lines;  // follows the surface: rebuilt whenever it changes
     SimpleVertices overlay;
     SurfaceGeometry geometry;
     rgb::Mesh* mesh = nullptr;
@@ -85,6 +88,7 @@ struct Renderer::State {
 
 Renderer::Renderer() : state_(std::make_unique<State>()) {
     state_->base_lines.attribute(0, 3, sizeof(glm::vec3), 0);
+    state_->sharp_lines.attribute(0, 3, sizeof(glm::vec3), 0);
     state_->overlay.attribute(0, 2, sizeof(OverlayVertex), offsetof(OverlayVertex, pixel));
     state_->overlay.attribute(1, 3, sizeof(OverlayVertex), offsetof(OverlayVertex, colour));
 }
@@ -107,6 +111,7 @@ void Renderer::detach() {
     state_->geometry = SurfaceGeometry(state_->geometry.source());
     state_->surface.upload_all({});
     state_->base_lines.upload(std::vector<glm::vec3>{});
+    state_->sharp_lines.upload(std::vector<glm::vec3>{});
 }
 
 void Renderer::show(const rgb::Mesh& mesh, const SurfaceGeometry& geometry, std::span<const SlotRange> changed, bool rebuilt) {
@@ -133,6 +138,7 @@ void Renderer::sync() {
     s.changes->clear();
     s.surface.upload(s.geometry.vertices(), s.geometry.appearance_vertices(), ranges);
     s.count_upload(before, ranges.size());
+    s.sharp_lines.upload(sharp_edge_lines(*s.mesh, s.geometry));
 }
 
 void Renderer::reupload_all() {
@@ -143,6 +149,7 @@ void Renderer::reupload_all() {
     s.geometry.rebuild(*s.mesh);
     s.surface.upload_all(s.geometry.vertices(), s.geometry.appearance_vertices());
     s.count_upload(before, 1);
+    s.sharp_lines.upload(sharp_edge_lines(*s.mesh, s.geometry));
 }
 
 void Renderer::set_positions(PositionSource source) {
@@ -207,13 +214,15 @@ void Renderer::draw(const OrbitCamera& camera, const RenderOptions& options, glm
     }
     s.surface.draw();
 
-    if (options.base_mesh_overlay) {
+    const auto draw_lines = [&](const SimpleVertices& lines, const glm::vec3& colour) {
         s.lines_program.use();
         s.lines_program.set("u_view_projection", view_projection);
         s.lines_program.set("u_depth_bias", kOverlayDepthBias);
-        s.lines_program.set("u_colour", kBaseMeshColour);
-        s.base_lines.draw(GL_LINES);
-    }
+        s.lines_program.set("u_colour", colour);
+        lines.draw(GL_LINES);
+    };
+    if (options.base_mesh_overlay) draw_lines(s.base_lines, kBaseMeshColour);
+    if (options.sharp_edges) draw_lines(s.sharp_lines, kSharpEdgeColour);
 
     if (options.colouring == Colouring::Level && options.level_legend) {
         glDisable(GL_DEPTH_TEST);

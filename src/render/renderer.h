@@ -42,6 +42,7 @@ struct RenderOptions {
     float wire_width_px = 1.0f;
     PositionSource positions = PositionSource::Displayed;
     bool base_mesh_overlay = false;
+    bool sharp_edges = true;  // edges along tagged base edges as coloured lines (when there are any)
     bool level_legend = true;  // shown with Colouring::Level
     float bottom_inset_px = 0.0f;  // a strip at the bottom that overlays (the legend) keep clear of
     std::optional<BrushCursor> brush;

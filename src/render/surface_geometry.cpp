@@ -7,6 +7,7 @@
 #include "render/mesh_changes.h"
 #include "rgb/loop_geometry.h"
 #include "rgb/mesh.h"
+#include "rgb/vertex_rules.h"
 
 namespace render {
 namespace {
@@ -36,6 +37,24 @@ std::vector<SlotRange> coalesce(const std::vector<rgb::FaceId>& sorted_faces) {
             ranges.push_back({f.idx, 1});
     }
     return ranges;
+}
+
+// Twice the area times the unit normal, from the shown positions.
+glm::dvec3 area_normal(const rgb::Mesh& mesh, const std::vector<glm::vec3>& positions, rgb::FaceId f) {
+    const auto& c = mesh.face_vertices(f);
+    const glm::dvec3 p0 = positions[c[0].idx];
+    return glm::cross(glm::dvec3(positions[c[1].idx]) - p0, glm::dvec3(positions[c[2].idx]) - p0);
+}
+
+glm::vec3 unit_or_up(const glm::dvec3& sum) {
+    const double length = glm::length(sum);
+    return length > 0.0 ? glm::vec3(sum / length) : glm::vec3(0.0f, 0.0f, 1.0f);
+}
+
+// Whether the interior edge of h lies on an infinitely sharp base edge: the surface folds there.
+bool creased(const rgb::Mesh& mesh, rgb::HalfedgeId h) {
+    const auto on = rgb::base_edge_between(mesh.base(), mesh.address(mesh.from_vertex(h)), mesh.address(mesh.to_vertex(h)));
+    return on && mesh.base().edge_sharpness(*on) >= rgb::kInfiniteSharpness;
 }
 
 std::uint32_t face_code(const rgb::Mesh& mesh, rgb::FaceId f) {
@@ -78,13 +97,29 @@ void SurfaceGeometry::update_position(const rgb::Mesh& mesh, rgb::VertexId v) {
 // meshes far from unit size (1e10: overflow, 1e-20: underflow).
 void SurfaceGeometry::update_normal(const rgb::Mesh& mesh, rgb::VertexId v) {
     glm::dvec3 sum(0.0);
-    for_each_face_around(mesh, v, [&](rgb::FaceId f) {
-        const auto& c = mesh.face_vertices(f);
-        const glm::dvec3 p0 = positions_[c[0].idx];
-        sum += glm::cross(glm::dvec3(positions_[c[1].idx]) - p0, glm::dvec3(positions_[c[2].idx]) - p0);
-    });
-    const double length = glm::length(sum);
-    normals_[v.idx] = length > 0.0 ? glm::vec3(sum / length) : glm::vec3(0.0f, 0.0f, 1.0f);
+    for_each_face_around(mesh, v, [&](rgb::FaceId f) { sum += area_normal(mesh, positions_, f); });
+    normals_[v.idx] = unit_or_up(sum);
+}
+
+glm::vec3 SurfaceGeometry::corner_normal(const rgb::Mesh& mesh, rgb::FaceId f, int i) const {
+    const rgb::VertexId v = mesh.face_vertices(f)[i];
+    // Only a base vertex or a vertex on a base edge can lie on a crease.
+    if (mesh.base().sharp_features().edges.empty() || !rgb::on_base_edge_or_vertex(mesh.address(v))) return normals_[v.idx];
+    const rgb::HalfedgeId start = rgb::Mesh::halfedge(f, i);  // leaves v
+    glm::dvec3 sum = area_normal(mesh, positions_, f);
+    // Counter-clockwise across v's edge in the previous face's slot, clockwise across start's edge.
+    for (rgb::HalfedgeId h = start; !creased(mesh, rgb::Mesh::prev(h));) {
+        h = mesh.ccw_rotated(h);
+        if (!h.valid()) break;
+        if (h == start) return normals_[v.idx];  // all the way round: no crease through v
+        sum += area_normal(mesh, positions_, rgb::Mesh::face(h));
+    }
+    for (rgb::HalfedgeId h = start; !creased(mesh, h);) {
+        h = mesh.cw_rotated(h);
+        if (!h.valid()) break;
+        sum += area_normal(mesh, positions_, rgb::Mesh::face(h));
+    }
+    return unit_or_up(sum);
 }
 
 void SurfaceGeometry::count(std::uint32_t code, int delta) {
@@ -104,7 +139,7 @@ void SurfaceGeometry::write_slot(const rgb::Mesh& mesh, rgb::FaceId f) {
     }
     const std::uint32_t code = face_code(mesh, f);
     const auto& corners = mesh.face_vertices(f);
-    for (int i = 0; i < 3; ++i) slot[i] = {positions_[corners[i].idx], normals_[corners[i].idx], code};
+    for (int i = 0; i < 3; ++i) slot[i] = {positions_[corners[i].idx], corner_normal(mesh, f, i), code};
     if (look) std::ranges::copy(appearance_of_face(mesh, *appearance_, f), look);
     count(code, +1);
 }

@@ -3,8 +3,9 @@
 // carrying position, normal and a code (colour, face level, liveness), so a face change is a
 // three-vertex range and the GPU buffer mirrors the core's slot arrays; dead slots are degenerate
 // triangles that rasterise to nothing. Smooth normals are area-weighted averages of the incident
-// face normals, so moving a vertex dirties the faces around its one-ring. With a SurfaceAppearance,
-// a second array beside it holds each corner's colours and texture coordinate, slot for slot.
+// face normals (split along infinitely sharp creases), so moving a vertex dirties the faces around
+// its one-ring. With a SurfaceAppearance, a second array beside it holds each corner's colours and
+// texture coordinate, slot for slot.
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -81,6 +82,8 @@ public:
     // Live triangles of each colour and the highest face level present.
     std::size_t triangles_of(rgb::Colour colour) const { return colour_counts_[static_cast<int>(colour)]; }
     int max_face_level() const;
+    // The position shown for vertex slot v (live).
+    const glm::vec3& position(rgb::VertexId v) const { return positions_[v.idx]; }
     // The positions of the live vertices, and their bounding sphere.
     std::vector<glm::vec3> live_positions(const rgb::Mesh& mesh) const;
     BoundingSphere bounds(const rgb::Mesh& mesh) const { return bounding_sphere(live_positions(mesh)); }
@@ -89,6 +92,9 @@ private:
     void resize(const rgb::Mesh& mesh);
     void update_position(const rgb::Mesh& mesh, rgb::VertexId v);
     void update_normal(const rgb::Mesh& mesh, rgb::VertexId v);
+    // Corner i of f's normal: its vertex's, except at an infinitely sharp crease (rgb/sharp_features.h),
+    // where only the faces on f's side of the creases count, so that the shading breaks along it.
+    glm::vec3 corner_normal(const rgb::Mesh& mesh, rgb::FaceId f, int i) const;
     void write_slot(const rgb::Mesh& mesh, rgb::FaceId f);
     void count(std::uint32_t code, int delta);
 

@@ -1,6 +1,7 @@
 #include "rgb/base_mesh.h"
 
 #include <algorithm>
+#include <atomic>
 #include <stdexcept>
 #include <string>
 
@@ -22,10 +23,13 @@ struct Directed {
     bool operator<(const Directed& o) const { return key < o.key; }
 };
 
+std::atomic<std::uint64_t> next_serial{1};
+
 }  // namespace
 
-BaseMesh::BaseMesh(std::span<const glm::dvec3> positions, std::span<const Triangle> triangles)
-    : positions_(positions.begin(), positions.end()), faces_(triangles.begin(), triangles.end()) {
+BaseMesh::BaseMesh(std::span<const glm::dvec3> positions, std::span<const Triangle> triangles,
+                   const SharpFeatures& features)
+    : serial_(next_serial++), positions_(positions.begin(), positions.end()), faces_(triangles.begin(), triangles.end()) {
     const auto nv = static_cast<std::uint32_t>(positions_.size());
     if (positions_.size() >= kNone || 3 * faces_.size() >= kNone) reject("the mesh is too large");
     std::vector<Directed> directed;
@@ -85,6 +89,79 @@ BaseMesh::BaseMesh(std::span<const glm::dvec3> positions, std::span<const Triang
     }
     for (std::uint32_t h = 0; h < opposite_.size(); ++h)
         longest_edge_ = std::max(longest_edge_, glm::distance(positions_[faces_[h / 3][h % 3]], positions_[to_vertex(h)]));
+    set_sharp_features(features);
+}
+
+std::uint32_t BaseMesh::find_edge(std::uint32_t a, std::uint32_t b) const {
+    for (const auto& [from, to] : {std::pair{a, b}, std::pair{b, a}}) {
+        std::uint32_t h = vertex_halfedge_[from];
+        do {
+            if (to_vertex(h) == to) return h;
+            h = ccw_rotated(h);
+        } while (h != kNone && h != vertex_halfedge_[from]);
+    }
+    return kNone;
+}
+
+void BaseMesh::set_sharp_features(const SharpFeatures& features) {
+    const auto nv = static_cast<std::uint32_t>(positions_.size());
+    auto checked_sharpness = [](int s, const std::string& what) {
+        if (s < 0) reject(what + " has negative sharpness " + std::to_string(s));
+        return std::min(s, kInfiniteSharpness);
+    };
+    // Later tags replace earlier ones: (key, sharpness) in input order, stably sorted by key.
+    std::vector<std::pair<std::uint64_t, int>> edges;
+    for (const EdgeSharpness& e : features.edges) {
+        const std::string name = "crease " + edge_name(e.a, e.b);
+        if (e.a >= nv || e.b >= nv) reject(name + " uses a missing vertex");
+        if (find_edge(e.a, e.b) == kNone) reject(name + " is not an edge of the mesh");
+        edges.push_back({(std::uint64_t(std::min(e.a, e.b)) << 32) | std::max(e.a, e.b), checked_sharpness(e.sharpness, name)});
+    }
+    std::vector<std::pair<std::uint64_t, int>> corners;
+    for (const VertexSharpness& c : features.corners) {
+        const std::string name = "corner " + std::to_string(c.vertex);
+        if (c.vertex >= nv) reject(name + " is a missing vertex");
+        corners.push_back({c.vertex, checked_sharpness(c.sharpness, name)});
+    }
+    auto last_of_each = [](std::vector<std::pair<std::uint64_t, int>>& tags) {
+        std::stable_sort(tags.begin(), tags.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+        std::vector<std::pair<std::uint64_t, int>> kept;
+        for (std::size_t i = 0; i < tags.size(); ++i)
+            if ((i + 1 == tags.size() || tags[i + 1].first != tags[i].first) && tags[i].second > 0) kept.push_back(tags[i]);
+        tags = std::move(kept);
+    };
+    last_of_each(edges);
+    last_of_each(corners);
+    features_.boundary = features.boundary;
+    for (const auto& [key, s] : edges) features_.edges.push_back({std::uint32_t(key >> 32), std::uint32_t(key), s});
+    for (const auto& [key, s] : corners) features_.corners.push_back({std::uint32_t(key), s});
+
+    std::vector<std::uint8_t> edge_sharpness(opposite_.size(), 0), corner_sharpness(nv, 0), sharp_rules(nv, 0);
+    bool any = false;
+    for (std::uint32_t h = 0; h < opposite_.size(); ++h)
+        if (opposite_[h] == kNone) edge_sharpness[h] = kInfiniteSharpness;
+    for (const EdgeSharpness& e : features_.edges) {
+        const std::uint32_t h = find_edge(e.a, e.b);
+        if (opposite_[h] == kNone) continue;  // boundary edges are infinitely sharp anyway
+        edge_sharpness[h] = edge_sharpness[opposite_[h]] = static_cast<std::uint8_t>(e.sharpness);
+        sharp_rules[e.a] = sharp_rules[e.b] = 1;
+        any = true;
+    }
+    for (const VertexSharpness& c : features_.corners) corner_sharpness[c.vertex] = static_cast<std::uint8_t>(c.sharpness);
+    if (features_.boundary == BoundaryInterpolation::EdgeAndCorner)
+        for (std::uint32_t v = 0; v < nv; ++v)
+            if (boundary_[v] && valence_[v] == 2) corner_sharpness[v] = kInfiniteSharpness;
+    for (std::uint32_t v = 0; v < nv; ++v)
+        if (corner_sharpness[v] > 0) sharp_rules[v] = 1, any = true;
+    if (!any) return;  // untagged Loop everywhere: keep the fast answers of the accessors
+    edge_sharpness_ = std::move(edge_sharpness);
+    corner_sharpness_ = std::move(corner_sharpness);
+    sharp_rules_.assign(nv, 0);
+    for (std::uint32_t v = 0; v < nv; ++v) {
+        if (!sharp_rules[v]) continue;
+        sharp_regimes_.push_back(base_vertex_regimes(*this, v));
+        sharp_rules_[v] = static_cast<std::uint32_t>(sharp_regimes_.size());
+    }
 }
 
 BaseMesh::~BaseMesh() = default;
@@ -111,7 +188,10 @@ std::vector<std::uint32_t> BaseMesh::ring(std::uint32_t v) const {
 
 std::size_t BaseMesh::memory_bytes() const {
     return positions_.size() * sizeof(glm::dvec3) + faces_.size() * sizeof(Triangle) +
-           (opposite_.size() + vertex_halfedge_.size() + valence_.size()) * sizeof(std::uint32_t) + boundary_.size();
+           (opposite_.size() + vertex_halfedge_.size() + valence_.size()) * sizeof(std::uint32_t) + boundary_.size() +
+           edge_sharpness_.size() + corner_sharpness_.size() + sharp_rules_.size() * sizeof(std::uint32_t) +
+           sharp_regimes_.size() * sizeof(Regimes) +
+           features_.edges.size() * sizeof(EdgeSharpness) + features_.corners.size() * sizeof(VertexSharpness);
 }
 
 }  // namespace rgb

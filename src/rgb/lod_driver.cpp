@@ -122,7 +122,7 @@ void LodDriver::start_refining() {
 
 void LodDriver::push(const Candidate& c) {
     const std::size_t band = c.key >> 48;
-    if (exact_ && band == band_)
+    if (band_sorted_ && band == band_)
         queue_.push(c);
     else
         bands_[band].push_back(c);
@@ -178,65 +178,44 @@ void LodDriver::undo(const std::vector<VertexId>& vertices) {
         if (mesh_.is_live(*it)) remove_with_dependents(mesh_, *it);
 }
 
-void LodDriver::work_off_exactly(std::vector<Candidate>& band) {
-    exact_ = true;
-    queue_ = decltype(queue_)(Lower{this}, std::move(band));
-    band.clear();
-    band_next_ = 0;
-}
-
-bool LodDriver::split_next() {
+// The highest candidate left: the next of the current band's sorted list or of the band's heap of
+// newcomers, moving down to the next band when both are empty.
+std::optional<LodDriver::Candidate> LodDriver::next_candidate() {
     for (;;) {
-        if (exact_) {
-            while (!queue_.empty()) {
-                const Candidate top = queue_.top();
-                queue_.pop();
-                if (!split(top)) continue;
-                if (mesh_.num_faces() > settings_.max_triangles) {
-                    undo(added_vertices_);
-                    report_.budget_bound = true;
-                    return false;
-                }
-                ++steps_;
-                return true;
-            }
-            exact_ = false;  // the whole band fit
-        } else {
-            std::vector<Candidate>& band = bands_[band_];
-            if (band_next_ == 0) {
-                band_start_size_ = band.size();
-                band_vertices_.clear();
-                band_steps_ = 0;
-                // Every split adds at least one triangle (two inside the surface).
-                if (mesh_.num_faces() + band.size() > settings_.max_triangles) {
-                    work_off_exactly(band);
-                    continue;
-                }
-            }
-            while (band_next_ < band.size()) {
-                const Candidate c = band[band_next_++];  // a copy: splits may append to the band
-                if (!split(c)) continue;
-                band_vertices_.insert(band_vertices_.end(), added_vertices_.begin(), added_vertices_.end());
-                if (mesh_.num_faces() > settings_.max_triangles) {
-                    undo(band_vertices_);
-                    steps_ -= band_steps_;
-                    band.resize(band_start_size_);
-                    work_off_exactly(band);
-                    break;
-                }
-                ++band_steps_;
-                ++steps_;
-                return true;
-            }
-            if (exact_) continue;
-            std::vector<Candidate>().swap(band);
-            band_next_ = 0;
+        std::vector<Candidate>& band = bands_[band_];
+        if (!band_sorted_) {
+            std::sort(band.begin(), band.end(), [this](const Candidate& x, const Candidate& y) { return outranks(x, y); });
+            band_sorted_ = true;
         }
+        const bool listed = band_next_ < band.size();
+        if (!queue_.empty() && (!listed || outranks(queue_.top(), band[band_next_]))) {
+            const Candidate top = queue_.top();
+            queue_.pop();
+            return top;
+        }
+        if (listed) return band[band_next_++];
+        std::vector<Candidate>().swap(band);
+        band_next_ = 0;
+        band_sorted_ = false;
         do {
-            if (band_ == 0) return false;
+            if (band_ == 0) return std::nullopt;
             --band_;
         } while (bands_[band_].empty());
     }
+}
+
+bool LodDriver::split_next() {
+    while (const std::optional<Candidate> c = next_candidate()) {
+        if (!split(*c)) continue;
+        if (mesh_.num_faces() > settings_.max_triangles) {
+            undo(added_vertices_);
+            report_.budget_bound = true;
+            return false;
+        }
+        ++steps_;
+        return true;
+    }
+    return false;
 }
 
 std::size_t LodDriver::pending() const {

@@ -15,6 +15,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <queue>
 #include <vector>
 
@@ -87,7 +88,7 @@ private:
     void start_refining();
     bool split(const Candidate& c);
     void undo(const std::vector<VertexId>& vertices);
-    void work_off_exactly(std::vector<Candidate>& band);
+    std::optional<Candidate> next_candidate();
     bool split_next();
 
     Mesh& mesh_;
@@ -98,15 +99,13 @@ private:
     // Base-space positions by midpoint recursion from the base (a canonical value, cheaper than
     // evaluating each vertex's address), for Morton codes and ties.
     std::vector<glm::dvec3> base_space_;
-    // Candidates by band (the key's top 16 bits). A whole band gives the same mesh in any order, so
-    // bands are worked off as lists, and only the band the budget ends in goes through a heap in key
-    // order: started that way when the band clearly cannot fit, or redone that way from the band's
-    // start when it turns out not to.
+    // Candidates by band (the key's top 16 bits), worked off band by band in key order: a band's list
+    // is sorted once when its turn comes (sequential, cheap), and the few candidates a split adds to
+    // the band being worked off wait in a small heap merged with that list. So every split comes in
+    // the canonical order and a budget stops at exactly the right one, without a heap over everything.
     std::vector<std::vector<Candidate>> bands_;
-    std::size_t band_ = 0, band_next_ = 0, band_start_size_ = 0;
-    std::vector<VertexId> band_vertices_;
-    std::size_t band_steps_ = 0;
-    bool exact_ = false;
+    std::size_t band_ = 0, band_next_ = 0;
+    bool band_sorted_ = false;
     std::priority_queue<Candidate, std::vector<Candidate>, Lower> queue_;
     const Candidate* splitting_ = nullptr;
     std::vector<FaceId> added_faces_;

@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <array>
+#include <memory>
 #include <vector>
 
 #include "rgb/hierarchy_evaluator.h"
 #include "rgb/loop_rules.h"
 #include "rgb/mesh.h"
 #include "rgb/navigation.h"
+#include "rgb/vertex_rules.h"
 
 namespace rgb {
 
@@ -26,12 +28,48 @@ std::optional<glm::dvec3> limit_from_ring(const Mesh& mesh, VertexId v) {
     return interior_limit(centre, points);
 }
 
+// One evaluator per thread and base mesh, kept between calls: neighbouring vertices share most of
+// the hierarchy values they need. Its values are only a cache, so it starts afresh when it grows large.
+HierarchyEvaluator& shared_evaluator(const BaseMesh& base) {
+    constexpr std::size_t kMaxValues = std::size_t(1) << 18;
+    thread_local std::unique_ptr<HierarchyEvaluator> evaluator;
+    thread_local std::uint64_t serial = 0;
+    if (!evaluator || serial != base.serial() || evaluator->cached_values() > kMaxValues) {
+        evaluator = std::make_unique<HierarchyEvaluator>(base);
+        serial = base.serial();
+    }
+    return *evaluator;
+}
+
+// Whether the base mesh's tags change v's rules (vertex_rules.h). Such a vertex takes its values
+// from the hierarchy evaluator, so that they do not depend on what the mesh holds around it.
+bool tagged(const Mesh& mesh, VertexId v) {
+    return mesh.base().has_sharp_features() && !follows_untagged_rules(mesh.base(), mesh.address(v));
+}
+
+// p^k(v) for k > level(v), the limit given by `limit` (cached or not).
+template <class Limit>
+glm::dvec3 later_control_point(const Mesh& mesh, VertexId v, int k, Limit&& limit) {
+    const int l = mesh.level(v);
+    if (!tagged(mesh, v))
+        return closed_form(mesh.insertion_position(v), limit(), loop_gamma(mesh.uniform_valence(v), mesh.is_boundary(v)), k - l);
+    // One rule with a two-term closed form (a crease or corner for ever): spec §4.2's form with the
+    // rule's eigenvalue, from the cached limit. Otherwise the closed forms of several regimes or a
+    // dart's mask: the evaluator's, which computes the same bits for the single-rule case.
+    const Regimes regimes = vertex_regimes(mesh.base(), mesh.address(v));
+    const VertexRule rule = regimes[0].rule;
+    if (regimes.size() == 1 && (rule == VertexRule::Crease || rule == VertexRule::Corner))
+        return closed_form(mesh.insertion_position(v), limit(), rule == VertexRule::Crease ? loop_gamma(0, true) : 0.0, k - l);
+    return shared_evaluator(mesh.base()).control_point(mesh.address(v), k);
+}
+
 }  // namespace
 
 glm::dvec3 limit_position_uncached(const Mesh& mesh, VertexId v) {
     if (auto known = mesh.cached_limit(v)) return *known;
-    if (auto limit = limit_from_ring(mesh, v)) return *limit;
-    return HierarchyEvaluator(mesh.base()).limit_position(mesh.address(v));
+    if (!tagged(mesh, v))
+        if (auto limit = limit_from_ring(mesh, v)) return *limit;
+    return shared_evaluator(mesh.base()).limit_position(mesh.address(v));
 }
 
 glm::dvec3 limit_position(const Mesh& mesh, VertexId v) {
@@ -46,10 +84,8 @@ void limit_position_where_uniform(const Mesh& mesh, VertexId v) {
 }
 
 glm::dvec3 control_point(const Mesh& mesh, VertexId v, int k) {
-    const int l = mesh.level(v);
-    if (k <= l) return mesh.insertion_position(v);
-    return closed_form(mesh.insertion_position(v), limit_position(mesh, v),
-                       loop_gamma(mesh.uniform_valence(v), mesh.is_boundary(v)), k - l);
+    if (k <= mesh.level(v)) return mesh.insertion_position(v);
+    return later_control_point(mesh, v, k, [&] { return limit_position(mesh, v); });
 }
 
 int display_level(const Mesh& mesh, VertexId v) {
@@ -64,10 +100,9 @@ int display_level(const Mesh& mesh, VertexId v) {
 }
 
 glm::dvec3 displayed_position(const Mesh& mesh, VertexId v) {
-    const int k = display_level(mesh, v), l = mesh.level(v);
-    if (k <= l) return mesh.insertion_position(v);
-    return closed_form(mesh.insertion_position(v), limit_position_uncached(mesh, v),
-                       loop_gamma(mesh.uniform_valence(v), mesh.is_boundary(v)), k - l);
+    const int k = display_level(mesh, v);
+    if (k <= mesh.level(v)) return mesh.insertion_position(v);
+    return later_control_point(mesh, v, k, [&] { return limit_position_uncached(mesh, v); });
 }
 
 }  // namespace rgb

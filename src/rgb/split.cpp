@@ -1,4 +1,5 @@
 // Edge splits (spec §2.1, §2.2) and the Loop position of the inserted vertex (§4.4).
+#include <algorithm>
 #include <array>
 #include <stdexcept>
 
@@ -6,6 +7,7 @@
 #include "rgb/loop_rules.h"
 #include "rgb/mesh.h"
 #include "rgb/operators.h"
+#include "rgb/vertex_rules.h"
 
 namespace rgb {
 
@@ -42,6 +44,16 @@ VertexId stencil_opposite(const Mesh& mesh, HalfedgeId h) {
             if (mesh.level(mesh.from_vertex(mid)) > lvl && mesh.level(mesh.to_vertex(mid)) > lvl) break;
         h = mesh.opposite(mid);
     }
+}
+
+// Whether the interior edge (a, b) lies on a base edge still sharp at its level, so that the vertex
+// inserted on it is its midpoint (docs/loop-creases.md §3).
+bool on_sharp_edge(const Mesh& mesh, VertexId a, VertexId b) {
+    const BaseMesh& base = mesh.base();
+    if (!base.has_sharp_features()) return false;
+    const SurfacePoint pa = mesh.address(a), pb = mesh.address(b);
+    const auto on = base_edge_between(base, pa, pb);
+    return on && sharp_at_level(base.edge_sharpness(*on), std::max(pa.level, pb.level));
 }
 
 }  // namespace
@@ -94,8 +106,9 @@ VertexId split_edge(Mesh& mesh, HalfedgeId h) {
     const bool boundary = s.size() == 2;
     const glm::dvec3 pa = control_point(mesh, a, l), pb = control_point(mesh, b, l);
     const glm::dvec3 position =
-        boundary ? boundary_edge_point(pa, pb)
-                 : interior_edge_point(pa, pb, control_point(mesh, s[2], l), control_point(mesh, s[3], l));
+        boundary || on_sharp_edge(mesh, a, b)
+            ? boundary_edge_point(pa, pb)
+            : interior_edge_point(pa, pb, control_point(mesh, s[2], l), control_point(mesh, s[3], l));
 
     const auto sides = edge_sides(mesh, h);
     FaceList old_faces;

@@ -1,15 +1,19 @@
 #include "rgb/state.h"
 
 #include <algorithm>
+#include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
-#include <unordered_map>
 
+#include "rgb/address_index.h"
 #include "rgb/face_location.h"
+#include "rgb/hierarchy_evaluator.h"
+#include "rgb/hierarchy_positions.h"
 #include "rgb/invariants.h"
 #include "rgb/loop_geometry.h"
-#include "rgb/loop_rules.h"
 #include "rgb/mesh.h"
+#include "rgb/parallel.h"
 
 namespace rgb {
 
@@ -17,6 +21,7 @@ MeshState capture_state(const Mesh& mesh) {
     MeshState s;
     s.base_positions.assign(mesh.base().positions().begin(), mesh.base().positions().end());
     s.base_triangles.assign(mesh.base().faces().begin(), mesh.base().faces().end());
+    s.sharp_features = mesh.base().sharp_features();
     std::vector<std::uint32_t> index(mesh.vertex_capacity(), BaseMesh::kNone);
     s.vertices.reserve(mesh.num_vertices());
     for (VertexId v : mesh.vertices()) {
@@ -35,174 +40,268 @@ namespace {
 
 [[noreturn]] void fail(const std::string& what) { throw std::invalid_argument("invalid RGB state: " + what); }
 
-struct AddressKey {
-    std::uint32_t face, a0, a1;
-    int level;
-    friend bool operator==(const AddressKey&, const AddressKey&) = default;
-};
-struct AddressHash {
-    std::size_t operator()(const AddressKey& k) const noexcept {
-        return (std::size_t(k.face) * 0x9e3779b97f4a7c15ull) ^ (std::size_t(k.a0) << 21) ^ (std::size_t(k.a1) << 7) ^
-               std::size_t(k.level);
+// The address of vertex i if it is a valid one for its place in the state, else why not.
+std::optional<std::string> address_problem(const BaseMesh& base, std::uint32_t i, const SurfacePoint& p) {
+    const std::string name = "vertex " + std::to_string(i);
+    if (p.face >= base.num_faces() || p.level < 0 || p.level > kMaxLevel ||
+        std::uint64_t(p.a[0]) + p.a[1] + p.a[2] != (std::uint64_t(1) << p.level) || reduced(p) != p)
+        return name + " has an invalid address";
+    const bool base_slot = i < base.num_vertices();
+    if (base_slot != (p.level == 0) || (base_slot && base_vertex(base, p) != i))
+        return name + ": the base vertices come first, in base order, and only they have level 0";
+    return std::nullopt;
+}
+
+// Outgoing halfedges grouped by their start vertex, each group sorted by end vertex: an entry is
+// (end << 32) | halfedge. Matching a halfedge a->b with b->a is then a search in b's short group.
+struct OutgoingHalfedges {
+    std::vector<std::uint32_t> start;  // vertex v's entries are [start[v], start[v + 1])
+    std::vector<std::uint64_t> entries;
+
+    static std::uint32_t end_vertex(std::uint64_t e) { return static_cast<std::uint32_t>(e >> 32); }
+    static HalfedgeId halfedge(std::uint64_t e) { return HalfedgeId(static_cast<std::uint32_t>(e)); }
+    std::span<const std::uint64_t> of(std::uint32_t v) const {
+        return std::span<const std::uint64_t>(entries).subspan(start[v], start[v + 1] - start[v]);
     }
 };
 
+OutgoingHalfedges outgoing_halfedges(const std::vector<Triangle>& faces, std::size_t nv) {
+    OutgoingHalfedges out;
+    out.start.assign(nv + 1, 0);
+    for (const Triangle& t : faces)
+        for (std::uint32_t v : t) ++out.start[v + 1];
+    for (std::size_t v = 0; v < nv; ++v) out.start[v + 1] += out.start[v];
+    out.entries.resize(3 * faces.size());
+    std::vector<std::uint32_t> cursor(out.start.begin(), out.start.end() - 1);
+    for (std::uint32_t f = 0; f < faces.size(); ++f)
+        for (int c = 0; c < 3; ++c)
+            out.entries[cursor[faces[f][c]]++] = std::uint64_t(faces[f][(c + 1) % 3]) << 32 | Mesh::halfedge(FaceId(f), c).idx;
+    parallel_for(nv, 1 << 16, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t v = begin; v < end; ++v) std::sort(out.entries.begin() + out.start[v], out.entries.begin() + out.start[v + 1]);
+    });
+    return out;
+}
+
+// Spec §1.3: a green face of level l is a triangle of Σl; a red one has two corners of the triangle of
+// Σl it lies in and, as its top, the midpoint of the edge between them; a blue one has one corner.
+// The level is the finest corner's for a green face, one less otherwise. Nothing when the corners fit
+// no such place. The red edge of a red face runs from the top through the triangle's interior to its
+// far corner; that of a blue face joins the coarse corner and the midpoint of the opposite edge.
+std::optional<FaceType> type_from_corners(const Mesh& m, FaceId face) {
+    FaceCorners place;
+    try {
+        place = face_corners(m, face);
+    } catch (const std::logic_error&) {
+        return std::nullopt;
+    }
+    const int top = place.top;
+    // Whether the edge of Σ(k-1) through point q (numerators over 2^(l+1), of level k >= 1) ends at r.
+    auto on_parent_edge_end = [](const std::array<std::uint32_t, 3>& q, int shift, const std::array<std::uint32_t, 3>& r) {
+        // At its own level q has exactly one even numerator, opposite the edge's direction.
+        int e = 0;
+        for (int c = 0; c < 3; ++c)
+            if ((q[c] >> shift) % 2 == 0) e = c;
+        const int i = (e + 1) % 3, j = (e + 2) % 3;
+        // Both numerators along the edge are odd at q's level, so neither end goes below zero.
+        const std::uint32_t step = std::uint32_t(1) << shift;
+        std::array<std::uint32_t, 3> towards_i = q, towards_j = q;
+        towards_i[i] += step;
+        towards_i[j] -= step;
+        towards_j[i] -= step;
+        towards_j[j] += step;
+        return r == towards_i || r == towards_j;
+    };
+    for (int l : {top, top - 1}) {
+        if (l < 0) continue;
+        const CornerNumerators parent = parent_corners(place, l), corners = corners_at(place, l + 1);
+        int count = 0, off_corner = -1;
+        for (int c = 0; c < 3; ++c) {
+            const bool is_corner = std::find(parent.begin(), parent.end(), corners[c]) != parent.end();
+            count += is_corner;
+            if (!is_corner) off_corner = c;
+        }
+        const auto level = static_cast<std::uint8_t>(l);
+        if (l == top && count == 3) return FaceType{Colour::Green, level, 0};
+        if (l != top - 1) continue;
+        if (count == 2) {
+            // The top is the finest corner, at level l + 1.
+            const int next = (off_corner + 1) % 3;
+            const bool next_on_parent_edge = on_parent_edge_end(corners[off_corner], 0, corners[next]);
+            return FaceType{Colour::Red, level, static_cast<std::uint8_t>(next_on_parent_edge ? (off_corner + 2) % 3 : off_corner)};
+        }
+        if (count == 1) {
+            int low = 0;
+            for (int c = 0; c < 3; ++c)
+                if (m.level(m.face_vertices(face)[c]) <= l) low = c;
+            const int after = (low + 1) % 3;
+            const int after_level = m.level(m.face_vertices(face)[after]);
+            if (after_level == 0) return std::nullopt;  // a base vertex sits on no parent edge
+            const bool after_touches_low = on_parent_edge_end(corners[after], l + 1 - after_level, corners[low]);
+            return FaceType{Colour::Blue, level, static_cast<std::uint8_t>(after_touches_low ? (low + 2) % 3 : low)};
+        }
+    }
+    return std::nullopt;
+}
+
+// Vertices: addresses checked and made canonical (points), so that equal points compare equal. The
+// first problem in vertex order is reported, a bad address or a repeated one.
+AddressIndex checked_addresses(const BaseMesh& base, const std::vector<SurfacePoint>& vertices, std::vector<SurfacePoint>& points) {
+    const std::size_t nv = vertices.size();
+    std::optional<std::string> problem;
+    std::uint32_t checked = 0;
+    for (; checked < nv && !problem; ++checked) {
+        problem = address_problem(base, checked, vertices[checked]);
+        if (!problem) points[checked] = canonical(base, vertices[checked]);
+    }
+    if (problem) --checked;
+    AddressIndex index(std::span<const SurfacePoint>(points).first(checked), base.num_faces());
+    if (const auto repeat = index.first_repeat()) fail("vertex " + std::to_string(*repeat) + " repeats another vertex");
+    if (problem) fail(*problem);
+    return index;
+}
+
+// The faces checked, and their adjacency: each halfedge's opposite (3f+i: corner i of face f), and
+// the outgoing halfedges grouped by vertex for the vertices' own halfedges.
+OutgoingHalfedges matched_halfedges(const std::vector<Triangle>& faces, std::size_t nv, std::vector<HalfedgeId>& opposite) {
+    const std::size_t nf = faces.size();
+    for (std::uint32_t f = 0; f < nf; ++f)
+        for (std::uint32_t v : faces[f])
+            if (v >= nv) fail("face " + std::to_string(f) + " uses a missing vertex");
+    for (std::uint32_t f = 0; f < nf; ++f) {
+        const Triangle& t = faces[f];
+        if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) fail("face " + std::to_string(f) + " repeats a vertex");
+    }
+    OutgoingHalfedges out = outgoing_halfedges(faces, nv);
+    for (std::uint32_t v = 0; v < nv; ++v) {
+        const auto group = out.of(v);
+        for (std::size_t k = 1; k < group.size(); ++k)
+            if (OutgoingHalfedges::end_vertex(group[k]) == OutgoingHalfedges::end_vertex(group[k - 1]))
+                fail("face " + std::to_string(Mesh::face(OutgoingHalfedges::halfedge(group[k])).idx) +
+                     " repeats a directed edge (non-manifold)");
+    }
+    opposite.assign(3 * nf, HalfedgeId());
+    parallel_for(nv, 1 << 15, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t a = begin; a < end; ++a)
+            for (std::uint64_t e : out.of(static_cast<std::uint32_t>(a))) {
+                const auto back = out.of(OutgoingHalfedges::end_vertex(e));
+                const std::uint64_t key = std::uint64_t(a) << 32;
+                const auto it = std::lower_bound(back.begin(), back.end(), key);
+                if (it != back.end() && OutgoingHalfedges::end_vertex(*it) == a)
+                    opposite[OutgoingHalfedges::halfedge(e).idx] = OutgoingHalfedges::halfedge(*it);
+            }
+    });
+    return out;
+}
+
 }  // namespace
 
-// Rebuilt through the same members the operators use, so the restored mesh is indistinguishable from
-// one the operators made: faces typed by their place in the hierarchy, insertion positions by the
-// split formula level by level.
+void set_sharp_features(Mesh& mesh, const SharpFeatures& features) {
+    auto base = std::make_shared<const BaseMesh>(mesh.base().positions(), mesh.base().faces(), features);
+    // Insertion positions by the new rules, from the base mesh (the evaluator caches what a vertex's
+    // parents need, so this is linear in the vertices).
+    std::vector<glm::dvec3> insertion = mesh.insertion_position_;
+    {
+        HierarchyEvaluator evaluator(*base);
+        for (VertexId v : mesh.vertices()) insertion[v.idx] = evaluator.insertion_position(mesh.address(v));
+    }
+    mesh.base_ = std::move(base);
+    mesh.insertion_position_ = std::move(insertion);
+    // Every cached limit followed the old rules.
+    for (VertexId v : mesh.vertices())
+        if (mesh.vertex_info_[v.idx] & Mesh::kLimitBit) {
+            mesh.limits_.erase(v.idx);
+            mesh.vertex_info_[v.idx] &= static_cast<std::uint8_t>(~Mesh::kLimitBit);
+        }
+    // As restore_state leaves it: the limits the displayed positions need are cached.
+    for (VertexId v : mesh.vertices())
+        if (display_level(mesh, v) > mesh.level(v)) limit_position(mesh, v);
+}
+
+Mesh with_sharp_features(const Mesh& mesh, const SharpFeatures& features) {
+    Mesh copy = mesh;
+    set_sharp_features(copy, features);
+    return copy;
+}
+
+// Rebuilt into the members the operators use, so the restored mesh is indistinguishable from one the
+// operators made: faces typed by their place in the hierarchy, insertion positions by the split
+// formula level by level. Every pass is linear (a table of addresses, halfedges grouped by vertex),
+// and the per-face ones run in parallel.
 Mesh restore_state(const MeshState& s) {
     std::shared_ptr<const BaseMesh> base_mesh;
     try {
-        base_mesh = std::make_shared<const BaseMesh>(s.base_positions, s.base_triangles);
+        base_mesh = std::make_shared<const BaseMesh>(s.base_positions, s.base_triangles, s.sharp_features);
     } catch (const std::invalid_argument& e) {
         fail(std::string("base mesh: ") + e.what());
     }
     const BaseMesh& base = *base_mesh;
     Mesh m(base_mesh);
-    const std::size_t n0 = base.num_vertices(), nv = s.vertices.size();
+    const std::size_t n0 = base.num_vertices(), nv = s.vertices.size(), nf = s.faces.size();
     if (nv < n0) fail("fewer vertices than the base mesh has");
-    // Vertices: addresses checked and made canonical, so equal points compare equal.
-    std::unordered_map<AddressKey, std::uint32_t, AddressHash> by_address;
-    by_address.reserve(nv);
+    // Vertices and faces are checked and stored side by side (they meet only in the vertices'
+    // halfedges below); a problem with the vertices is reported first, as in a plain sequence.
     std::vector<SurfacePoint> points(nv);
-    for (std::uint32_t i = 0; i < nv; ++i) {
-        SurfacePoint p = s.vertices[i];
-        const std::string name = "vertex " + std::to_string(i);
-        if (p.face >= base.num_faces() || p.level < 0 || p.level > kMaxLevel ||
-            std::uint64_t(p.a[0]) + p.a[1] + p.a[2] != (std::uint64_t(1) << p.level) || reduced(p) != p)
-            fail(name + " has an invalid address");
-        if ((i < n0) != (p.level == 0) || (i < n0 && base_vertex(base, p) != i))
-            fail(name + ": the base vertices come first, in base order, and only they have level 0");
-        p = canonical(base, p);
-        if (!by_address.emplace(AddressKey{p.face, p.a[0], p.a[1], p.level}, i).second) fail(name + " repeats another vertex");
-        points[i] = p;
-    }
-    m.insertion_position_.resize(nv);
-    m.vertex_halfedge_.assign(nv, HalfedgeId());
-    m.vertex_info_.resize(nv);
-    m.address_.resize(nv);
-    for (std::uint32_t i = 0; i < nv; ++i) {
-        m.vertex_info_[i] = static_cast<std::uint8_t>(points[i].level | (is_boundary(base, points[i]) ? Mesh::kBoundaryBit : 0));
-        m.address_[i] = {points[i].face, points[i].a[1], points[i].a[2]};
-    }
-    m.vertex_count_ = nv;
-    // Faces: their colour, level and red edge follow from where their corners are (spec §1.3).
-    const std::size_t nf = s.faces.size();
-    m.face_vertices_.resize(nf);
-    m.face_code_.assign(nf, Mesh::kDead);
-    m.opposite_.assign(3 * nf, HalfedgeId());
-    for (std::uint32_t f = 0; f < nf; ++f) {
-        for (int c = 0; c < 3; ++c) {
-            if (s.faces[f][c] >= nv) fail("face " + std::to_string(f) + " uses a missing vertex");
-            m.face_vertices_[f][c] = VertexId(s.faces[f][c]);
-        }
-        m.face_code_[f] = 0;  // live; typed below, once adjacency exists
-    }
-    m.face_count_ = nf;
-    std::vector<std::pair<std::uint64_t, HalfedgeId>> directed;
-    directed.reserve(3 * nf);
-    for (std::uint32_t f = 0; f < nf; ++f) {
-        const Triangle& t = s.faces[f];
-        if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) fail("face " + std::to_string(f) + " repeats a vertex");
-        for (int c = 0; c < 3; ++c)
-            directed.emplace_back((std::uint64_t(t[c]) << 32) | t[(c + 1) % 3], Mesh::halfedge(FaceId(f), c));
-    }
-    std::sort(directed.begin(), directed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-    for (std::size_t i = 1; i < directed.size(); ++i)
-        if (directed[i].first == directed[i - 1].first)
-            fail("face " + std::to_string(Mesh::face(directed[i].second).idx) + " repeats a directed edge (non-manifold)");
-    for (const auto& [k, h] : directed) {
-        const std::uint64_t reverse = (k << 32) | (k >> 32);
-        const auto it = std::lower_bound(directed.begin(), directed.end(), reverse,
-                                         [](const auto& e, std::uint64_t x) { return e.first < x; });
-        if (it != directed.end() && it->first == reverse) m.opposite_[h.idx] = it->second;
-    }
-    for (const auto& [k, h] : directed) {
-        const VertexId from(static_cast<std::uint32_t>(k >> 32));
-        if (!m.vertex_halfedge_[from.idx].valid()) m.set_vertex_halfedge(from, h);
-    }
-    for (std::uint32_t v = 0; v < nv; ++v)
-        if (!m.vertex_halfedge_[v].valid()) fail("vertex " + std::to_string(v) + " is used by no face");
-    for (std::uint32_t f = 0; f < nf; ++f) {
-        const FaceId face(f);
-        int level = 0;
-        for (VertexId v : m.face_vertices(face)) level = std::max(level, m.level(v));
-        // A face's level is its finest corner's for a green face, one less for a red or blue one;
-        // try green first, as its parent triangle is the face itself.
-        FaceType type;
-        bool typed = false;
-        try {
-            const std::uint32_t b = base_face_of(m, face);
-            for (int l : {level, level - 1}) {
-                if (l < 0) continue;
-                m.face_code_[f] = Mesh::pack(FaceType{Colour::Green, static_cast<std::uint8_t>(l), 0});
-                const auto parent = parent_triangle(m, face, b);
-                int corners = 0, off_corner = -1;
-                for (int c = 0; c < 3; ++c) {
-                    const auto p = in_face(base, m.address(m.face_vertices(face)[c]), b);
-                    const bool is_corner = p && std::find(parent.begin(), parent.end(), *p) != parent.end();
-                    corners += is_corner;
-                    if (!is_corner) off_corner = c;
-                }
-                if (l == level && corners == 3) {
-                    type = {Colour::Green, static_cast<std::uint8_t>(l), 0};
-                } else if (l == level - 1 && corners == 2) {
-                    // Red: the red edge runs from the top (the midpoint) to the far corner, through
-                    // the parent's interior: of the top's two edges, the one that is not half of a
-                    // parent edge, i.e. whose other end is not adjacent to the top along the parent.
-                    const VertexId top = m.face_vertices(face)[off_corner];
-                    const PointStencil st = parent_stencil(base, m.address(top));
-                    const int next = (off_corner + 1) % 3;
-                    const auto n = in_face(base, m.address(m.face_vertices(face)[next]), b);
-                    const bool next_on_parent_edge = n && (in_face(base, st.ends[0], b) == n || in_face(base, st.ends[1], b) == n);
-                    type = {Colour::Red, static_cast<std::uint8_t>(l),
-                            static_cast<std::uint8_t>(next_on_parent_edge ? (off_corner + 2) % 3 : off_corner)};
-                } else if (l == level - 1 && corners == 1) {
-                    // Blue: the red edge joins the low corner and the midpoint of the opposite parent edge.
-                    int low = 0;
-                    for (int c = 0; c < 3; ++c)
-                        if (m.level(m.face_vertices(face)[c]) <= l) low = c;
-                    const VertexId after = m.face_vertices(face)[(low + 1) % 3];
-                    const PointStencil st = parent_stencil(base, m.address(after));
-                    const auto lowp = in_face(base, m.address(m.face_vertices(face)[low]), b);
-                    const bool after_touches_low = lowp && (in_face(base, st.ends[0], b) == lowp || in_face(base, st.ends[1], b) == lowp);
-                    type = {Colour::Blue, static_cast<std::uint8_t>(l),
-                            static_cast<std::uint8_t>(after_touches_low ? (low + 2) % 3 : low)};
-                } else {
-                    continue;
-                }
-                typed = true;
-                break;
+    std::optional<AddressIndex> index;
+    OutgoingHalfedges out;
+    parallel_invoke(
+        [&] {
+            index.emplace(checked_addresses(base, s.vertices, points));
+            m.vertex_halfedge_.assign(nv, HalfedgeId());
+            m.vertex_info_.resize(nv);
+            m.address_.resize(nv);
+            for (std::uint32_t i = 0; i < nv; ++i) {
+                m.vertex_info_[i] = static_cast<std::uint8_t>(points[i].level | (is_boundary(base, points[i]) ? Mesh::kBoundaryBit : 0));
+                m.address_[i] = {points[i].face, points[i].a[1], points[i].a[2]};
             }
-        } catch (const std::logic_error&) {
-            typed = false;
+            m.vertex_count_ = nv;
+        },
+        [&] {
+            out = matched_halfedges(s.faces, nv, m.opposite_);
+            m.face_vertices_.resize(nf);
+            for (std::uint32_t f = 0; f < nf; ++f)
+                for (int c = 0; c < 3; ++c) m.face_vertices_[f][c] = VertexId(s.faces[f][c]);
+            m.face_code_.assign(nf, 0);  // live; typed below
+            m.face_count_ = nf;
+        });
+    for (std::uint32_t v = 0; v < nv; ++v) {
+        const auto group = out.of(v);
+        if (group.empty()) fail("vertex " + std::to_string(v) + " is used by no face");
+        m.set_vertex_halfedge(VertexId(v), OutgoingHalfedges::halfedge(group.front()));
+    }
+    out = {};
+    // Faces: their colour, level and red edge follow from where their corners are (spec §1.3).
+    std::vector<std::uint32_t> untyped(parallel_blocks(nf, 1 << 14), BaseMesh::kNone);
+    parallel_blocks_for(nf, untyped.size(), [&](std::size_t block, std::size_t begin, std::size_t end) {
+        for (std::size_t f = begin; f < end; ++f) {
+            const auto type = type_from_corners(m, FaceId(static_cast<std::uint32_t>(f)));
+            if (!type) {
+                untyped[block] = static_cast<std::uint32_t>(f);
+                return;
+            }
+            m.face_code_[f] = Mesh::pack(*type);
         }
-        if (!typed) fail("face " + std::to_string(f) + " is no piece of a triangle of the hierarchy");
-        m.face_code_[f] = Mesh::pack(type);
+    });
+    for (std::uint32_t f : untyped)
+        if (f != BaseMesh::kNone) fail("face " + std::to_string(f) + " is no piece of a triangle of the hierarchy");
+    // Insertion positions, coarsest first, by the split formula on the (present) parent stencil; and
+    // the limits of the vertices displayed above their own level, which a viewer (and the loader's
+    // check of a file's positions) needs at once.
+    std::vector<std::uint8_t> displayed_above_own_level(nv);
+    parallel_for(nv, 1 << 15, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+            const VertexId v(static_cast<std::uint32_t>(i));
+            displayed_above_own_level[i] = display_level(m, v) > m.level(v);
+        }
+    });
+    try {
+        HierarchyPositions positions = hierarchy_positions(base, points, *index, displayed_above_own_level);
+        m.insertion_position_ = std::move(positions.insertion);
+        for (const HierarchyPositions::Limit& l : positions.limits) m.cache_limit(VertexId(l.vertex), l.position);
+    } catch (const std::invalid_argument& e) {
+        fail(e.what());
     }
-    // Insertion positions, coarsest first, by the split formula on the (present) parent stencil.
-    std::vector<std::uint32_t> order(nv);
-    for (std::uint32_t i = 0; i < nv; ++i) order[i] = i;
-    std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return points[a].level < points[b].level; });
-    for (std::uint32_t i = 0; i < n0; ++i) m.insertion_position_[i] = base.position(i);
-    auto vertex_at = [&](const SurfacePoint& p) {
-        const SurfacePoint c = canonical(base, p);
-        const auto it = by_address.find({c.face, c.a[0], c.a[1], c.level});
-        if (it == by_address.end()) fail("a vertex's parent triangles are not all present");
-        return VertexId(it->second);
-    };
-    for (std::uint32_t i : order) {
-        if (i < n0) continue;
-        const PointStencil st = parent_stencil(base, points[i]);
-        const int l = points[i].level - 1;
-        const glm::dvec3 a = control_point(m, vertex_at(st.ends[0]), l), b = control_point(m, vertex_at(st.ends[1]), l);
-        m.insertion_position_[i] = st.boundary ? boundary_edge_point(a, b)
-                                               : interior_edge_point(a, b, control_point(m, vertex_at(st.opposite[0]), l),
-                                                                     control_point(m, vertex_at(st.opposite[1]), l));
-    }
-    if (const InvariantReport report = check_invariants(m, 1); !report.ok()) fail(report.violations.front());
+    // Typing above put every face in its place in the hierarchy or failed.
+    if (const InvariantReport report = check_invariants(m, 1, {.hierarchy_place = true}); !report.ok()) fail(report.violations.front());
     if (const InvariantReport report = check_normal_form(m, 1); !report.ok()) fail(report.violations.front());
     return m;
 }

@@ -1,8 +1,9 @@
 #pragma once
-// The adaptive state of a Mesh as plain data, for persistence (io) and tests: the base mesh, each
-// live vertex's address in the hierarchy and the live faces. Nothing else is needed: a face's colour,
-// level and red edge follow from its corners' addresses (spec §1.3), every Loop value from the base
-// mesh (loop_geometry.h), so a restored mesh has the same vertices, faces and positions bit for bit.
+// The adaptive state of a Mesh as plain data, for persistence (io) and tests: the base mesh with its
+// crease and corner tags, each live vertex's address in the hierarchy and the live faces. Nothing else
+// is needed: a face's colour, level and red edge follow from its corners' addresses (spec §1.3), every
+// Loop value from the base mesh (loop_geometry.h), so a restored mesh has the same vertices, faces and
+// positions bit for bit.
 // Slots are compacted: vertex i of the state is the i-th live vertex slot, base vertices first.
 #include <vector>
 
@@ -18,13 +19,25 @@ class Mesh;
 struct MeshState {
     std::vector<glm::dvec3> base_positions;
     std::vector<Triangle> base_triangles;
+    SharpFeatures sharp_features;  // the base mesh's tags (BaseMesh::sharp_features)
     std::vector<SurfacePoint> vertices;  // base vertices first, in base order
     std::vector<Triangle> faces;         // indices into vertices
 };
 
 MeshState capture_state(const Mesh& mesh);
 // Throws std::invalid_argument with a readable reason if the state is not a valid RGB triangulation
-// of its base mesh in the normal form the core keeps (io turns that into a file error).
+// of its base mesh in the normal form the core keeps (io turns that into a file error); the first
+// problem in the order vertices, faces, types, positions, invariants is the one named. Linear in the
+// size of the state, its passes over all vertices or faces on all cores (parallel.h). The restored
+// mesh has the limits cached that its displayed positions need.
 Mesh restore_state(const MeshState& state);
+
+// Gives the mesh's base mesh other crease and corner tags (the editor's crease tool, the CLI's
+// --sharp-angle): the vertex set, the faces and every slot stay, every value follows the new rules
+// (so an undo journal's records stay valid and an undo is another retag). Observers are not told:
+// every position changes. Throws std::invalid_argument for tags BaseMesh refuses, before any change.
+void set_sharp_features(Mesh& mesh, const SharpFeatures& features);
+// The same on a copy.
+Mesh with_sharp_features(const Mesh& mesh, const SharpFeatures& features);
 
 }  // namespace rgb

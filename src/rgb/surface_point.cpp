@@ -96,6 +96,13 @@ std::optional<std::uint32_t> base_vertex(const BaseMesh& base, const SurfacePoin
     return std::nullopt;
 }
 
+std::optional<std::uint32_t> base_edge_of(const SurfacePoint& p) {
+    if (p.level == 0) return std::nullopt;
+    const int z = zero_coordinate(p);
+    if (z < 0) return std::nullopt;
+    return 3 * p.face + static_cast<std::uint32_t>((z + 1) % 3);
+}
+
 std::optional<SurfacePoint> in_face(const BaseMesh& base, const SurfacePoint& p, std::uint32_t g) {
     if (g == p.face) return p;
     if (p.level == 0) {
@@ -221,6 +228,14 @@ InlineVector<SurfacePoint, 6> ring_at_own_level(const BaseMesh& base, const Surf
         for (int c = 0; c < 3; ++c)
             if (c != far) ring.push_back(step(*q, c, far));
     return ring;
+}
+
+InlineVector<SurfacePoint, 6> ring_at_level(const BaseMesh& base, const SurfacePoint& p, int k) {
+    // p written with denominator 2^k (not reduced): its steps of 1/2^k are its neighbours in Σk.
+    SurfacePoint fine = p;
+    fine.a = numerators_at(p, k);
+    fine.level = k;
+    return ring_at_own_level(base, fine);
 }
 
 }  // namespace rgb

@@ -37,6 +37,8 @@ std::array<std::uint32_t, 3> numerators_at(const SurfacePoint& p, int k);
 
 // The base vertex p is, if it is one.
 std::optional<std::uint32_t> base_vertex(const BaseMesh& base, const SurfacePoint& p);
+// The base halfedge of p's face that p lies on, if p is a point of level >= 1 on a base edge.
+std::optional<std::uint32_t> base_edge_of(const SurfacePoint& p);
 // The address of p in base face g, if p lies on g's closed triangle.
 std::optional<SurfacePoint> in_face(const BaseMesh& base, const SurfacePoint& p, std::uint32_t g);
 // A representation chosen by a rule that does not depend on which face p was given in (base
@@ -65,5 +67,7 @@ PointStencil parent_stencil(const BaseMesh& base, const SurfacePoint& p);
 // The neighbours of p (level >= 1) in Σk for k = p.level: six points, or four on the boundary with
 // the two along the boundary first. (A base vertex's ring is BaseMesh::ring.)
 InlineVector<SurfacePoint, 6> ring_at_own_level(const BaseMesh& base, const SurfacePoint& p);
+// The same for k >= p.level: the neighbours of p (level >= 1) in Σk, in the same order.
+InlineVector<SurfacePoint, 6> ring_at_level(const BaseMesh& base, const SurfacePoint& p, int k);
 
 }  // namespace rgb

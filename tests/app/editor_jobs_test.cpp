@@ -63,6 +63,29 @@ protected:
     Editor editor{kViewport};
 };
 
+TEST_F(EditorJobs, WholeMeshActionsAboveTheTriangleLimitAreRefusedBeforeTheyStart) {
+    const std::size_t base_faces = editor.document().mesh().num_faces();
+    // The estimate (rgb::estimated_triangles) is the faces there are plus 4^level per base face they
+    // meet: 17 per base face for level 2, exactly at this limit, 65 for level 3.
+    const std::size_t limit = 17 * base_faces;
+    editor.set_triangle_limit(limit);
+    editor.start_flood_fill(3);
+    EXPECT_EQ(editor.job(), nullptr);
+    EXPECT_NE(editor.message().find("set all to level 3 refused"), std::string::npos) << editor.message();
+    EXPECT_NE(editor.message().find(std::to_string(limit)), std::string::npos) << "names the limit: " << editor.message();
+    EXPECT_EQ(editor.document().mesh().num_faces(), base_faces);
+    EXPECT_FALSE(editor.document().history().can_undo());
+
+    editor.auto_lod_settings().triangle_budget = limit + 1;
+    editor.start_auto_lod();
+    EXPECT_EQ(editor.job(), nullptr);
+    EXPECT_NE(editor.message().find("automatic LOD refused"), std::string::npos) << editor.message();
+
+    editor.start_flood_fill(2);
+    editor.finish_work();
+    EXPECT_EQ(editor.document().mesh().num_faces(), 16 * base_faces);
+}
+
 TEST_F(EditorJobs, ALargeDabSpreadsOverFramesCoarseToFineWithTheDisplayFollowing) {
     const rgb::Mesh original = editor.document().mesh();
     editor.brush().radius_px = 100.0f;

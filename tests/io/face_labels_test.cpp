@@ -19,6 +19,7 @@
 #include "obj_test_support.h"
 #include "rgb/requests.h"
 #include "scratch_folder.h"
+#include "support/same_mesh.h"
 
 namespace rgbio {
 namespace {
@@ -190,6 +191,47 @@ TEST_F(LabelledMesh, RefineSaveLoadLevelZeroGivesBackTheInputLabels) {
     std::size_t cloth = 0;
     for (const auto& [key, labels] : labelled_triangles(back)) cloth += labels[0] == "cloth" && labels[2] == "part two";
     EXPECT_EQ(cloth, 2u);
+}
+
+// The state takes untouched base faces from the f lines (t-as-f, state_format.h); grouped by label,
+// those are not in slot order, and the records must name the lines they are on.
+TEST_F(LabelledMesh, ALightlyRefinedMeshTakesItsBaseFacesFromTheGroupedFaceLines) {
+    LoadedAsset asset = load_grid();
+    rgb::set_level(asset.mesh, 1, rgb::Sphere{{0.5, 0.5, 0.0}, 0.3});
+    SaveOptions options;
+    options.attributes = asset.attributes;
+    const std::string text = format_obj(asset.mesh, options);
+    ASSERT_GT(count_lines(text, "#rgb t-as-f "), 1u) << "the grouping splits the base faces into several runs";
+    const LoadedMesh loaded = read_obj_text(text, "grouped.obj");
+    ASSERT_TRUE(loaded.adaptive) << (loaded.warnings.empty() ? "" : loaded.warnings.front());
+    EXPECT_TRUE(rgbtest::same_mesh(*loaded.adaptive, asset.mesh));
+    EXPECT_EQ(loaded.adaptive_labels, asset.attributes->labels);
+}
+
+// A state saved without labels, whose faces another program labelled alike within each base face:
+// the state stays, and those labels become the base faces'. Labels that differ inside one base face
+// cannot be the base faces': the file is loaded as a plain mesh.
+TEST_F(LabelledMesh, LabelsAddedElsewhereToAStateWithoutThemBecomeTheBaseFacesLabels) {
+    write("grid.obj", labelled_grid());
+    rgb::Mesh mesh = load_mesh(path("grid.obj"));
+    rgb::set_level(mesh, 1);
+    std::istringstream saved(format_obj(mesh, {}));
+    std::string alike, differing;
+    std::size_t face = 0;
+    for (std::string line; std::getline(saved, line);) {
+        alike += line + "\n";
+        // The first face "odd", every other "even": the first face's base face holds three more.
+        if (line.rfind("f ", 0) == 0 && face++ < 2) differing += face == 1 ? "usemtl odd\n" : "usemtl even\n";
+        differing += line + "\n";
+    }
+    alike.insert(alike.find("\nf ") + 1, "g everything\n");
+    const LoadedMesh kept = read_obj_text(alike, "alike.obj");
+    ASSERT_TRUE(kept.adaptive) << (kept.warnings.empty() ? "" : kept.warnings.front());
+    EXPECT_EQ(kept.adaptive_labels.groups.names, std::vector<std::string>{"everything"});
+    EXPECT_EQ(kept.adaptive_labels.groups.of_triangle, std::vector<std::uint32_t>(32, 0u));
+    EXPECT_TRUE(kept.adaptive_labels.materials.empty());
+    const LoadedMesh dropped = read_obj_text(differing, "differing.obj");
+    EXPECT_FALSE(dropped.adaptive);
 }
 
 TEST_F(LabelledMesh, AMeshWithoutLabelsHasNoLabelLinesOrSection) {

@@ -210,6 +210,10 @@ TEST(MeshFile, ReorderedFacesStillRestore) {
     edit(mesh, 0);
     std::string text = format_obj(mesh, {});
     // Another program re-saved the faces in a different order but kept the comments: the same mesh.
+    // (These two faces are refined ones; untouched base faces the state takes from their f lines
+    // must keep their place: state_format_test.)
+    ASSERT_EQ(text.find("#rgb t-as-f 0 "), std::string::npos);
+    ASSERT_EQ(text.find("#rgb t-as-f 1 "), std::string::npos);
     const std::size_t first_face = text.find("\nf ") + 1;
     const std::size_t second_face = text.find("\nf ", first_face) + 1;
     const std::size_t third_face = text.find("\nf ", second_face) + 1;
@@ -256,6 +260,39 @@ TEST(MeshFile, PositionsEditedElsewhereWinOverTheState) {
     EXPECT_NE(loaded.warnings[0].find("positions differ"), std::string::npos) << loaded.warnings[0];
     ASSERT_EQ(loaded.positions.size(), original.positions.size());
     for (std::size_t i = 0; i < loaded.positions.size(); ++i) EXPECT_EQ(loaded.positions[i], 2.0 * original.positions[i]);
+}
+
+// read_obj_file releases a saved file's text once its state is parsed; what comes after (warnings
+// quoting the file, errors of the plain mesh when the state is dropped) must not need it.
+TEST(MeshFile, ASavedFileReadFromDiskSaysWhatItsTextSays) {
+    rgb::Mesh mesh = octahedron();
+    edit(mesh, 1);
+    const std::string saved = format_obj(mesh, {});
+    const std::filesystem::path path = std::filesystem::temp_directory_path() / ("rgbsub_from_disk_" + std::to_string(::getpid()) + ".obj");
+    auto write = [&](const std::string& text) { std::ofstream(path, std::ios::binary) << text; };
+    // An unknown keyword after the state: the mesh restores, and the warning quotes the keyword.
+    write(saved + "frobnicate 1\n");
+    const LoadedMesh loaded = read_obj_file(path.string());
+    ASSERT_TRUE(loaded.adaptive);
+    EXPECT_TRUE(test::has_warning(loaded.warnings, "'frobnicate'")) << (loaded.warnings.empty() ? "" : loaded.warnings[0]);
+    // A face line repeated (and the header's count raised to match): the state is dropped, and the
+    // plain mesh's error is the one reading the same text from memory gives.
+    const std::size_t face = saved.find("\nf ") + 1, end = saved.find('\n', face) + 1;
+    std::string doubled = saved.substr(0, end) + saved.substr(face, end - face) + saved.substr(end);
+    const std::string count = std::to_string(mesh.num_faces()) + " triangles";
+    doubled.replace(doubled.find(count), count.size(), std::to_string(mesh.num_faces() + 1) + " triangles");
+    write(doubled);
+    const ObjError in_memory = test::load_error(doubled);
+    EXPECT_EQ(in_memory.problem(), ObjProblem::DuplicateFace) << in_memory.what();
+    try {
+        read_obj_file(path.string());
+        ADD_FAILURE() << "no error from the file";
+    } catch (const ObjError& e) {
+        EXPECT_EQ(e.problem(), in_memory.problem());
+        EXPECT_EQ(e.line(), in_memory.line());
+        EXPECT_EQ(e.reason(), in_memory.reason());
+    }
+    std::filesystem::remove(path);
 }
 
 TEST(MeshFile, OtherProgramsHashRgbCommentsAreIgnoredWithAWarning) {

@@ -131,6 +131,37 @@ TEST_P(CreaseClosedForms, LimitFromAnyLevelEqualsFarsLimitAwayFromDarts) {
         }
 }
 
+// docs/loop-creases.md §5.1: a regular interior crease vertex whose crease edges have sharpness 1 is
+// smooth from the next level on, and its limit is 7/12 p + 1/8 (u + w) + 1/24 (the other four
+// neighbours), all of this level. Far's Limit is exact there (the vertex is smooth at the last level).
+TEST_P(CreaseClosedForms, CreaseEndingAtTheNextLevelHasTheTransitionLimitStencil) {
+    const Refined r(GetParam().input);
+    int checked = 0;
+    for (int a = 0; a < finest; ++a) {
+        for (int v = 0; v < r.vertices(a); ++v) {
+            const Neighbourhood n = r.at(a, v);
+            if (n.boundary || n.ring.size() != 6 || n.vertex_sharpness > 0.0) continue;
+            std::vector<int> sharp;
+            for (int i = 0; i < 6; ++i)
+                if (n.edge_sharpness[i] > 0.0) sharp.push_back(i);
+            if (sharp.size() != 2 || n.edge_sharpness[sharp[0]] != 1.0 || n.edge_sharpness[sharp[1]] != 1.0) continue;
+            ASSERT_EQ(sharp[1] - sharp[0], 3) << "a regular crease runs straight through its vertex";
+            glm::dvec3 others(0.0);
+            for (int i = 0; i < 6; ++i)
+                if (i != sharp[0] && i != sharp[1]) others += n.ring[i];
+            const glm::dvec3 limit =
+                7.0 / 12.0 * n.centre + 1.0 / 8.0 * (n.ring[sharp[0]] + n.ring[sharp[1]]) + 1.0 / 24.0 * others;
+            EXPECT_LE(glm::distance(limit, r.far.limit_positions[r.descendant(a, v, finest - a)]), r.tolerance)
+                << "vertex " << v << " of level " << a;
+            ++checked;
+        }
+    }
+    const std::string name = GetParam().name;
+    if (name.find("semi_sharp_chain") != std::string::npos || name.find("semi_sharp_meeting") != std::string::npos) {
+        EXPECT_GT(checked, 0) << "the semi-sharp cases have such vertices";
+    }
+}
+
 // A dart's exact limit is the fixed point of its one-ring refinement: the same from every level's
 // ring. Far's Limit applies the smooth limit mask to a dart instead, which is not that fixed point:
 // its value depends on the level it is applied to.

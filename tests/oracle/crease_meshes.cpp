@@ -87,6 +87,11 @@ std::vector<CreaseCase> crease_cases() {
     sharpen_path(grid_dart, {grid_vertex(4, 0, 1), grid_vertex(4, 1, 1), grid_vertex(4, 2, 1)}, {inf});
     cases.push_back({"chain_from_boundary_ending_in_dart", grid_dart});
 
+    // No tags, only the boundary option: the grid's two single-face corners become corners.
+    FarInput cornered = far_input(rgbtest::grid(4, 3));
+    cornered.boundary = BoundaryInterpolation::edge_and_corner;
+    cases.push_back({"edge_and_corner_without_tags", cornered});
+
     FarInput crossing = grid_with_crossing_creases({inf}, {inf});
     cases.push_back({"creases_meeting_boundary", crossing});
     crossing.boundary = BoundaryInterpolation::edge_and_corner;

@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include "far_by_identity.h"
 #include "osd_far.h"
 #include "support/test_meshes.h"
 #include "test_mesh_input.h"
@@ -25,17 +26,10 @@ TEST_P(UniformAgreement, FarEqualsTheIndependentOracleVertexByVertex) {
     const rgbtest::UniformLoopOracle oracle(mesh.positions, mesh.triangles, levels);
     const double tolerance = 1e-12 * rgbtest::bounding_box_diagonal(mesh.positions);
 
-    // identity[v]: the oracle's identity of Far's vertex v of the current level.
-    std::vector<rgbtest::Identity> identity;
-    for (std::size_t v = 0; v < mesh.positions.size(); ++v) identity.push_back(static_cast<rgbtest::Identity>(v));
+    const std::vector<std::vector<rgbtest::Identity>> identities = identities_of(far, oracle);
     for (int k = 0; k <= levels; ++k) {
         const FarLevel& level = far.levels[k];
-        if (k > 0) {
-            std::vector<rgbtest::Identity> finer;
-            for (const VertexOrigin& o : level.origins)
-                finer.push_back(o.on_edge ? oracle.midpoint(identity[o.a], identity[o.b]).value() : identity[o.a]);
-            identity = std::move(finer);
-        }
+        const std::vector<rgbtest::Identity>& identity = identities[k];
         ASSERT_EQ(level.positions.size(), oracle.num_identities(k)) << "level " << k;
         double worst = 0.0;
         for (std::size_t v = 0; v < level.positions.size(); ++v)

@@ -1,7 +1,7 @@
 // Defects the first version carried without a test noticing: a halfedge search from a removed
 // vertex, a "pillow" base mesh, and the observer event order the operators promise (observer.h).
+#include <algorithm>
 #include <random>
-#include <regex>
 #include <string>
 #include <vector>
 
@@ -78,10 +78,34 @@ private:
     rgb::Mesh& mesh_;
 };
 
+// The events as blocks "F+ [mark] f+" (faces removed, at most one vertex event, faces added): the
+// vertex events of the blocks in order ('-' for none), or "" if the events are not such blocks.
+// (Written out rather than with std::regex, which g++ 12 warns about under the sanitizers.)
+std::string block_marks(const std::string& events) {
+    std::string marks;
+    std::size_t i = 0;
+    while (i < events.size()) {
+        const std::size_t removed = events.find_first_not_of('F', i);
+        if (removed == i || removed == std::string::npos) return "";
+        i = removed;
+        char mark = '-';
+        if (events[i] == 'a' || events[i] == 'V') mark = events[i++];
+        const std::size_t added = events.find_first_not_of('f', i);
+        if (added == i) return "";
+        i = added == std::string::npos ? events.size() : added;
+        marks += mark;
+    }
+    return marks;
+}
+
 // Random splits and removals: a split (with the swaps it folds in) reports one block in the promised
 // order; a removal may swap first, as blocks of their own, then merges in one block.
 TEST(LatentDefects, OperatorsReportTheirEventsInThePromisedOrder) {
-    const std::regex split_block("F+af+"), removal_block("(F+f+)*F+Vf+(F+f+)*");
+    auto is_split_block = [](const std::string& events) { return block_marks(events) == "a"; };
+    auto is_removal_blocks = [](const std::string& events) {
+        const std::string marks = block_marks(events);
+        return std::count(marks.begin(), marks.end(), 'V') == 1 && std::count(marks.begin(), marks.end(), '-') + 1 == std::ssize(marks);
+    };
     for (const TestMesh& base : {icosahedron(), fan(6), grid(3, 3)}) {
         rgb::Mesh mesh = make_rgb_mesh(base);
         std::mt19937 rng(5);
@@ -95,11 +119,11 @@ TEST(LatentDefects, OperatorsReportTheirEventsInThePromisedOrder) {
             const rgb::VertexId v = mesh.face_vertices(f)[rng() % 3];
             if (rng() % 3 != 0 && rgb::can_split_edge(mesh, h) && mesh.edge_type(h).level < 5) {
                 rgb::split_edge(mesh, h);
-                EXPECT_TRUE(std::regex_match(recorder.events, split_block)) << base.name << " split: " << recorder.events;
+                EXPECT_TRUE(is_split_block(recorder.events)) << base.name << " split: " << recorder.events;
                 ++splits;
             } else if (mesh.level(v) > 0 && rgb::can_remove_vertex(mesh, v)) {
                 rgb::remove_vertex(mesh, v);
-                EXPECT_TRUE(std::regex_match(recorder.events, removal_block)) << base.name << " removal: " << recorder.events;
+                EXPECT_TRUE(is_removal_blocks(recorder.events)) << base.name << " removal: " << recorder.events;
                 ++removals;
             }
             EXPECT_TRUE(recorder.readable) << base.name << " step " << step;

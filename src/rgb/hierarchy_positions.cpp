@@ -1,0 +1,181 @@
+#include "rgb/hierarchy_positions.h"
+
+#include <array>
+#include <atomic>
+#include <memory>
+#include <stdexcept>
+
+#include "rgb/address_index.h"
+#include "rgb/base_mesh.h"
+#include "rgb/hierarchy_evaluator.h"
+#include "rgb/loop_rules.h"
+#include "rgb/parallel.h"
+#include "rgb/vertex_rules.h"
+
+namespace rgb {
+
+namespace {
+
+// Vertices ordered by level (what a vertex's values need is coarser), and within a level by base face
+// (its neighbours' table entries are then in cache).
+std::vector<std::uint32_t> level_then_face_order(std::span<const SurfacePoint> points, std::size_t base_faces) {
+    // Two stable counting sorts: by face, then by level.
+    auto counting_sort = [&](std::size_t count, std::size_t buckets, auto vertex, auto key) {
+        std::vector<std::uint32_t> start(buckets + 1, 0), out(count);
+        for (std::size_t i = 0; i < count; ++i) ++start[key(vertex(i)) + 1];
+        for (std::size_t b = 0; b < buckets; ++b) start[b + 1] += start[b];
+        for (std::size_t i = 0; i < count; ++i) out[start[key(vertex(i))]++] = vertex(i);
+        return out;
+    };
+    int top = 0;
+    for (const SurfacePoint& p : points) top = std::max(top, p.level);
+    const auto by_face = counting_sort(points.size(), base_faces, [](std::size_t i) { return static_cast<std::uint32_t>(i); },
+                                       [&](std::uint32_t v) { return points[v].face; });
+    return counting_sort(points.size(), static_cast<std::size_t>(top) + 1, [&](std::size_t i) { return by_face[i]; },
+                         [&](std::uint32_t v) { return std::uint32_t(points[v].level); });
+}
+
+// Vertices of one level need only coarser values, so each level is computed in parallel. A limit is
+// computed by whichever thread needs it first; one that finds it unclaimed stores it (claim with an
+// atomic flag, publish with a second state), others compute their own copy, which has the same bits.
+class Evaluation {
+public:
+    Evaluation(const BaseMesh& base, std::span<const SurfacePoint> points, const AddressIndex& index)
+        : base_(base), points_(points), index_(index), limit_(points.size()),
+          limit_state_(new std::atomic<std::uint8_t>[points.size()]()), blocks_(parallel_blocks(points.size(), 1 << 14)) {
+        insertion_.resize(points.size());
+        if (base.has_sharp_features()) {
+            tagged_.resize(points.size());
+            for (std::size_t v = 0; v < points.size(); ++v) tagged_[v] = !follows_untagged_rules(base, points[v]);
+        }
+        base_gamma_.resize(base.num_vertices());
+        for (std::uint32_t v = 0; v < base.num_vertices(); ++v) base_gamma_[v] = loop_gamma(base.valence(v), base.is_boundary_vertex(v));
+        for (std::size_t b = 0; b < blocks_; ++b) evaluators_.emplace_back(base);
+    }
+
+    HierarchyPositions run(std::span<const std::uint8_t> want_limit) {
+        for (std::uint32_t v = 0; v < base_.num_vertices(); ++v) insertion_[v] = base_.position(v);
+        const std::vector<std::uint32_t> order = level_then_face_order(points_, base_.num_faces());
+        for (std::size_t begin = 0, end; begin < order.size(); begin = end) {
+            end = begin;
+            while (end < order.size() && points_[order[end]].level == points_[order[begin]].level) ++end;
+            if (points_[order[begin]].level > 0)
+                in_parallel(std::span<const std::uint32_t>(order).subspan(begin, end - begin),
+                            [&](std::uint32_t v, std::size_t block) { insertion_[v] = insertion_position(points_[v], block); });
+        }
+        in_parallel(order, [&](std::uint32_t v, std::size_t block) {
+            if (want_limit[v]) limit(v, block);
+        });
+        HierarchyPositions result;
+        result.insertion = std::move(insertion_);
+        for (std::uint32_t v = 0; v < points_.size(); ++v)
+            if (limit_state_[v].load(std::memory_order_relaxed) == kKnown) result.limits.push_back({v, limit_[v]});
+        return result;
+    }
+
+private:
+    static constexpr std::uint8_t kClaimed = 1, kKnown = 2;
+
+    // f(vertex, block) for each vertex, in blocks_ parallel blocks.
+    template <class F>
+    void in_parallel(std::span<const std::uint32_t> vertices, const F& f) {
+        parallel_blocks_for(vertices.size(), std::min(blocks_, std::max<std::size_t>(vertices.size() >> 12, 1)),
+                            [&](std::size_t block, std::size_t begin, std::size_t end) {
+                                for (std::size_t i = begin; i < end; ++i) f(vertices[i], block);
+                            });
+    }
+
+    // Spec §4.4: the odd rule on the vertex's stencil in Σ(l-1).
+    glm::dvec3 insertion_position(const SurfacePoint& p, std::size_t block) {
+        const PointStencil st = parent_stencil(base_, p);
+        const int l = p.level - 1;
+        const glm::dvec3 a = control_point(vertex_at(st.ends[0]), l, block), b = control_point(vertex_at(st.ends[1]), l, block);
+        if (st.boundary || (!tagged_.empty() && inserted_at_midpoint(base_, p))) return boundary_edge_point(a, b);
+        return interior_edge_point(a, b, control_point(vertex_at(st.opposite[0]), l, block),
+                                   control_point(vertex_at(st.opposite[1]), l, block));
+    }
+
+    std::uint32_t vertex_at(const SurfacePoint& p) const {
+        const std::uint32_t v = index_.find(canonical(base_, p));
+        if (v == AddressIndex::kAbsent) throw std::invalid_argument("a vertex's parent triangles are not all present");
+        return v;
+    }
+
+    // p^k(v), k >= level(v), by the closed form of spec §4.2. A vertex whose rules the tags change
+    // takes it from the evaluator, as loop_geometry does: the same bits as the operators' mesh.
+    glm::dvec3 control_point(std::uint32_t v, int k, std::size_t block) {
+        const int l = points_[v].level;
+        if (k <= l) return insertion_[v];
+        if (is_tagged(v)) return evaluators_[block].control_point(points_[v], k);
+        const double gamma = v < base_gamma_.size() ? base_gamma_[v] : loop_gamma(6, is_boundary(base_, points_[v]));
+        return closed_form(insertion_[v], limit(v, block), gamma, k - l);
+    }
+
+    // p^inf(v) from its ring at its own level (all coarser or as coarse as v, so known by now). A ring
+    // vertex the set lacks (at the edge of a refined region) is computed from the base mesh by the
+    // evaluator, which gives the same bits.
+    glm::dvec3 limit(std::uint32_t v, std::size_t block) {
+        if (limit_state_[v].load(std::memory_order_acquire) == kKnown) return limit_[v];
+        const SurfacePoint& p = points_[v];
+        const glm::dvec3& centre = insertion_[v];
+        glm::dvec3 value;
+        if (is_tagged(v)) {
+            value = evaluators_[block].limit_position(p);
+        } else if (p.level == 0) {
+            const std::vector<std::uint32_t> ring = base_.ring(v);
+            if (base_.is_boundary_vertex(v)) {
+                value = boundary_limit(centre, insertion_[ring.front()], insertion_[ring.back()]);
+            } else {
+                std::vector<glm::dvec3> around;
+                around.reserve(ring.size());
+                for (std::uint32_t u : ring) around.push_back(insertion_[u]);
+                value = interior_limit(centre, around);
+            }
+        } else {
+            const auto ring = ring_at_own_level(base_, p);
+            const bool boundary = is_boundary(base_, p);
+            const std::size_t used = boundary ? 2 : 6;  // a boundary vertex's limit needs its two boundary neighbours
+            std::array<std::uint32_t, 6> members;
+            bool present = true;
+            for (std::size_t r = 0; r < used && present; ++r) {
+                members[r] = index_.find(canonical(base_, ring[r]));
+                present = members[r] != AddressIndex::kAbsent;
+            }
+            if (!present) {
+                value = evaluators_[block].limit_position(p);
+            } else {
+                std::array<glm::dvec3, 6> around;
+                for (std::size_t r = 0; r < used; ++r) around[r] = control_point(members[r], p.level, block);
+                value = boundary ? boundary_limit(centre, around[0], around[1]) : interior_limit(centre, around);
+            }
+        }
+        std::uint8_t unclaimed = 0;
+        if (limit_state_[v].compare_exchange_strong(unclaimed, kClaimed, std::memory_order_relaxed)) {
+            limit_[v] = value;
+            limit_state_[v].store(kKnown, std::memory_order_release);
+        }
+        return value;
+    }
+
+    bool is_tagged(std::uint32_t v) const { return !tagged_.empty() && tagged_[v]; }
+
+    const BaseMesh& base_;
+    std::span<const SurfacePoint> points_;
+    std::vector<bool> tagged_;  // per vertex, whether the tags change its rules; empty without tags
+    const AddressIndex& index_;
+    std::vector<double> base_gamma_;
+    std::vector<glm::dvec3> insertion_;
+    std::vector<glm::dvec3> limit_;
+    std::unique_ptr<std::atomic<std::uint8_t>[]> limit_state_;
+    std::size_t blocks_;
+    std::vector<HierarchyEvaluator> evaluators_;  // one per block: it caches as it goes
+};
+
+}  // namespace
+
+HierarchyPositions hierarchy_positions(const BaseMesh& base, std::span<const SurfacePoint> points, const AddressIndex& index,
+                                       std::span<const std::uint8_t> want_limit) {
+    return Evaluation(base, points, index).run(want_limit);
+}
+
+}  // namespace rgb

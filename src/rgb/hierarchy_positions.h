@@ -1,0 +1,36 @@
+#pragma once
+// The Loop values of a whole vertex set at once (restoring a saved mesh): every vertex's insertion
+// position p^l, and the limit p^inf of every vertex that some insertion position needs or that the
+// caller asks for, from the vertices' addresses alone. Neighbours are found through an AddressIndex, never by walking a mesh, so the
+// work is a few table lookups per vertex. Every value goes through the formulas of loop_rules.h
+// like the mesh's own (loop_geometry.h) and the hierarchy evaluator's, so it has the same bits.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "rgb/surface_point.h"
+
+namespace rgb {
+
+class AddressIndex;
+class BaseMesh;
+
+struct HierarchyPositions {
+    struct Limit {
+        std::uint32_t vertex;
+        glm::dvec3 position;
+    };
+    std::vector<glm::dvec3> insertion;  // per vertex
+    std::vector<Limit> limits;          // the limits computed, by increasing vertex
+};
+
+// points[i]: vertex i's canonical address; base vertices are vertices 0..n0-1 in base order.
+// want_limit[i] != 0: vertex i's limit is wanted too.
+// Throws std::invalid_argument when a vertex's parent triangles are not all present (then the
+// vertex set is no RGB mesh: every vertex needs the corners of the triangles around its parent edge).
+HierarchyPositions hierarchy_positions(const BaseMesh& base, std::span<const SurfacePoint> points, const AddressIndex& index,
+                                       std::span<const std::uint8_t> want_limit);
+
+}  // namespace rgb
