@@ -121,7 +121,7 @@ void Editor::start_save(const std::string& path) {
     }
     save_when_idle_.reset();
     saved_changes_ = document_.changes();
-    file_task_ = BackgroundTask::save(document_.mesh(), path, save_options_);
+    file_task_ = BackgroundTask::save(document_.mesh(), path, document_.with_attributes(save_options_));
     report("saving " + path + " ...", false);
 }
 
@@ -245,7 +245,7 @@ void Editor::keep_recovery_copy(bool force) {
         return;
     }
     recovery_changes_ = document_.changes();
-    recovery_task_ = BackgroundTask::save(document_.mesh(), recovery_->mesh_file().string(), rgbio::SaveOptions{});
+    recovery_task_ = BackgroundTask::save(document_.mesh(), recovery_->mesh_file().string(), document_.with_attributes({}));
     recovery_due_ = std::chrono::steady_clock::now() + recovery_interval_;
 }
 

@@ -34,6 +34,9 @@ constexpr DisplayMode kDisplayModes[] = {
     {"flat", render::Shading::Flat, render::Colouring::Plain},
     {"RGB triangle types", render::Shading::Flat, render::Colouring::RgbType},
     {"level heat map", render::Shading::Smooth, render::Colouring::Level},
+    {"material colours", render::Shading::Smooth, render::Colouring::Material},
+    {"vertex colours", render::Shading::Smooth, render::Colouring::VertexColour},
+    {"texture checker", render::Shading::Smooth, render::Colouring::Checker},
 };
 
 void tooltip(const char* text) {
@@ -197,7 +200,9 @@ void display_panel(render::RenderOptions& options) {
             if (ImGui::Selectable(mode.name, &mode == current)) current = &mode;
         ImGui::EndCombo();
     }
-    tooltip("The heat map gives every level one colour of its own");
+    tooltip("The heat map gives every level one colour of its own. Material colours (Kd), vertex colours and the checker\n"
+            "over the texture coordinates show the file's data, interpolated linearly over each base face (a preview:\n"
+            "a refined save keeps materials, but not yet texture coordinates or colours)");
     options.shading = current->shading;
     options.colouring = current->colouring;
     ImGui::Checkbox("wireframe", &options.wireframe);

@@ -1,12 +1,15 @@
 #include "app/loaded_document.h"
 
-#include "io/mesh_file.h"
+#include "app/file_appearance.h"
 
 namespace app {
 
 LoadedDocument load_document(const std::string& path, render::PositionSource source) {
-    LoadedDocument loaded{rgb::Mesh(), render::SurfaceGeometry(source), SurfaceIndex(), {}};
-    loaded.mesh = rgbio::load_mesh(path, &loaded.warnings);
+    LoadedDocument loaded{rgb::Mesh(), nullptr, render::SurfaceGeometry(source), SurfaceIndex(), {}};
+    rgbio::LoadedAsset asset = rgbio::load_asset(path, &loaded.warnings);
+    loaded.mesh = std::move(asset.mesh);
+    loaded.attributes = std::move(asset.attributes);
+    loaded.geometry.set_appearance(file_appearance(*loaded.attributes, loaded.mesh.base().num_faces()));
     loaded.geometry.rebuild(loaded.mesh);
     loaded.index.rebuild(loaded.mesh, loaded.geometry);
     return loaded;

@@ -1,4 +1,4 @@
-// rgbsub apply IN.obj SCRIPT -o OUT.obj [--timings]: a script of level-of-detail edits, the
+// rgbsub apply IN.obj SCRIPT -o OUT.obj|OUT.glb|OUT.gltf [--timings]: a script of level-of-detail edits, the
 // headless twin of brush strokes.
 #include <algorithm>
 #include <chrono>
@@ -29,7 +29,7 @@ int run_apply(std::span<const std::string> args) {
                               {"--output", "--positions", "--max-triangles", kSharpAngleOption, kBoundaryOption},
                               {{"-o", "--output"}});
     if (arguments.has("--help")) {
-        std::cout << "usage: rgbsub apply IN.obj SCRIPT -o OUT.obj [--timings] [--positions display|limit] [--normals]\n"
+        std::cout << "usage: rgbsub apply IN.obj SCRIPT -o OUT [--timings] [--positions display|limit] [--normals]\n"
                      "                    [--max-triangles N] [--plain] [--strict] [--sharp-angle DEG]\n"
                      "                    [--boundary edge-only|edge-and-corner]\n"
                      "Runs SCRIPT, one edit per line, then saves the adaptive mesh. Coordinates are those of IN.obj's\n"
@@ -47,7 +47,7 @@ int run_apply(std::span<const std::string> args) {
                      "Blank lines and lines starting with # are skipped. --timings prints the engine time per line,\n"
                      "and for the dabs their count and the engine time per dab (p50, p95).\n"
                      "--plain writes an OBJ without the adaptive state (#rgb lines), for tools that dislike them.\n"
-                  << kStrictHelp << kSharpHelp;
+                  << kOutputHelp << kStrictHelp << kSharpHelp;
         return exit_ok;
     }
     if (arguments.positional().size() != 2) throw UsageError("expects IN.obj and SCRIPT");
@@ -64,9 +64,9 @@ int run_apply(std::span<const std::string> args) {
 
     // The whole script is checked before the (possibly long) load and edits.
     const std::vector<rgbio::ScriptLine> script = rgbio::read_lod_script(script_file);
-    std::vector<std::string> warnings;
-    rgb::Mesh mesh = with_sharp_options(arguments, rgbio::load_mesh(input, &warnings, read_options(arguments)));
-    print_warnings("apply", input, warnings);
+    rgbio::LoadedAsset asset = load_input("apply", input, arguments);
+    rgb::Mesh& mesh = asset.mesh;
+    save.attributes = asset.attributes;
     Progress progress("applying " + script_file);
     rgbio::ScriptRunner runner(limit);
     std::vector<double> dab_ms;
@@ -99,7 +99,7 @@ int run_apply(std::span<const std::string> args) {
         std::cout << script_file << ": " << dab_ms.size() << " dabs: engine per dab p50 " << percentile(dab_ms, 0.5)
                   << " ms p95 " << percentile(dab_ms, 0.95) << " ms, " << dab_stats.splits << " splits, " << dab_stats.removals
                   << " removals, " << mesh.num_faces() << " triangles\n";
-    rgbio::save_mesh(mesh, *output, save);
+    save_output("apply", mesh, *output, save);
     return exit_ok;
 }
 

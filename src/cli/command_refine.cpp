@@ -1,4 +1,5 @@
-// rgbsub refine IN.obj -o OUT.obj (--level N | --max-edge L | --tolerance E) [--sphere X,Y,Z,R] [--positions ...] [--sharp-angle DEG]
+// rgbsub refine IN.obj -o OUT.obj|OUT.glb|OUT.gltf (--level N | --max-edge L | --tolerance E) [--sphere X,Y,Z,R]
+// [--positions display|limit] [--sharp-angle DEG]
 #include <charconv>
 #include <cmath>
 #include <iostream>
@@ -55,7 +56,7 @@ int run_refine(std::span<const std::string> args) {
                                kSharpAngleOption, kBoundaryOption},
                               {{"-o", "--output"}});
     if (arguments.has("--help")) {
-        std::cout << "usage: rgbsub refine IN.obj -o OUT.obj (--level N | --max-edge L | --tolerance E) [--sphere X,Y,Z,R]\n"
+        std::cout << "usage: rgbsub refine IN.obj -o OUT (--level N | --max-edge L | --tolerance E) [--sphere X,Y,Z,R]\n"
                      "                     [--positions display|limit] [--normals] [--max-triangles N] [--plain] [--strict]\n"
                      "                     [--sharp-angle DEG] [--boundary edge-only|edge-and-corner]\n"
                      "Sets the level of detail inside the sphere (everywhere without --sphere; its coordinates are\n"
@@ -70,7 +71,7 @@ int run_refine(std::span<const std::string> args) {
                      "--max-edge and --tolerance, found) to exceed --max-triangles (default: from this machine's\n"
                      "memory) is refused and nothing is saved.\n"
                      "--plain writes an OBJ without the adaptive state (#rgb lines), for tools that dislike them.\n"
-                  << kStrictHelp << kSharpHelp;
+                  << kOutputHelp << kStrictHelp << kSharpHelp;
         return exit_ok;
     }
     if (arguments.positional().size() != 1) throw UsageError("expects exactly one IN.obj");
@@ -91,9 +92,9 @@ int run_refine(std::span<const std::string> args) {
     save.state = !arguments.has("--plain");
     const std::string& input = arguments.positional()[0];
 
-    std::vector<std::string> warnings;
-    rgb::Mesh mesh = with_sharp_options(arguments, rgbio::load_mesh(input, &warnings, read_options(arguments)));
-    print_warnings("refine", input, warnings);
+    rgbio::LoadedAsset asset = load_input("refine", input, arguments);
+    rgb::Mesh& mesh = asset.mesh;
+    save.attributes = asset.attributes;
     if (detail) {
         rgbio::DetailOutcome outcome;
         {
@@ -112,7 +113,7 @@ int run_refine(std::span<const std::string> args) {
         progress.update(0, 1, "to level " + std::to_string(request.level));
         rgb::apply_request(mesh, request);
     }
-    rgbio::save_mesh(mesh, *output, save);
+    save_output("refine", mesh, *output, save);
     return exit_ok;
 }
 

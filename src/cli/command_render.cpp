@@ -138,7 +138,7 @@ int run_render(std::span<const std::string> args) {
     for (const std::string& warning : warnings) std::cerr << "rgbsub render: " << input << ": " << warning << '\n';
     render::Image image;
     try {
-        image = render::render_headless(mesh, options, view, [&](const render::OrbitCamera& camera) {
+        image = render::render_headless(mesh, options, view, nullptr, [&](const render::OrbitCamera& camera) {
             if (!screen_pixels) return;
             rgb::DetailRequest request;
             render::OrbitCamera lod_camera = camera;

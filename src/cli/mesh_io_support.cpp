@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "cli/commands.h"
+#include "io/gltf_export.h"
 #include "rgb/sharp_angle.h"
 #include "rgb/state.h"
 
@@ -10,6 +11,23 @@ namespace cli {
 
 void print_warnings(const char* command, const std::string& file, const std::vector<std::string>& warnings) {
     for (const std::string& warning : warnings) std::cerr << "rgbsub " << command << ": " << file << ": warning: " << warning << '\n';
+}
+
+rgbio::LoadedAsset load_input(const char* command, const std::string& file, const Arguments& arguments) {
+    std::vector<std::string> warnings;
+    rgbio::LoadedAsset asset = rgbio::load_asset(file, &warnings, read_options(arguments));
+    print_warnings(command, file, warnings);
+    asset.mesh = with_sharp_options(arguments, std::move(asset.mesh));
+    return asset;
+}
+
+void save_output(const char* command, const rgb::Mesh& mesh, const std::string& file, const rgbio::SaveOptions& save) {
+    std::vector<std::string> warnings = rgbio::dropped_attributes(mesh, save.attributes.get());
+    if (mesh.base().has_sharp_features() && (save.normals || rgbio::is_gltf_path(file)))
+        warnings.push_back("the normals follow the smooth Loop rules (rgb/limit_normals.h): at vertices on tagged creases and "
+                           "corners, whose tangent masks are not implemented yet, they are approximate");
+    print_warnings(command, file, warnings);
+    rgbio::save_mesh_file(mesh, file, save);
 }
 
 rgbio::ReadOptions read_options(const Arguments& arguments) { return {.strict = arguments.has(kStrictSwitch)}; }

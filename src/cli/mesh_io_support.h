@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "cli/arguments.h"
+#include "io/base_attributes.h"
 #include "io/mesh_file.h"
 
 namespace cli {
@@ -34,6 +35,21 @@ rgb::Mesh with_sharp_options(const Arguments& arguments, rgb::Mesh mesh);
 rgbio::ReadOptions read_options(const Arguments& arguments);
 
 void print_warnings(const char* command, const std::string& file, const std::vector<std::string>& warnings);
+
+// Reads `file` with the command's --strict, printing the loader's warnings, and adds the tags of
+// --sharp-angle and --boundary (with_sharp_options).
+rgbio::LoadedAsset load_input(const char* command, const std::string& file, const Arguments& arguments);
+
+// Saves `mesh` with what rides on its base (save.attributes) to `file`: glTF for .glb/.gltf, OBJ
+// otherwise. First prints, as warnings, what the save leaves out.
+void save_output(const char* command, const rgb::Mesh& mesh, const std::string& file, const rgbio::SaveOptions& save);
+
+// The help lines of the output options refine and apply share.
+inline constexpr std::string_view kOutputHelp =
+    "  -o OUT              OUT.obj keeps the adaptive state (and the input's materials, groups, objects and\n"
+    "                      smoothing groups); OUT.glb or OUT.gltf writes glTF 2.0 (positions, limit normals,\n"
+    "                      materials, texture coordinates while the mesh is at level 0)\n"
+    "  --normals           OBJ: vn lines with the exact normals of the Loop limit surface\n";
 
 // "display" or "limit"; throws UsageError otherwise.
 rgbio::SavedPositions parse_positions(const std::string& value);

@@ -10,10 +10,12 @@ OrbitCamera framing_camera(const BoundingSphere& bounds, const HeadlessView& vie
 }
 
 Image render_headless(rgb::Mesh& mesh, const RenderOptions& options, const HeadlessView& view,
+                      std::shared_ptr<const SurfaceAppearance> appearance,
                       const std::function<void(const OrbitCamera&)>& before_drawing) {
     OffscreenContext context(view.size.x, view.size.y);
     Renderer renderer;
     renderer.attach(mesh);
+    if (appearance) renderer.set_appearance(std::move(appearance));
     renderer.set_positions(options.positions);
     const OrbitCamera camera = framing_camera(renderer.bounds(options.base_mesh_overlay), view);
     if (before_drawing) before_drawing(camera);

@@ -95,6 +95,8 @@ TEST_F(EditorFailure, OutOfMemoryInAJobKeepsTheDocument) {
         const rlim_t limit = static_cast<rlim_t>(pages) * static_cast<rlim_t>(::sysconf(_SC_PAGESIZE)) + (rlim_t{160} << 20);
         const rlimit address_space{limit, limit};
         ::setrlimit(RLIMIT_AS, &address_space);
+        // The request is far above the triangle limit a machine of less than ~38 GB sets (Set all refuses
+        // it up front); lifted, so that the job runs into the memory limit itself.
         editor.set_triangle_limit(std::numeric_limits<std::size_t>::max());
         editor.start_flood_fill(8);
         bool failed = false;

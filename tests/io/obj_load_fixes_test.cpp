@@ -60,8 +60,9 @@ TEST(ObjLoadFixes, DialectsFromTheWild) {
     ASSERT_EQ(mesh.triangles.size(), 2u);
     EXPECT_EQ(mesh.triangles[1], (rgb::Triangle{3, 2, 1}));
     ASSERT_EQ(mesh.warnings.size(), 2u);
-    EXPECT_EQ(mesh.warnings[0], "dropped 1 vertex normals (vn, the first on line 8): normals of the input surface do not fit the "
-                                "subdivided one; rgbsub can write new ones when saving");
+    EXPECT_EQ(mesh.warnings[0], "dropped 1 vertex normals (vn, the first on line 8): they cannot be subdivided meaningfully (a "
+                                "refined surface bends between the input's vertices, so its normals follow from its shape, not "
+                                "from the input's); --normals writes the exact normals of the limit surface instead");
     EXPECT_EQ(mesh.warnings[1], "dropped the vertex colours: 3 of the 4 vertices used by faces have none (the first on line 3), "
                                 "and colours are kept only when every vertex has one");
     EXPECT_TRUE(mesh.colours.empty());
