@@ -141,7 +141,9 @@ protected:
         for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(folder)) ++n;
         return n;
     }
-    const std::filesystem::path folder = fresh_folder("recovery") / "state" / "rgbsub";
+    // One folder per test: ctest runs them in parallel processes, which must not remove each other's.
+    const std::filesystem::path folder =
+        fresh_folder(std::string("recovery_") + ::testing::UnitTest::GetInstance()->current_test_info()->name()) / "state" / "rgbsub";
 };
 
 // A whole-mesh action is risky, so unsaved work is copied before it starts.
