@@ -5,11 +5,17 @@ const int kMaxLevelColours = 32;
 const int kColourPlain = 0;
 const int kColourRgb = 1;
 const int kColourLevel = 2;
+const int kColourMaterial = 3;
+const int kColourVertex = 4;
+const int kColourChecker = 5;
 
 in vec3 v_position;  // like u_eye and the brush, scaled by u_shading_scale (surface.vert)
 in vec3 v_normal;
 in vec3 v_barycentric;
 flat in uint v_code;
+flat in vec4 v_material_colour;  // alpha 0: no material
+in vec4 v_vertex_colour;         // alpha 0: no vertex colours
+in vec2 v_texcoord;
 
 uniform vec3 u_eye;
 uniform bool u_flat;
@@ -17,6 +23,8 @@ uniform int u_colouring;
 uniform vec3 u_plain_colour;
 uniform vec3 u_rgb_colours[3];
 uniform vec3 u_level_colours[kMaxLevelColours];
+uniform vec3 u_checker_colours[2];
+uniform float u_checker_cells;  // per unit of texture coordinate
 uniform bool u_wire;
 uniform float u_wire_width;  // pixels
 uniform vec3 u_wire_colour;
@@ -32,6 +40,12 @@ out vec4 frag_colour;
 vec3 base_colour() {
     if (u_colouring == kColourRgb) return u_rgb_colours[min(v_code & 3u, 2u)];
     if (u_colouring == kColourLevel) return u_level_colours[min(int((v_code >> 8) & 255u), kMaxLevelColours - 1)];
+    if (u_colouring == kColourMaterial && v_material_colour.a > 0.0) return v_material_colour.rgb;
+    if (u_colouring == kColourVertex && v_vertex_colour.a > 0.0) return v_vertex_colour.rgb;
+    if (u_colouring == kColourChecker) {
+        ivec2 cell = ivec2(floor(v_texcoord * u_checker_cells));
+        return u_checker_colours[(cell.x + cell.y) & 1];
+    }
     return u_plain_colour;
 }
 

@@ -4,6 +4,8 @@
 #include <thread>
 #include <utility>
 
+#include "io/gltf_export.h"
+
 namespace app {
 
 struct BackgroundTask::Shared {
@@ -57,7 +59,7 @@ std::unique_ptr<BackgroundTask> BackgroundTask::save(rgb::Mesh copy, const std::
     std::unique_ptr<BackgroundTask> task(new BackgroundTask(Kind::Save, path));
     start_thread([shared = task->shared_, mesh = std::move(copy), path, options] {
         try {
-            rgbio::save_mesh(mesh, path, options);
+            rgbio::save_mesh_file(mesh, path, options);
         } catch (const std::exception& failure) {
             shared->error = describe(failure);
         }

@@ -21,7 +21,7 @@ public:
 
     // Reads `path` with load_document.
     static std::unique_ptr<BackgroundTask> open(const std::string& path, render::PositionSource source);
-    // Writes `copy` to `path` with rgbio::save_mesh (atomically).
+    // Writes `copy` to `path` with rgbio::save_mesh_file (atomically; glTF for .glb and .gltf).
     static std::unique_ptr<BackgroundTask> save(rgb::Mesh copy, const std::string& path, const rgbio::SaveOptions& options);
 
     ~BackgroundTask();

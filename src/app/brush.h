@@ -25,6 +25,15 @@ struct BrushSettings {
     float falloff = 0.5f;
     // Paint only faces facing the camera and connected to the hit through the surface.
     bool paint_through = false;
+    // What a dab asks for: the target level, a detail size or a tolerance (README "Detail by size,
+    // accuracy and view"): no edge longer than the size, or the surface shown within the tolerance
+    // of the limit surface, in the ball, as coarse as that allows (set; refine only adds, coarsen
+    // only removes); the amount in screen pixels where the dab lands (relative detail) or in the
+    // mesh's units (constant detail). Such dabs have no falloff and paint through.
+    enum class Target { Level, DetailSize, Tolerance } target = Target::Level;
+    RadiusUnit detail_unit = RadiusUnit::ScreenPixels;
+    float detail_px = 6.0f;
+    float detail_world = 0.01f;
 };
 
 // Shift inverts: refine becomes coarsen down to the base level (so it always removes what refining

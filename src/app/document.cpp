@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <utility>
 
+#include "io/gltf_export.h"
 #include "rgb/state.h"
 
 namespace app {
@@ -21,6 +22,7 @@ std::vector<std::string> Document::open(const std::string& path) {
 
 void Document::adopt(LoadedDocument loaded, std::string path, bool dirty) {
     mesh_ = std::move(loaded.mesh);  // observers stay with the object
+    attributes_ = std::move(loaded.attributes);
     changes_->clear();
     geometry_ = std::move(loaded.geometry);
     index_ = std::move(loaded.index);
@@ -34,6 +36,8 @@ void Document::adopt(LoadedDocument loaded, std::string path, bool dirty) {
 }
 
 void Document::adopt(rgb::Mesh mesh, std::string path) {
+    attributes_ = nullptr;
+    geometry_.set_appearance(nullptr);
     replace_mesh(std::move(mesh));
     uv_channel_.reset();
     uv_layout_.reset();
@@ -44,7 +48,7 @@ void Document::adopt(rgb::Mesh mesh, std::string path) {
 }
 
 void Document::save(const std::string& path, const rgbio::SaveOptions& options) {
-    rgbio::save_mesh(mesh_, path, options);
+    rgbio::save_mesh_file(mesh_, path, with_attributes(options));
     path_ = path;
     dirty_ = false;
 }
@@ -69,6 +73,12 @@ void Document::set_uv_interpolation(rgb::UvInterpolation interpolation) {
     uv_layout_.reset();
     dirty_ = true;
     ++changes_count_;
+}
+
+rgbio::SaveOptions Document::with_attributes(rgbio::SaveOptions options) {
+    options.attributes = attributes_;
+    options.uvs = uv_layout();
+    return options;
 }
 
 void Document::saved_as(const std::string& path, std::uint64_t changes) {

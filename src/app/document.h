@@ -33,8 +33,14 @@ public:
     void adopt(LoadedDocument loaded, std::string path, bool dirty = false);
     // Adopts `mesh` as an unsaved document named `path` (may be empty).
     void adopt(rgb::Mesh mesh, std::string path);
-    // Throws rgbio::SaveError. Clears the unsaved mark and makes `path` the document's file.
+    // Throws rgbio::SaveError. Clears the unsaved mark and makes `path` the document's file. Writes
+    // glTF for a .glb or .gltf path, else OBJ; with_attributes(options) either way.
     void save(const std::string& path, const rgbio::SaveOptions& options);
+    // `options` with what rides on the base mesh (materials, groups, colours from the file read, the
+    // exact texture coordinates' layout), for saves made elsewhere (in the background).
+    rgbio::SaveOptions with_attributes(rgbio::SaveOptions options);
+    // The file's look (materials, vertex colours, texture coordinates) the geometry shows; null if none.
+    const std::shared_ptr<const render::SurfaceAppearance>& appearance() const { return geometry_.appearance(); }
     // A copy saved elsewhere (in the background) reached `path`: the file is the document's, and
     // clean if nothing changed since the copy was made at change count `changes`.
     void saved_as(const std::string& path, std::uint64_t changes);
@@ -89,6 +95,7 @@ private:
     void resync();
 
     rgb::Mesh mesh_;
+    std::shared_ptr<const rgbio::BaseAttributes> attributes_;  // null for a mesh made, not read
     // Its journal observes the mesh first, before anything that could fail while told of a change.
     UndoHistory history_{mesh_};
     std::string path_;

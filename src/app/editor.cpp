@@ -117,6 +117,7 @@ void Editor::key_pressed(Key key, Modifiers mods) {
         case Key::Digit3: brush_.mode = BrushMode::Set; break;
         case Key::Escape:
             if (pending_ != Pending::None) answer_pending(false);
+            else if (view_lod()) freeze_view_lod();
             else if (!jobs_.empty()) cancel_job();
             else stop_opening();
             break;
@@ -157,9 +158,11 @@ void Editor::update(std::chrono::microseconds job_slice) {
 
 void Editor::finish_work() {
     if (stroke_) end_stroke();
-    while (!jobs_.empty() || file_task_ || recovery_task_ || save_when_idle_) {
+    // The view-dependent mode never ends by itself: it is done for now once settled for the camera.
+    const auto working = [this] { return !jobs_.empty() && !(view_lod() && view_lod()->converged()); };
+    while (working() || file_task_ || recovery_task_ || save_when_idle_) {
         update(std::chrono::seconds(1));
-        if (jobs_.empty()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        if (!working()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
     }
 }
 
@@ -240,10 +243,14 @@ void Editor::dab(glm::vec2 px) {
     const double radius = brush_world_radius(hit->point);
     const auto displayed = document_.geometry().corners(hit->face);
     const BaseSpaceHit at = to_base_space(mesh, hit->face, displayed, hit->point, radius);
-    const rgb::Dab request = make_dab(brush_, mods_.shift, at, camera_.ray_through(px, viewport_).direction);
     timing_.last_pick_ms = milliseconds_since(pick_start);
-    const int from_level = mesh.level(hit->face);
-    stroke_->add([&mesh, request, from_level] { return dab_pieces(mesh, request, from_level); }, stroke_script_.lines(request));
+    if (brush_.target != BrushSettings::Target::Level) {
+        detail_dab(at, hit->point);
+    } else {
+        const rgb::Dab request = make_dab(brush_, mods_.shift, at, camera_.ray_through(px, viewport_).direction);
+        const int from_level = mesh.level(hit->face);
+        stroke_->add([&mesh, request, from_level] { return dab_pieces(mesh, request, from_level); }, stroke_script_.lines(request));
+    }
     ++timing_.dabs;
     last_hit_point_ = hit->point;
 }
@@ -281,12 +288,27 @@ bool Editor::redo() {
 
 void Editor::start_flood_fill(int level) {
     if (refuse_if_busy("set all")) return;
+    level = std::clamp(level, 0, kMaxBrushLevel);
+    rgb::LevelRequest everywhere;
+    everywhere.level = level;  // a Set over the whole surface
+    try {
+        rgbio::check_request_size(document_.mesh(), everywhere, triangle_limit_);
+    } catch (const rgbio::TooLarge& refused) {
+        report("set all to level " + std::to_string(level) + " refused: " + refused.what(), true);
+        return;
+    }
     keep_recovery_copy(true);
-    queue(make_flood_fill(document_.mesh(), std::clamp(level, 0, kMaxBrushLevel)));
+    queue(make_flood_fill(document_.mesh(), level));
 }
 
 void Editor::start_auto_lod() {
     if (refuse_if_busy("start automatic LOD")) return;
+    try {
+        rgbio::check_budget_size(auto_lod_settings_.triangle_budget, triangle_limit_);
+    } catch (const rgbio::TooLarge& refused) {
+        report(std::string("automatic LOD refused: ") + refused.what(), true);
+        return;
+    }
     keep_recovery_copy(true);
     queue(std::make_unique<AutoLodJob>(document_.mesh(), auto_lod_settings_));
 }

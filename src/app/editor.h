@@ -14,6 +14,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -24,6 +25,7 @@
 #include "app/background_task.h"
 #include "app/brush.h"
 #include "app/crease_tool.h"
+#include "app/detail_job.h"
 #include "app/document.h"
 #include "app/input.h"
 #include "app/mesh_job.h"
@@ -32,8 +34,10 @@
 #include "app/stroke_sampler.h"
 #include "app/stroke_script.h"
 #include "app/surface_picking.h"
+#include "app/view_lod_job.h"
 #include "app/view_camera.h"
 #include "io/mesh_file.h"
+#include "io/triangle_limit.h"
 
 namespace app {
 
@@ -112,8 +116,12 @@ public:
     void reset_view();
     bool undo();
     bool redo();
+    // Both refuse (with a message naming the estimate) a result above the triangle limit.
     void start_flood_fill(int level);
     void start_auto_lod();
+    // The most triangles a whole-mesh action may make (default: sized to the machine's memory).
+    std::size_t triangle_limit() const { return triangle_limit_; }
+    void set_triangle_limit(std::size_t limit) { triangle_limit_ = limit; }
     // Esc: stops the work under way (what is done stays as one undoable step) and drops what waits.
     void cancel_job();
     // The work under way, if any: a stroke still being applied or a whole-mesh job.
@@ -126,6 +134,18 @@ public:
     CreaseToolSettings& crease_tool() { return crease_tool_; }
     // Gives the base mesh other crease tags as one undoable step; false (with a message) if refused.
     bool set_sharp_features(const rgb::SharpFeatures& features, std::string label);
+
+    // ---- detail by size, accuracy and view (detail_job.h, view_lod_job.h; editor_detail.cpp) ----
+    DetailSettings& detail_settings() { return detail_settings_; }
+    // Max edge or tolerance over the whole mesh, a slice per frame: one undoable step.
+    void start_detail_edit();
+    // The view-dependent mode: every frame the detail follows the camera, until frozen.
+    void start_view_lod();
+    // Ends the view-dependent mode: the mesh stays as it is, one undoable step (Esc does the same;
+    // saving and opening a file freeze it first).
+    void freeze_view_lod();
+    // The mode's job while it runs.
+    ViewLodJob* view_lod() const;
 
     // ---- files ----
     // Right away, on this thread (tests, headless frames); each returns false and sets an error
@@ -146,6 +166,8 @@ public:
     // "Save and quit" in the quit question.
     void save_and_quit();
     const BackgroundTask* file_task() const { return file_task_.get(); }
+    // Files dropped on the window: the first is opened as by request_open (the editor holds one mesh).
+    void files_dropped(std::span<const std::string> paths);
     Pending pending() const { return pending_; }
     const std::string& pending_path() const { return pending_path_; }
     void answer_pending(bool proceed);
@@ -184,6 +206,9 @@ private:
     void continue_stroke(glm::vec2 px);
     void end_stroke();
     void dab(glm::vec2 px);
+    // A detail-size or tolerance dab (editor_detail.cpp): a max-edge or tolerance request in the
+    // ball, applied whole.
+    void detail_dab(const BaseSpaceHit& at, const glm::dvec3& hit_point);
     std::optional<SurfaceHit> pick(glm::vec2 px);
     void queue(std::unique_ptr<MeshJob> job);
     // File tasks: start, and take what finished.
@@ -208,14 +233,13 @@ private:
     // behind strokes).
     bool refuse_if_busy(const char* action);
     bool refuse_if_whole_mesh_job(const char* action);
-    // save_options_ with the document's texture coordinates.
-    rgbio::SaveOptions document_save_options();
 
     Document document_;
     ViewCamera camera_;
     glm::ivec2 viewport_;
     BrushSettings brush_;
     AutoLodSettings auto_lod_settings_;
+    std::size_t triangle_limit_ = rgbio::default_triangle_limit();
     rgbio::SaveOptions save_options_;
 
     glm::vec2 mouse_{0.0f};
@@ -255,6 +279,8 @@ private:
     float covered_right_ = 0.0f;
     Browse browse_request_ = Browse::None;
     std::uint64_t open_failures_ = 0;
+
+    DetailSettings detail_settings_;
 
     CreaseToolSettings crease_tool_;
     std::optional<CreaseDrag> crease_drag_;

@@ -32,12 +32,6 @@ void Editor::load(const std::string& path) {
     if (recovery_) recovery_->remove_own();
 }
 
-rgbio::SaveOptions Editor::document_save_options() {
-    rgbio::SaveOptions options = save_options_;
-    options.uvs = document_.uv_layout();
-    return options;
-}
-
 bool Editor::save() {
     if (document_.path().empty()) {
         report("the mesh has no file yet: use Save as", true);
@@ -49,7 +43,7 @@ bool Editor::save() {
 bool Editor::save_as(const std::string& path) {
     if (refuse_if_busy("save")) return false;
     try {
-        document_.save(path, document_save_options());
+        document_.save(path, save_options_);
         report("saved " + path, false);
     } catch (const rgbio::SaveError& error) {
         report(error.what(), true);
@@ -82,12 +76,17 @@ bool Editor::save_strokes(const std::string& path) {
 // ---- in the background, with questions ------------------------------------------------------
 
 void Editor::request_open(const std::string& path) {
+    freeze_view_lod();  // it would hold the opened file back for ever
     if (file_task_) {
         report("wait until " + file_task_->path() + " is " + (file_task_->kind() == BackgroundTask::Kind::Open ? "read" : "saved"), true);
         return;
     }
     file_task_ = BackgroundTask::open(path, document_.geometry().source());
     report("opening " + path + " ...", false);
+}
+
+void Editor::files_dropped(std::span<const std::string> paths) {
+    if (!paths.empty()) request_open(paths.front());
 }
 
 void Editor::request_save() {
@@ -110,6 +109,7 @@ void Editor::request_save_as(const std::string& path) {
 
 // The copy is made now, between frames, so the thread writing it shares nothing with the editor.
 void Editor::start_save(const std::string& path) {
+    freeze_view_lod();  // what is shown is saved, not a mesh that keeps changing
     if (file_task_) {
         report("wait until " + file_task_->path() + " is " + (file_task_->kind() == BackgroundTask::Kind::Open ? "read" : "saved"), true);
         return;
@@ -121,7 +121,7 @@ void Editor::start_save(const std::string& path) {
     }
     save_when_idle_.reset();
     saved_changes_ = document_.changes();
-    file_task_ = BackgroundTask::save(document_.mesh(), path, document_save_options());
+    file_task_ = BackgroundTask::save(document_.mesh(), path, document_.with_attributes(save_options_));
     report("saving " + path + " ...", false);
 }
 
@@ -245,9 +245,7 @@ void Editor::keep_recovery_copy(bool force) {
         return;
     }
     recovery_changes_ = document_.changes();
-    rgbio::SaveOptions recovery_options;
-    recovery_options.uvs = document_.uv_layout();
-    recovery_task_ = BackgroundTask::save(document_.mesh(), recovery_->mesh_file().string(), recovery_options);
+    recovery_task_ = BackgroundTask::save(document_.mesh(), recovery_->mesh_file().string(), document_.with_attributes({}));
     recovery_due_ = std::chrono::steady_clock::now() + recovery_interval_;
 }
 

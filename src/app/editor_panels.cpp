@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "app/crease_panel.h"
+#include "app/detail_panel.h"
 #include "app/editor.h"
 #include "app/editor_dialogs.h"
 #include "render/colour_map.h"
@@ -33,6 +34,9 @@ constexpr DisplayMode kDisplayModes[] = {
     {"flat", render::Shading::Flat, render::Colouring::Plain},
     {"RGB triangle types", render::Shading::Flat, render::Colouring::RgbType},
     {"level heat map", render::Shading::Smooth, render::Colouring::Level},
+    {"material colours", render::Shading::Smooth, render::Colouring::Material},
+    {"vertex colours", render::Shading::Smooth, render::Colouring::VertexColour},
+    {"texture checker", render::Shading::Smooth, render::Colouring::Checker},
 };
 
 void tooltip(const char* text) {
@@ -67,8 +71,33 @@ void brush_panel(Editor& editor) {
     ImGui::RadioButton("set level", &mode, 2);
     tooltip("Makes the level exactly the target (key 3)");
     brush.mode = static_cast<BrushMode>(mode);
-    ImGui::SliderInt("target level", &brush.target_level, 0, kMaxBrushLevel);
-    tooltip("The level painting aims for (keys - and =)");
+    int target = static_cast<int>(brush.target);
+    ImGui::RadioButton("level", &target, 0);
+    tooltip("Dabs aim for a subdivision level");
+    ImGui::SameLine();
+    ImGui::RadioButton("detail size", &target, 1);
+    tooltip("Dabs aim for an edge length: no edge longer, as coarse as that allows (no falloff)");
+    ImGui::SameLine();
+    ImGui::RadioButton("tolerance", &target, 2);
+    tooltip("Dabs aim for accuracy: the surface shown within the amount of the Loop limit surface,\n"
+            "with as few triangles as that allows (no falloff)");
+    brush.target = static_cast<BrushSettings::Target>(target);
+    if (brush.target == BrushSettings::Target::Level) {
+        ImGui::SliderInt("target level", &brush.target_level, 0, kMaxBrushLevel);
+        tooltip("The level painting aims for (keys - and =)");
+    } else {
+        int unit = static_cast<int>(brush.detail_unit);
+        ImGui::RadioButton("px##detail", &unit, 0);
+        tooltip("Relative detail: the amount in screen pixels where the dab lands (zoom in for finer)");
+        ImGui::SameLine();
+        ImGui::RadioButton("world##detail", &unit, 1);
+        tooltip("Constant detail: the amount in the mesh's units");
+        brush.detail_unit = static_cast<RadiusUnit>(unit);
+        if (brush.detail_unit == RadiusUnit::ScreenPixels)
+            ImGui::SliderFloat("amount (px)", &brush.detail_px, 0.1f, 100.0f, "%.3g px", ImGuiSliderFlags_Logarithmic);
+        else
+            ImGui::DragFloat("amount (world)", &brush.detail_world, brush.detail_world * 0.01f, 1e-6f, 1e6f, "%.4g units");
+    }
     int unit = static_cast<int>(brush.unit);
     ImGui::RadioButton("screen", &unit, 0);
     tooltip("Radius in screen pixels: the brush looks the same size at any zoom");
@@ -88,7 +117,10 @@ void brush_panel(Editor& editor) {
             "On: everything within the radius, the far side of thin parts too.");
     // What a drag does now: Shift visibly turns refining into removing detail.
     const BrushMode active = editor.active_mode();
-    const std::string action = std::string(mode_name(active)) + " to level " + std::to_string(editor.active_level());
+    const std::string action = std::string(mode_name(active)) +
+                               (brush.target == BrushSettings::Target::Level        ? " to level " + std::to_string(editor.active_level())
+                                : brush.target == BrushSettings::Target::DetailSize ? std::string(" to the detail size")
+                                                                                    : std::string(" to the tolerance"));
     if (active != brush.mode) ImGui::TextColored(kInvertedColour, "Shift held: drag will %s", action.c_str());
     else ImGui::TextDisabled("drag: %s (Shift: inverse)", action.c_str());
 }
@@ -176,7 +208,9 @@ void display_panel(render::RenderOptions& options) {
             if (ImGui::Selectable(mode.name, &mode == current)) current = &mode;
         ImGui::EndCombo();
     }
-    tooltip("The heat map gives every level one colour of its own");
+    tooltip("The heat map gives every level one colour of its own. Material colours (Kd), vertex colours and the checker\n"
+            "over the texture coordinates show the file's data, interpolated linearly over each base face (a preview:\n"
+            "a refined save keeps materials, but not yet texture coordinates or colours)");
     options.shading = current->shading;
     options.colouring = current->colouring;
     ImGui::Checkbox("wireframe", &options.wireframe);
@@ -287,6 +321,7 @@ void draw_panels(Editor& editor, PanelState& state, render::RenderOptions& optio
         brush_panel(editor);
         crease_panel(editor);
         actions_panel(editor, state);
+        detail_panel(editor);
         files_panel(editor, state);
         display_panel(options);
         statistics_panel(editor, state, dt_s);

@@ -12,6 +12,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include <unistd.h>
 
@@ -130,7 +132,8 @@ void install_callbacks(GLFWwindow* window) {
     });
     glfwSetDropCallback(window, [](GLFWwindow* w, int count, const char** paths) {
         state_of(w).redraw = true;
-        if (count > 0) editor_of(w).run_guarded([&] { editor_of(w).request_open(paths[0]); });
+        const std::vector<std::string> dropped(paths, paths + count);
+        editor_of(w).run_guarded([&] { editor_of(w).files_dropped(dropped); });
     });
     glfwSetWindowCloseCallback(window, [](GLFWwindow* w) {
         state_of(w).redraw = true;

@@ -2,10 +2,12 @@
 // A mesh read from a file with everything the editor shows and picks on already built, so that
 // reading can happen away from the window's thread and handing it over costs nothing.
 #include <optional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "app/surface_index.h"
+#include "io/base_attributes.h"
 #include "render/surface_geometry.h"
 #include "rgb/mesh.h"
 #include "rgb/uv_layout.h"
@@ -14,13 +16,15 @@ namespace app {
 
 struct LoadedDocument {
     rgb::Mesh mesh;
+    std::shared_ptr<const rgbio::BaseAttributes> attributes;  // what rides on its base (never null)
     render::SurfaceGeometry geometry;
     SurfaceIndex index;
     std::vector<std::string> warnings;
     std::optional<rgb::UvChannel> uvs;  // the base mesh's texture coordinates (io/base_uvs.h)
 };
 
-// Reads `path` (throws rgbio::ObjError) and builds its geometry at `source` positions and its index.
+// Reads `path` (throws rgbio::ObjError) and builds its geometry at `source` positions, with the
+// file's look (file_appearance.h), and its index.
 LoadedDocument load_document(const std::string& path, render::PositionSource source);
 
 }  // namespace app

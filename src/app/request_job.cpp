@@ -9,7 +9,16 @@ namespace app {
 RequestJob::RequestJob(rgb::Mesh& mesh, std::string label, bool open) : mesh_(mesh), label_(std::move(label)), stroke_(open), open_(open) {}
 
 void RequestJob::add(Pieces pieces, const std::string& script_lines) {
-    requests_.push_back(std::move(pieces));
+    requests_.push_back([this, pieces = std::move(pieces)] {
+        std::vector<Whole> cut;
+        for (rgb::LevelRequest& piece : pieces()) cut.push_back([this, piece = std::move(piece)] { return rgb::apply_request(mesh_, piece); });
+        return cut;
+    });
+    script_ += script_lines;
+}
+
+void RequestJob::add_whole(Whole apply, const std::string& script_lines) {
+    requests_.push_back([apply = std::move(apply)] { return std::vector<Whole>{apply}; });
     script_ += script_lines;
 }
 
@@ -21,14 +30,14 @@ bool RequestJob::step(std::chrono::microseconds slice) {
     for (bool applied = false; !applied || Clock::now() + piece_time() < deadline;) {
         if (pieces_.empty()) {
             if (requests_.empty()) break;
-            for (rgb::LevelRequest& piece : requests_.front()()) pieces_.push_back(std::move(piece));
+            for (Whole& piece : requests_.front()()) pieces_.push_back(std::move(piece));
             requests_.pop_front();
             pieces_done_ = 0;
             if (pieces_.empty()) ++requests_done_;
             continue;
         }
         const auto start = Clock::now();
-        stats_ += rgb::apply_request(mesh_, pieces_.front());
+        stats_ += pieces_.front()();
         const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
         piece_seconds_ = pieces_done_ + requests_done_ == 0 ? seconds : 0.8 * piece_seconds_ + 0.2 * seconds;
         pieces_.pop_front();

@@ -6,6 +6,7 @@
 #include <deque>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "app/mesh_job.h"
 #include "rgb/requests.h"
@@ -26,6 +27,10 @@ public:
     using Pieces = std::function<std::vector<rgb::LevelRequest>()>;
     // Appends one request and the script lines that say it.
     void add(Pieces pieces, const std::string& script_lines);
+    // Appends a request applied whole, in one piece (a detail-size dab: small, and its criterion
+    // cuts no pieces), and the script lines that say it.
+    using Whole = std::function<rgb::RequestStats()>;
+    void add_whole(Whole apply, const std::string& script_lines);
     void close() { open_ = false; }
 
     bool step(std::chrono::microseconds slice) override;
@@ -44,8 +49,10 @@ private:
     std::string label_;
     bool stroke_;
     bool open_;
-    std::deque<Pieces> requests_;          // not cut yet
-    std::deque<rgb::LevelRequest> pieces_;  // of the request under way
+    // A request not cut yet, and the pieces of the one under way, each as what applies it.
+    using Cut = std::function<std::vector<Whole>()>;
+    std::deque<Cut> requests_;
+    std::deque<Whole> pieces_;
     std::size_t requests_done_ = 0;
     std::size_t pieces_done_ = 0;  // of the request under way
     rgb::RequestStats stats_;

@@ -1,4 +1,4 @@
-// rgbsub apply IN.obj SCRIPT -o OUT.obj [--timings]: a script of level-of-detail edits, the
+// rgbsub apply IN.obj SCRIPT -o OUT.obj|OUT.glb|OUT.gltf [--timings]: a script of level-of-detail edits, the
 // headless twin of brush strokes.
 #include <algorithm>
 #include <chrono>
@@ -30,7 +30,7 @@ int run_apply(std::span<const std::string> args) {
                                kUvInterpolationOption},
                               {{"-o", "--output"}});
     if (arguments.has("--help")) {
-        std::cout << "usage: rgbsub apply IN.obj SCRIPT -o OUT.obj [--timings] [--positions display|limit] [--normals]\n"
+        std::cout << "usage: rgbsub apply IN.obj SCRIPT -o OUT [--timings] [--positions display|limit] [--normals]\n"
                      "                    [--max-triangles N] [--plain] [--strict] [--sharp-angle DEG]\n"
                      "                    [--boundary edge-only|edge-and-corner] [--uv-interpolation OPTION]\n"
                      "Runs SCRIPT, one edit per line, then saves the adaptive mesh. Coordinates are those of IN.obj's\n"
@@ -39,12 +39,16 @@ int run_apply(std::span<const std::string> args) {
                      "  refine N [sphere X Y Z R]    at least level N there\n"
                      "  coarsen N [sphere X Y Z R]   at most level N there\n"
                      "  budget TRIANGLES             refine the longest edges up to a triangle count, or trim to it\n"
+                     "  max-edge L [sphere X Y Z R]  no edge longer than L (or L% of the bounding-box diagonal), as\n"
+                     "                               coarse as that allows\n"
+                     "  tolerance E [sphere X Y Z R] the displayed surface within E (or E%) of the Loop limit surface,\n"
+                     "                               with as few triangles as that allows; prints the error reached\n"
                      "  brush refine|coarsen|set LEVEL RADIUS [FALLOFF]   the brush for the dab lines that follow\n"
                      "  dab X Y Z [VX VY VZ]         one dab (with a view direction: facing, connected faces only)\n"
                      "Blank lines and lines starting with # are skipped. --timings prints the engine time per line,\n"
                      "and for the dabs their count and the engine time per dab (p50, p95).\n"
                      "--plain writes an OBJ without the adaptive state (#rgb lines), for tools that dislike them.\n"
-                  << kStrictHelp << kSharpHelp << kUvHelp;
+                  << kOutputHelp << kStrictHelp << kSharpHelp << kUvHelp;
         return exit_ok;
     }
     if (arguments.positional().size() != 2) throw UsageError("expects IN.obj and SCRIPT");
@@ -61,12 +65,12 @@ int run_apply(std::span<const std::string> args) {
 
     // The whole script is checked before the (possibly long) load and edits.
     const std::vector<rgbio::ScriptLine> script = rgbio::read_lod_script(script_file);
-    std::vector<std::string> warnings;
-    auto [mesh, uvs] = load_input(arguments, input, warnings);
-    save.uvs = uvs;
-    print_warnings("apply", input, warnings);
+    rgbio::LoadedAsset asset = load_input("apply", input, arguments);
+    rgb::Mesh& mesh = asset.mesh;
+    save.attributes = asset.attributes;
+    save.uvs = input_uv_layout(arguments, asset);
     Progress progress("applying " + script_file);
-    rgbio::ScriptRunner runner;
+    rgbio::ScriptRunner runner(limit);
     std::vector<double> dab_ms;
     rgb::RequestStats dab_stats;
     for (std::size_t i = 0; i < script.size(); ++i) {
@@ -82,6 +86,9 @@ int run_apply(std::span<const std::string> args) {
         if (stats.level_cap_bound)
             std::cerr << "rgbsub apply: " << script_file << ':' << line.line << ": wanted detail stops at the maximum level "
                       << rgb::kMaxLevel << '\n';
+        if (const std::optional<double> error = runner.reached_error())
+            std::cout << script_file << ':' << line.line << ": " << line.text << ": maximum error " << *error << ", "
+                      << mesh.num_faces() << " triangles\n";
         if (dab) {
             dab_ms.push_back(elapsed.count());
             dab_stats += stats;
@@ -94,7 +101,7 @@ int run_apply(std::span<const std::string> args) {
         std::cout << script_file << ": " << dab_ms.size() << " dabs: engine per dab p50 " << percentile(dab_ms, 0.5)
                   << " ms p95 " << percentile(dab_ms, 0.95) << " ms, " << dab_stats.splits << " splits, " << dab_stats.removals
                   << " removals, " << mesh.num_faces() << " triangles\n";
-    rgbio::save_mesh(mesh, *output, save);
+    save_output("apply", mesh, *output, save);
     return exit_ok;
 }
 

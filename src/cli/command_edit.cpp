@@ -24,8 +24,14 @@ int write_screenshot(const std::string& file, const std::string& output, const s
         frame.colouring = render::Colouring::Level;
     } else if (mode == "wire") {
         frame.wireframe = true;
+    } else if (mode == "material") {
+        frame.colouring = render::Colouring::Material;
+    } else if (mode == "colours") {
+        frame.colouring = render::Colouring::VertexColour;
+    } else if (mode == "checker") {
+        frame.colouring = render::Colouring::Checker;
     } else if (mode != "shaded") {
-        throw UsageError("--mode must be shaded, wire, rgb or level, got '" + mode + "'");
+        throw UsageError("--mode must be shaded, wire, rgb, level, material, colours or checker, got '" + mode + "'");
     }
     rgbio::write_file_atomically(output, render::encode_png(app::render_editor_frame(file, frame)));
     return exit_ok;
@@ -42,7 +48,8 @@ int run_edit(std::span<const std::string> args) {
                      "                      from launch to the first frame and to FILE shown\n"
                      "  --screenshot PATH   write one editor frame, panels included, as a PNG and exit\n"
                      "                      (headless through OSMesa: no display needed)\n"
-                     "  --mode MODE         for the screenshot: shaded, wire, rgb or level\n"
+                     "  --mode MODE         for the screenshot: shaded, wire, rgb, level, or the file's look:\n"
+                     "                      material (Kd), colours (vertex colours), checker (over the UVs)\n"
                   << kStrictHelp;
         return exit_ok;
     }

@@ -12,17 +12,20 @@
 #include "io/atomic_file.h"
 #include "cli/mesh_io_support.h"
 #include "io/mesh_file.h"
+#include "io/triangle_limit.h"
 #include "render/headless.h"
 #include "rgb/loop_geometry.h"
+#include "rgb/lod_criteria.h"
 #include "rgb/mesh.h"
+#include "rgb/screen_detail.h"
 
 namespace cli {
 namespace {
 
 constexpr std::string_view kUsage =
     "usage: rgbsub render IN.obj -o OUT.png [--size WxH] [--mode shaded|flat|rgb|level] [--wire]\n"
-    "                     [--view AZIMUTH,ELEVATION] [--limit] [--base] [--strict] [--sharp-angle DEG]\n"
-    "                     [--boundary edge-only|edge-and-corner]\n"
+    "                     [--view AZIMUTH,ELEVATION] [--limit] [--base] [--screen-lod PX [--lod-view AZ,EL]]\n"
+    "                     [--max-triangles N] [--strict] [--sharp-angle DEG] [--boundary edge-only|edge-and-corner]\n"
     "Renders the mesh headless (OSMesa, no display needed), framed automatically.\n"
     "  -o, --output PATH   the PNG to write (saved like OBJ files: see the README)\n"
     "  --size WxH          image size in pixels (default 1024x768)\n"
@@ -33,6 +36,10 @@ constexpr std::string_view kUsage =
     "  --limit             limit-surface positions where the mesh holds a vertex's ring,\n"
     "                      displayed positions elsewhere (the count is reported)\n"
     "  --base              overlay the base mesh's edges\n"
+    "  --screen-lod PX     first set the detail for this view: edges longer than PX pixels on\n"
+    "                      screen are split, none is finer than that, and detail outside the view\n"
+    "                      or on faces turned away goes (the editor's view-dependent mode, settled)\n"
+    "  --lod-view AZ,EL    set that detail for another view of the same framing (to see it from aside)\n"
     "  --strict            refuse a non-manifold input instead of cutting it apart\n"
     "  --sharp-angle DEG, --boundary B   crease tags added to the file's (see rgbsub refine --help);\n"
     "                      sharp edges are drawn as coloured lines\n"
@@ -89,7 +96,9 @@ void apply_mode(const std::string& mode, render::RenderOptions& options) {
 }  // namespace
 
 int run_render(std::span<const std::string> args) {
-    const Arguments arguments(args, {"--wire", "--limit", "--base", kStrictSwitch}, {"--output", "--size", "--mode", "--view", kSharpAngleOption, kBoundaryOption},
+    const Arguments arguments(args, {"--wire", "--limit", "--base", kStrictSwitch},
+                              {"--output", "--size", "--mode", "--view", "--screen-lod", "--lod-view", "--max-triangles", kSharpAngleOption,
+                               kBoundaryOption},
                               {{"-o", "--output"}});
     if (arguments.has("--help")) {
         std::cout << kUsage;
@@ -109,13 +118,40 @@ int run_render(std::span<const std::string> args) {
     options.base_mesh_overlay = arguments.has("--base");
     if (arguments.has("--limit")) options.positions = render::PositionSource::Limit;
 
+    std::optional<double> screen_pixels;
+    if (arguments.has("--screen-lod")) {
+        screen_pixels = arguments.number("--screen-lod", 0.0);
+        if (!(*screen_pixels >= 0.5) || !std::isfinite(*screen_pixels))
+            throw UsageError("--screen-lod expects an edge length in pixels, at least 0.5");
+    }
+    render::HeadlessView lod_view = view;
+    if (const auto angles = arguments.value("--lod-view")) {
+        if (!screen_pixels) throw UsageError("--lod-view needs --screen-lod");
+        parse_view(*angles, lod_view);
+    }
+    const auto limit = static_cast<std::size_t>(
+        arguments.integer("--max-triangles", static_cast<long>(rgbio::default_triangle_limit()), 1, 4'000'000'000l));
+
     const std::string& input = arguments.positional().front();
     std::vector<std::string> warnings;
     rgb::Mesh mesh = with_sharp_options(arguments, rgbio::load_mesh(input, &warnings, read_options(arguments)));
     for (const std::string& warning : warnings) std::cerr << "rgbsub render: " << input << ": " << warning << '\n';
     render::Image image;
     try {
-        image = render::render_headless(mesh, options, view);
+        image = render::render_headless(mesh, options, view, nullptr, [&](const render::OrbitCamera& camera) {
+            if (!screen_pixels) return;
+            rgb::DetailRequest request;
+            render::OrbitCamera lod_camera = camera;
+            lod_camera.azimuth_deg = lod_view.azimuth_deg;
+            lod_camera.elevation_deg = lod_view.elevation_deg;
+            request.value = rgb::ScreenCriterion(mesh.shared_base(), render::screen_view(lod_camera, view.size)).edge_value();
+            request.threshold = *screen_pixels;
+            request.max_triangles = limit;
+            if (rgb::apply_detail_request(mesh, request).budget_bound)
+                throw rgbio::TooLarge("the view's detail needs more than " + std::to_string(limit) + " triangles (--max-triangles)");
+        });
+    } catch (const rgbio::TooLarge&) {
+        throw;
     } catch (const std::runtime_error& error) {
         throw std::runtime_error(std::string("cannot render headless: ") + error.what());
     }

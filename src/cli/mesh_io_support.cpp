@@ -4,6 +4,7 @@
 
 #include "cli/commands.h"
 #include "io/base_uvs.h"
+#include "io/gltf_export.h"
 #include "rgb/sharp_angle.h"
 #include "rgb/state.h"
 
@@ -11,6 +12,24 @@ namespace cli {
 
 void print_warnings(const char* command, const std::string& file, const std::vector<std::string>& warnings) {
     for (const std::string& warning : warnings) std::cerr << "rgbsub " << command << ": " << file << ": warning: " << warning << '\n';
+}
+
+rgbio::LoadedAsset load_input(const char* command, const std::string& file, const Arguments& arguments) {
+    std::vector<std::string> warnings;
+    rgbio::LoadedAsset asset = rgbio::load_asset(file, &warnings, read_options(arguments));
+    print_warnings(command, file, warnings);
+    asset.mesh = with_sharp_options(arguments, std::move(asset.mesh));
+    return asset;
+}
+
+void save_output(const char* command, const rgb::Mesh& mesh, const std::string& file, const rgbio::SaveOptions& save) {
+    // The OBJ writer has the exact texture coordinates of every level; the glTF writer only those of level 0.
+    std::vector<std::string> warnings = rgbio::dropped_attributes(mesh, save.attributes.get(), save.uvs && !rgbio::is_gltf_path(file));
+    if (mesh.base().has_sharp_features() && (save.normals || rgbio::is_gltf_path(file)))
+        warnings.push_back("the normals follow the smooth Loop rules (rgb/limit_normals.h): at vertices on tagged creases and "
+                           "corners, whose tangent masks are not implemented yet, they are approximate");
+    print_warnings(command, file, warnings);
+    rgbio::save_mesh_file(mesh, file, save);
 }
 
 rgbio::ReadOptions read_options(const Arguments& arguments) { return {.strict = arguments.has(kStrictSwitch)}; }
@@ -34,18 +53,15 @@ rgb::Mesh with_sharp_options(const Arguments& arguments, rgb::Mesh mesh) {
     return rgb::with_sharp_features(mesh, features);
 }
 
-InputMesh load_input(const Arguments& arguments, const std::string& path, std::vector<std::string>& warnings) {
+std::shared_ptr<const rgb::UvLayout> input_uv_layout(const Arguments& arguments, const rgbio::LoadedAsset& asset) {
     std::optional<rgb::UvInterpolation> interpolation;
     if (const std::optional<std::string> value = arguments.value(kUvInterpolationOption)) {
         interpolation = rgb::parse_uv_interpolation(*value);
         if (!interpolation)
             throw UsageError("--uv-interpolation must be 'none', 'corners', 'boundaries' or 'all', not '" + *value + "'");
     }
-    rgbio::MeshWithUvs loaded = rgbio::load_mesh_with_uvs(path, warnings, read_options(arguments));
-    // The layout is classified by the final base mesh's tags, so it follows the crease options.
-    rgb::Mesh mesh = with_sharp_options(arguments, std::move(loaded.mesh));
-    auto uvs = rgbio::uv_layout(loaded.uvs, mesh, interpolation);
-    return {std::move(mesh), std::move(uvs)};
+    // Classified by the final base mesh's tags (load_input applies the crease options first).
+    return rgbio::uv_layout(asset.uvs, asset.mesh, interpolation);
 }
 
 rgbio::SavedPositions parse_positions(const std::string& value) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cli/arguments.h"
+#include "io/base_attributes.h"
 #include "io/mesh_file.h"
 
 namespace cli {
@@ -38,14 +39,9 @@ inline constexpr std::string_view kUvHelp =
     "                      input lines, all is linear over each input triangle\n"
     "                      (default: the file's, else corners)\n";
 
-// The input of a command that saves: the mesh with the crease options applied, and the layout of
-// its texture coordinates (null without them) under --uv-interpolation. Throws UsageError for a bad
-// value; appends loader warnings.
-struct InputMesh {
-    rgb::Mesh mesh;
-    std::shared_ptr<const rgb::UvLayout> uvs;
-};
-InputMesh load_input(const Arguments& arguments, const std::string& path, std::vector<std::string>& warnings);
+// The input's UV layout over its (retagged) base mesh, with --uv-interpolation in place of the file's
+// option when given; nullptr for a file without texture coordinates. Throws UsageError for a bad value.
+std::shared_ptr<const rgb::UvLayout> input_uv_layout(const Arguments& arguments, const rgbio::LoadedAsset& asset);
 
 // The mesh with the tags these options add to its base mesh's (the file's t lines or saved state);
 // the mesh itself when neither is given. Throws UsageError for a bad value.
@@ -55,6 +51,21 @@ rgb::Mesh with_sharp_options(const Arguments& arguments, rgb::Mesh mesh);
 rgbio::ReadOptions read_options(const Arguments& arguments);
 
 void print_warnings(const char* command, const std::string& file, const std::vector<std::string>& warnings);
+
+// Reads `file` with the command's --strict, printing the loader's warnings, and adds the tags of
+// --sharp-angle and --boundary (with_sharp_options).
+rgbio::LoadedAsset load_input(const char* command, const std::string& file, const Arguments& arguments);
+
+// Saves `mesh` with what rides on its base (save.attributes) to `file`: glTF for .glb/.gltf, OBJ
+// otherwise. First prints, as warnings, what the save leaves out.
+void save_output(const char* command, const rgb::Mesh& mesh, const std::string& file, const rgbio::SaveOptions& save);
+
+// The help lines of the output options refine and apply share.
+inline constexpr std::string_view kOutputHelp =
+    "  -o OUT              OUT.obj keeps the adaptive state (and the input's materials, groups, objects and\n"
+    "                      smoothing groups); OUT.glb or OUT.gltf writes glTF 2.0 (positions, limit normals,\n"
+    "                      materials, texture coordinates while the mesh is at level 0)\n"
+    "  --normals           OBJ: vn lines with the exact normals of the Loop limit surface\n";
 
 // "display" or "limit"; throws UsageError otherwise.
 rgbio::SavedPositions parse_positions(const std::string& value);

@@ -1,5 +1,7 @@
 #include "io/base_uvs.h"
 
+#include "io/base_attributes.h"
+
 #include <algorithm>
 #include <span>
 #include <unordered_map>
@@ -81,11 +83,8 @@ std::optional<rgb::UvChannel> base_uv_channel(const LoadedMesh& loaded, const rg
 }
 
 MeshWithUvs load_mesh_with_uvs(const std::string& path, std::vector<std::string>& warnings, const ReadOptions& options) {
-    LoadedMesh loaded = read_obj_file(path, options);
-    warnings.insert(warnings.end(), loaded.warnings.begin(), loaded.warnings.end());
-    rgb::Mesh mesh = loaded.adaptive ? std::move(*loaded.adaptive) : build_mesh(loaded);
-    std::optional<rgb::UvChannel> uvs = base_uv_channel(loaded, mesh, warnings);
-    return {std::move(mesh), std::move(uvs)};
+    LoadedAsset asset = load_asset(path, &warnings, options);
+    return {std::move(asset.mesh), std::move(asset.uvs)};
 }
 
 std::shared_ptr<const rgb::UvLayout> uv_layout(const std::optional<rgb::UvChannel>& channel, const rgb::Mesh& mesh,

@@ -36,6 +36,16 @@ struct FaceLabels {
     std::vector<std::string> names;         // as written (trimmed), in order of first use by a face
     std::vector<std::uint32_t> of_triangle;  // empty, or per triangle: index into names, or kNoIndex
     bool empty() const { return of_triangle.empty(); }
+    friend bool operator==(const FaceLabels&, const FaceLabels&) = default;
+};
+
+// The labels of the base mesh's faces (of_triangle indexed by base face): every face of an adaptive
+// mesh lies in one base face (rgb::base_face_of) and inherits that face's labels.
+struct BaseFaceLabels {
+    FaceLabels materials, groups, objects;
+    std::vector<std::uint32_t> smoothing_groups;  // empty, or per base face (0 = off)
+    bool empty() const { return materials.empty() && groups.empty() && objects.empty() && smoothing_groups.empty(); }
+    friend bool operator==(const BaseFaceLabels&, const BaseFaceLabels&) = default;
 };
 
 // One material of a `.mtl` library named by `mtllib` (read with tinyobjloader).
@@ -60,6 +70,9 @@ struct LoadedMesh {
     // file's v and f lines exactly: the adaptive mesh. positions/triangles then are the file's plain
     // OBJ content (what other programs see).
     std::shared_ptr<rgb::Mesh> adaptive;
+    // With `adaptive`: the labels of its base faces, from the state (face_label_state.h). The
+    // face_* fields below are those of the file's faces, as for any file.
+    BaseFaceLabels adaptive_labels;
 
     // Vertex colours (`v x y z r g b`), values as written: empty, or one per position. Kept only
     // when every vertex used by a face has one; otherwise all are dropped with a warning.

@@ -20,7 +20,8 @@ std::vector<std::string> skipped_content_warnings(const ObjRecords& records) {
     if (records.normals.count > 0)
         warnings.push_back("dropped " + std::to_string(records.normals.count) + " vertex normals (vn, the first on line " +
                            std::to_string(records.normals.first_line) +
-                           "): normals of the input surface do not fit the subdivided one; rgbsub can write new ones when saving");
+                           "): they cannot be subdivided meaningfully (a refined surface bends between the input's vertices, so its normals "
+                           "follow from its shape, not from the input's); --normals writes the exact normals of the limit surface instead");
     if (records.texcoord_w.count > 0)
         warnings.push_back("dropped the third texture coordinate (w) of " + std::to_string(records.texcoord_w.count) +
                            " vt lines (the first on line " + std::to_string(records.texcoord_w.first_line) + "): only u and v are kept");

@@ -68,6 +68,26 @@ rgb::LevelRequest level_request(const LineReader& r, rgb::RequestKind kind) {
     return request;
 }
 
+DetailEdit detail_edit(const LineReader& r, DetailCriterion criterion) {
+    DetailEdit edit;
+    edit.criterion = criterion;
+    const char* what = criterion == DetailCriterion::MaxEdge ? "an edge length" : "a tolerance";
+    if (r.size() != 2 && r.size() != 7 && r.size() != 8) r.fail("expected '" + r[0] + " AMOUNT [sphere X Y Z R [refine|coarsen|set]]'");
+    const auto amount = parse_amount(r[1]);
+    if (!amount) r.fail("'" + r[0] + "' needs " + what + ": a positive number, or a percentage of the bounding-box diagonal like 0.5%");
+    edit.amount = *amount;
+    if (r.size() == 2) return edit;
+    if (r[2] != "sphere") r.fail("expected '" + r[0] + " AMOUNT sphere X Y Z R'");
+    edit.sphere = rgb::Sphere{r.point(3, "a sphere coordinate"), r.number(6, "the sphere radius")};
+    if (!(edit.sphere->radius > 0.0)) r.fail("the sphere radius must be positive");
+    if (r.size() == 8) {
+        if (r[7] == "refine") edit.kind = rgb::RequestKind::Refine;
+        else if (r[7] == "coarsen") edit.kind = rgb::RequestKind::Coarsen;
+        else if (r[7] != "set") r.fail("a ball's detail is refine, coarsen or set, not '" + r[7].substr(0, 40) + "'");
+    }
+    return edit;
+}
+
 BrushEdit brush_edit(const LineReader& r) {
     BrushEdit brush;
     if (r.size() < 4 || r.size() > 5) r.fail("expected 'brush refine|coarsen|set LEVEL RADIUS [FALLOFF]'");
@@ -130,6 +150,10 @@ std::vector<ScriptLine> parse_lod_script(const std::string& text, const std::str
             if (words.size() != 2 || !parse_whole(words[1], triangles) || triangles == 0 || triangles > kMaxBudget)
                 r.fail("'budget' needs a whole number of triangles from 1 to " + std::to_string(kMaxBudget));
             entry.edit = BudgetEdit{triangles};
+        } else if (words[0] == "max-edge") {
+            entry.edit = detail_edit(r, DetailCriterion::MaxEdge);
+        } else if (words[0] == "tolerance") {
+            entry.edit = detail_edit(r, DetailCriterion::Tolerance);
         } else if (words[0] == "brush") {
             entry.edit = brush_edit(r);
             brush_given = true;
@@ -138,7 +162,7 @@ std::vector<ScriptLine> parse_lod_script(const std::string& text, const std::str
             entry.edit = dab_edit(r);
         } else {
             r.fail("unknown command '" + words[0].substr(0, 40) +
-                   "' (expected level, refine, coarsen, budget, brush or dab)");
+                   "' (expected level, refine, coarsen, budget, max-edge, tolerance, brush or dab)");
         }
         script.push_back(std::move(entry));
     }
@@ -160,6 +184,12 @@ rgb::Dab ScriptRunner::dab(const DabEdit& edit) const {
 }
 
 rgb::RequestStats ScriptRunner::run(rgb::Mesh& mesh, const ScriptLine& line) {
+    reached_error_.reset();
+    if (const auto* detail = std::get_if<DetailEdit>(&line.edit)) {
+        const DetailOutcome outcome = apply_detail_edit(mesh, *detail, max_triangles_);
+        reached_error_ = outcome.reached_error;
+        return {outcome.report.splits, outcome.report.removals, outcome.report.level_cap_bound};
+    }
     if (const auto* request = std::get_if<rgb::LevelRequest>(&line.edit)) return rgb::apply_request(mesh, *request);
     if (const auto* brush = std::get_if<BrushEdit>(&line.edit)) {
         brush_ = *brush;
@@ -178,6 +208,18 @@ std::string format_brush_line(const BrushEdit& brush) {
     std::string out = std::string("brush ") + mode_name(brush.mode) + " " + std::to_string(brush.level);
     append_double(out, brush.radius);
     append_double(out, brush.falloff);
+    return out;
+}
+
+std::string format_detail_line(const DetailEdit& edit) {
+    std::string out = edit.criterion == DetailCriterion::MaxEdge ? "max-edge " : "tolerance ";
+    out += format_amount(edit.amount);
+    if (!edit.sphere) return out;
+    out += " sphere";
+    for (int i = 0; i < 3; ++i) append_double(out, edit.sphere->centre[i]);
+    append_double(out, edit.sphere->radius);
+    if (edit.kind == rgb::RequestKind::Refine) out += " refine";
+    if (edit.kind == rgb::RequestKind::Coarsen) out += " coarsen";
     return out;
 }
 

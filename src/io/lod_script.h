@@ -7,6 +7,11 @@
 //   refine N [sphere X Y Z R]    at least level N there
 //   coarsen N [sphere X Y Z R]   at most level N there
 //   budget TRIANGLES             the LOD driver: refine the longest edges up to the budget, or trim
+//   max-edge L [sphere X Y Z R]  no edge longer than L (world units, or L% of the bounding-box
+//                                diagonal) in the uniform mesh of its level, as coarse as that allows
+//   tolerance E [sphere X Y Z R] the displayed surface within E (or E%) of the Loop limit surface
+//                                (both in a ball: set by default; a trailing `refine` only adds the
+//                                detail, `coarsen` only removes it: rgb/lod_criteria.h)
 //   brush refine|coarsen|set LEVEL RADIUS [FALLOFF]
 //                                the brush that the following dabs use (FALLOFF: fraction 0..1)
 //   dab X Y Z [VX VY VZ]         one dab at X Y Z; with a view direction, only faces facing it and
@@ -20,6 +25,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "io/detail_edit.h"
 #include "rgb/dab.h"
 #include "rgb/requests.h"
 
@@ -46,7 +52,7 @@ struct DabEdit {
 struct ScriptLine {
     std::size_t line = 0;
     std::string text;  // as written, for --timings
-    std::variant<rgb::LevelRequest, BudgetEdit, BrushEdit, DabEdit> edit;
+    std::variant<rgb::LevelRequest, BudgetEdit, BrushEdit, DabEdit, DetailEdit> edit;
 };
 
 // Throws ObjError "SCRIPT:LINE: reason" (Unreadable when the file cannot be read, Syntax for a bad
@@ -57,16 +63,24 @@ std::vector<ScriptLine> parse_lod_script(const std::string& text, const std::str
 // Runs scripts line by line, remembering the brush.
 class ScriptRunner {
 public:
+    // Detail edits (max-edge, tolerance) that would need more triangles throw TooLarge.
+    explicit ScriptRunner(std::size_t max_triangles = 1'000'000'000) : max_triangles_(max_triangles) {}
     rgb::RequestStats run(rgb::Mesh& mesh, const ScriptLine& line);
     // The dab a dab line makes with the current brush.
     rgb::Dab dab(const DabEdit& edit) const;
+    // After a tolerance line over the whole surface: the error the result reached.
+    std::optional<double> reached_error() const { return reached_error_; }
 
 private:
     BrushEdit brush_;
+    std::size_t max_triangles_;
+    std::optional<double> reached_error_;
 };
 
 // The lines the editor's stroke recorder writes; parse_lod_script reads them back exactly.
 std::string format_brush_line(const BrushEdit& brush);
 std::string format_dab_line(const DabEdit& dab);
+// A max-edge or tolerance line (the editor's detail-size dabs), numbers in shortest round-trip form.
+std::string format_detail_line(const DetailEdit& edit);
 
 }  // namespace rgbio

@@ -22,13 +22,6 @@ std::string trimmed(const std::string& s) {
     return b == std::string::npos ? std::string() : s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
 }
 
-fs::path resolve(const std::string& written, const fs::path& folder) {
-    std::string path = written;
-    std::replace(path.begin(), path.end(), '\\', '/');
-    const fs::path p(path);
-    return (p.is_absolute() ? p : folder / p).lexically_normal();
-}
-
 // Appends the library's materials; false (with a warning) when it cannot be read.
 bool read_library(const fs::path& path, std::vector<Material>& materials, std::vector<std::string>& warnings) {
     std::string text;
@@ -48,7 +41,7 @@ bool read_library(const fs::path& path, std::vector<Material>& materials, std::v
         Material material;
         material.name = trimmed(m.name);
         material.diffuse = glm::dvec3(m.diffuse[0], m.diffuse[1], m.diffuse[2]);
-        if (!m.diffuse_texname.empty()) material.diffuse_texture = resolve(m.diffuse_texname, path.parent_path()).string();
+        if (!m.diffuse_texname.empty()) material.diffuse_texture = resolve_file_reference(m.diffuse_texname, path.parent_path()).string();
         material.library = path.string();
         materials.push_back(std::move(material));
     }
@@ -83,11 +76,18 @@ void warn_about_undefined_materials(const std::vector<Material>& materials, cons
 
 }  // namespace
 
+fs::path resolve_file_reference(const std::string& written, const fs::path& folder) {
+    std::string path = written;
+    std::replace(path.begin(), path.end(), '\\', '/');
+    const fs::path p(path);
+    return (p.is_absolute() ? p : folder / p).lexically_normal();
+}
+
 std::vector<Material> read_material_libraries(const std::vector<std::string>& libraries, const fs::path& obj_folder,
                                               const FaceLabels& face_materials, std::vector<std::string>& warnings) {
     std::vector<Material> materials;
     bool all_read = true;
-    for (const std::string& library : libraries) all_read = read_library(resolve(library, obj_folder), materials, warnings) && all_read;
+    for (const std::string& library : libraries) all_read = read_library(resolve_file_reference(library, obj_folder), materials, warnings) && all_read;
     warn_about_missing_textures(materials, warnings);
     // An unread library was reported already; without any library, names are all a file has.
     if (all_read && !libraries.empty()) warn_about_undefined_materials(materials, face_materials, warnings);

@@ -13,6 +13,9 @@ namespace rgbio {
 
 // Library names are resolved against obj_folder (absolute ones as they are); '\' is read as '/'
 // (Windows exporters write it). Texture paths are resolved against their library's folder.
+// Where a library or texture name written in a file points, read against `folder` as above.
+std::filesystem::path resolve_file_reference(const std::string& written, const std::filesystem::path& folder);
+
 std::vector<Material> read_material_libraries(const std::vector<std::string>& libraries, const std::filesystem::path& obj_folder,
                                               const FaceLabels& face_materials, std::vector<std::string>& warnings);
 

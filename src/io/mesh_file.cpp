@@ -1,17 +1,18 @@
 #include "io/mesh_file.h"
 
+#include <filesystem>
 #include <stdexcept>
 #include <string_view>
 
-#include <glm/geometric.hpp>
-
 #include "io/atomic_file.h"
 #include "io/crease_tags.h"
+#include "io/labelled_faces.h"
 #include "io/number_format.h"
 #include "io/obj_error.h"
 #include "io/obj_reader.h"
 #include "io/state_format.h"
 #include "io/truncation_check.h"
+#include "rgb/limit_normals.h"
 #include "rgb/loop_geometry.h"
 #include "rgb/mesh_uvs.h"
 #include "rgb/uv_evaluator.h"
@@ -22,18 +23,6 @@ namespace {
 
 glm::dvec3 written_position(const rgb::Mesh& mesh, rgb::VertexId v, SavedPositions which) {
     return which == SavedPositions::Limit ? rgb::limit_position(mesh, v) : rgb::displayed_position(mesh, v);
-}
-
-std::vector<glm::dvec3> vertex_normals(const std::vector<glm::dvec3>& positions, const std::vector<rgb::Triangle>& triangles) {
-    std::vector<glm::dvec3> normals(positions.size(), glm::dvec3(0.0));
-    for (const rgb::Triangle& t : triangles) {
-        // The cross product's length is twice the area, so the sum is area-weighted.
-        const glm::dvec3 n = glm::cross(positions[t[1]] - positions[t[0]], positions[t[2]] - positions[t[0]]);
-        for (std::uint32_t v : t) normals[v] += n;
-    }
-    for (glm::dvec3& n : normals)
-        if (glm::length(n) > 0) n = glm::normalize(n);
-    return normals;
 }
 
 }  // namespace
@@ -59,26 +48,40 @@ struct StringOutput {
     void flush_if_full() {}
 };
 
+void append_vector(std::string& out, const char* keyword, const glm::dvec3& x) {
+    out += keyword;
+    for (int i = 0; i < 3; ++i) append_double(out, x[i]);
+}
+
 // Appends the OBJ text record by record; Output is StringOutput or AtomicFileWriter (save_mesh
-// streams the file instead of holding it whole). Positions and triangles are computed as they are
-// written; only normals, which need them all first, keep them in arrays.
+// streams the file instead of holding it whole); positions and faces are computed as they are
+// written. `output_folder`: where the file goes, for the mtllib references.
 template <class Output>
-void write_obj(const rgb::Mesh& mesh, const SaveOptions& options, Output& output) {
+void write_obj(const rgb::Mesh& mesh, const SaveOptions& options, const std::string& output_folder, Output& output) {
+    const BaseAttributes* attributes = options.attributes.get();
+    // Texture coordinates and colours are the base mesh's: written only while the mesh is that.
+    const bool base_data = attributes && is_base_mesh(mesh);
+    const bool colours = base_data && !attributes->colours.empty();
+    // The exact UV channel, when there is one, says every corner's UV at every level.
+    const bool texcoords = !options.uvs && base_data && !attributes->triangle_texcoords.empty();
+    const LabelledFaceOrder order = labelled_face_order(mesh, attributes ? attributes->labels : BaseFaceLabels{});
+
     std::string& out = output.buffer();
-    out += "# rgbsub mesh: " + std::to_string(mesh.num_vertices()) + " vertices, " + std::to_string(mesh.num_faces()) +
+    out += "# rgbsub mesh: " + std::to_string(mesh.num_vertices()) + " vertices, " + std::to_string(order.faces.size()) +
            " triangles; positions: " + (options.positions == SavedPositions::Limit ? "limit" : "displayed") +
            // Lets the reader tell a file cut before its state from one saved without it.
            (options.state ? std::string(kSavedStateNote) : std::string()) + "\n";
+    if (attributes)
+        for (const std::string& library : library_references(*attributes, output_folder)) out += "mtllib " + library + "\n";
     std::vector<std::uint32_t> obj_index(mesh.vertex_capacity(), UINT32_MAX);
-    std::vector<glm::dvec3> positions;
-    if (options.normals) positions.reserve(mesh.num_vertices());
     std::uint32_t written = 0;
     for (rgb::VertexId v : mesh.vertices()) {
-        obj_index[v.idx] = written++;
-        const glm::dvec3 p = written_position(mesh, v, options.positions);
-        if (options.normals) positions.push_back(p);
-        out += 'v';
-        for (int i = 0; i < 3; ++i) append_double(out, p[i]);
+        // At level 0 the live vertices are the base vertices, in base order.
+        const std::uint32_t i = written++;
+        obj_index[v.idx] = i;
+        append_vector(out, "v", written_position(mesh, v, options.positions));
+        if (colours)
+            for (int c = 0; c < 3; ++c) append_double(out, attributes->colours[i][c]);
         out += '\n';
         output.flush_if_full();
     }
@@ -94,38 +97,42 @@ void write_obj(const rgb::Mesh& mesh, const SaveOptions& options, Output& output
             output.flush_if_full();
         }
     }
-    auto triangle = [&](rgb::FaceId f) {
-        const auto& v = mesh.face_vertices(f);
-        return rgb::Triangle{obj_index[v[0].idx], obj_index[v[1].idx], obj_index[v[2].idx]};
-    };
+    if (texcoords)
+        for (const glm::dvec2& uv : attributes->texcoords) {
+            out += "vt";
+            for (int c = 0; c < 2; ++c) append_double(out, uv[c]);
+            out += '\n';
+            output.flush_if_full();
+        }
     if (options.normals) {
-        std::vector<rgb::Triangle> triangles;
-        triangles.reserve(mesh.num_faces());
-        for (rgb::FaceId f : mesh.faces()) triangles.push_back(triangle(f));
-        for (const glm::dvec3& n : vertex_normals(positions, triangles)) {
-            out += "vn";
-            for (int i = 0; i < 3; ++i) append_double(out, n[i]);
+        const std::vector<glm::dvec3> normals = rgb::limit_normals(mesh);
+        for (rgb::VertexId v : mesh.vertices()) {
+            append_vector(out, "vn", normals[v.idx]);
             out += '\n';
             output.flush_if_full();
         }
     }
-    for (rgb::FaceId f : mesh.faces()) {
+    auto block = order.blocks.begin();
+    for (std::size_t i = 0; i < order.faces.size(); ++i) {
+        if (block != order.blocks.end() && block->first == i) out += (block++)->lines;
         out += 'f';
-        const rgb::Triangle t = triangle(f);
-        for (std::size_t c = 0; c < 3; ++c) {
-            const std::string index = std::to_string(std::size_t(t[c]) + 1);
+        const rgb::FaceId f = order.faces[i];
+        for (int c = 0; c < 3; ++c) {
+            const std::string index = std::to_string(std::size_t(obj_index[mesh.face_vertices(f)[c].idx]) + 1);
+            std::uint32_t uv = kNoIndex;
+            if (options.uvs) uv = uvs.corners[f.idx][c] == rgb::MeshUvs::kNone ? kNoIndex : uvs.corners[f.idx][c];
+            else if (texcoords) uv = base_corner_texcoord(mesh, *attributes, f, c);
             out += ' ' + index;
-            const bool uv = options.uvs && uvs.corners[f.idx][c] != rgb::MeshUvs::kNone;
-            if (uv) out += '/' + std::to_string(std::size_t(uvs.corners[f.idx][c]) + 1);
-            if (options.normals) out += (uv ? "/" : "//") + index;
+            if (uv != kNoIndex) out += '/' + std::to_string(std::size_t(uv) + 1);
+            if (options.normals) out += (uv != kNoIndex ? "/" : "//") + index;
         }
         out += '\n';
         output.flush_if_full();
     }
     append_tag_lines(mesh, obj_index, out);
     if (options.state)
-        write_state(mesh, options.positions == SavedPositions::Limit, out, [&] { output.flush_if_full(); },
-                    options.uvs ? &options.uvs->channel() : nullptr);
+        write_state(mesh, options.positions == SavedPositions::Limit, out, [&] { output.flush_if_full(); }, order.faces,
+                    attributes ? attributes->labels : BaseFaceLabels{}, options.uvs ? &options.uvs->channel() : nullptr);
 }
 
 }  // namespace
@@ -133,13 +140,13 @@ void write_obj(const rgb::Mesh& mesh, const SaveOptions& options, Output& output
 std::string format_obj(const rgb::Mesh& mesh, const SaveOptions& options) {
     StringOutput output;
     output.text.reserve(40 * mesh.num_vertices() + 30 * mesh.num_faces());
-    write_obj(mesh, options, output);
+    write_obj(mesh, options, options.attributes ? options.attributes->library_folder : std::string(), output);
     return std::move(output.text);
 }
 
 void save_mesh(const rgb::Mesh& mesh, const std::string& path, const SaveOptions& options) {
     AtomicFileWriter file(path);
-    write_obj(mesh, options, file);
+    write_obj(mesh, options, std::filesystem::path(path).parent_path().string(), file);
     file.commit();
 }
 

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "io/crease_tags.h"
+#include "io/face_label_state.h"
 #include "io/material_library.h"
 #include "io/mesh_validation.h"
 #include "io/obj_error.h"
@@ -52,8 +53,8 @@ std::string read_text_file(const std::string& path) {
 namespace {
 
 // The mesh the state describes, if it is the body's own: one address per v line, only triangles, a
-// valid RGB mesh with these faces, and exactly these positions. Otherwise the reason it is not. The
-// state is completed on the way (its faces are the f lines').
+// valid RGB mesh with these faces, exactly these positions and the labels of their base faces.
+// Otherwise the reason it is not. The state is completed on the way (its faces are the f lines').
 std::shared_ptr<rgb::Mesh> adaptive_mesh(SavedState& saved, const ObjRecords& records, std::string& reason) {
     if (saved.mesh.vertices.size() != records.positions.size()) {
         reason = "it describes " + std::to_string(saved.mesh.vertices.size()) + " vertices, the file has " +
@@ -89,6 +90,12 @@ std::shared_ptr<rgb::Mesh> adaptive_mesh(SavedState& saved, const ObjRecords& re
                  " vertex positions differ from the ones it gives";
         return nullptr;
     }
+    // Saved without labels, the body's (added elsewhere) become the base faces'.
+    if (saved.labels.empty()) saved.labels = body_labels(*mesh, records);
+    if (const std::optional<std::string> mismatch = label_mismatch(*mesh, saved.labels, records)) {
+        reason = *mismatch;
+        return nullptr;
+    }
     return mesh;
 }
 
@@ -110,6 +117,7 @@ LoadedMesh read_records(const ObjRecords& records, const std::string& name, cons
                 LoadedMesh loaded = saved_mesh_content(records, std::move(saved->mesh.faces));
                 loaded.adaptive = std::move(mesh);
                 loaded.base_uvs = std::move(saved->uvs);
+                loaded.adaptive_labels = std::move(saved->labels);
                 return loaded;
             }
             warnings.push_back("the rgbsub state (#rgb lines) does not match the file, which was probably edited by another "

@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "io/crease_tags.h"
+#include "io/face_label_state.h"
 #include "io/number_format.h"
 #include "io/obj_error.h"
 #include "rgb/loop_geometry.h"
@@ -89,19 +90,25 @@ glm::dvec3 written_position(const rgb::Mesh& mesh, rgb::VertexId v, bool limit_p
     return limit_positions ? rgb::limit_position(mesh, v) : rgb::displayed_position(mesh, v);
 }
 
-// Per base face, the index among the f lines (live faces in slot order) of the mesh face that is it:
-// the face in its slot when that still has its corners in its order; kNoLine otherwise.
-std::vector<std::size_t> base_face_lines(const rgb::Mesh& mesh) {
+// Per base face, the index among the f lines (`face_lines`, or live faces in slot order when empty)
+// of the mesh face that is it: the face in its slot when that still has its corners in its order;
+// kNoLine otherwise.
+std::vector<std::size_t> base_face_lines(const rgb::Mesh& mesh, std::span<const rgb::FaceId> face_lines) {
     const std::span<const rgb::Triangle> triangles = mesh.base().faces();
     std::vector<std::size_t> lines(triangles.size(), kNoLine);
     std::size_t line = 0;
-    for (rgb::FaceId f : mesh.faces()) {
-        if (f.idx >= triangles.size()) break;
-        const auto& v = mesh.face_vertices(f);
-        const rgb::Triangle& t = triangles[f.idx];
-        if (v[0].idx == t[0] && v[1].idx == t[1] && v[2].idx == t[2]) lines[f.idx] = line;
+    auto look_at = [&](rgb::FaceId f) {
+        if (f.idx < triangles.size()) {
+            const auto& v = mesh.face_vertices(f);
+            const rgb::Triangle& t = triangles[f.idx];
+            if (v[0].idx == t[0] && v[1].idx == t[1] && v[2].idx == t[2]) lines[f.idx] = line;
+        }
         ++line;
-    }
+    };
+    if (face_lines.empty())
+        for (rgb::FaceId f : mesh.faces()) look_at(f);
+    else
+        for (rgb::FaceId f : face_lines) look_at(f);
     return lines;
 }
 
@@ -182,7 +189,7 @@ rgb::UvChannel parse_uv_section(std::span<const ObjStateLine> records, std::size
 }  // namespace
 
 void write_state(const rgb::Mesh& mesh, bool limit_positions, std::string& out, const std::function<void()>& flush_if_full,
-                 const rgb::UvChannel* uvs) {
+                 std::span<const rgb::FaceId> face_lines, const BaseFaceLabels& labels, const rgb::UvChannel* uvs) {
     const rgb::BaseMesh& base = mesh.base();
     const std::size_t n0 = base.num_vertices();
     out += "# rgbsub adaptive state: the #rgb lines restore the exact RGB mesh; other readers ignore them\n";
@@ -213,7 +220,7 @@ void write_state(const rgb::Mesh& mesh, bool limit_positions, std::string& out, 
     const std::span<const rgb::Triangle> triangles = base.faces();
     out += "#rgb section base-faces " + std::to_string(triangles.size()) + "\n";
     // A base face still in its own slot, corner for corner, is an f line already.
-    const std::vector<std::size_t> face_line = base_face_lines(mesh);
+    const std::vector<std::size_t> face_line = base_face_lines(mesh, face_lines);
     std::size_t first_line = 0;
     std::vector<rgb::Triangle> explicit_faces;
     auto end_explicit = [&] {
@@ -258,6 +265,7 @@ void write_state(const rgb::Mesh& mesh, bool limit_positions, std::string& out, 
     if (on_line > 0) out += '\n';
     if (uvs) append_uv_section(*uvs, out, flush_if_full);
     out += tag_records;
+    append_face_label_section(labels, triangles.size(), out);
     out += "#rgb end\n";
 }
 
@@ -282,10 +290,12 @@ std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const
     const ObjStateLine* uv_section_line = nullptr;
     std::vector<rgb::SurfacePoint> addresses;
     std::vector<ObjStateLine> tag_records;  // version 4
+    FaceLabelSectionReader face_labels(file);
     bool ended = false;
     for (const ObjStateLine& line : lines.subspan(1)) {
         StateLineReader r(line, file);
         if (ended) r.fail("#rgb line after '#rgb end'");
+        if (face_labels.take(line)) continue;
         const std::string_view kind = r.word();
         if (kind == "positions") {
             const std::string_view which = r.word();
@@ -378,6 +388,7 @@ std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const
     if (uv_section_line)
         saved.uvs = parse_uv_section(uv_records, expected[static_cast<int>(Section::BaseUvs)], state.base_triangles.size(),
                                      *uv_section_line, file);
+    saved.labels = face_labels.finish(state.base_triangles.size(), lines.back());
     return saved;
 }
 

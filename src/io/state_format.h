@@ -27,6 +27,7 @@
 //                                        #rgb uv U V [U V ...]       the N values in order
 //                                        #rgb uv-faces A B C [...]   per base face in order, its corners' values
 //                                        #rgb uv-untextured F [...]  base faces the input gave no UVs (sorted)
+//   #rgb section face-labels N         optional: the base faces' usemtl/g/o/s labels (face_label_state.h)
 //   #rgb end
 // The -as- records keep a lightly refined file from repeating its base mesh (a base vertex shown at
 // level 0 and an untouched base face are in the body already): the state stays a small fraction of
@@ -35,9 +36,9 @@
 // Version 4 is version 3 plus the base mesh's crease and corner tags (crease_tags.h), records before
 // '#rgb end'; it is written only for a base mesh with tags, so untagged files stay version 3 and
 // readable by older rgbsub, which refuse a version-4 file naming its version.
-// A later version adds sections; a reader refuses a section it does not know, naming it. The optional
-// base-uvs section is written only for a mesh with texture coordinates, so a mesh without them stays
-// readable by an rgbsub that does not know it.
+// A later version adds sections; a reader refuses a section it does not know, naming it. Optional
+// sections (face-labels, base-uvs) are written only when there is something to say, so a mesh without
+// them stays readable by an rgbsub that does not know them.
 #include <functional>
 #include <optional>
 #include <span>
@@ -68,12 +69,16 @@ struct SavedState {
     };
     std::vector<Run> vertices_as_v, faces_as_f;
     std::optional<rgb::UvChannel> uvs;  // the base-uvs section, if any
+    BaseFaceLabels labels;  // empty without a face-labels section
 };
 
 // Appends the lines of the mesh's state (rgb::capture_state's, read from the mesh as they are
 // written) to `out`, calling flush_if_full() between lines so that a file writer can empty the buffer
-// (the state of a large mesh is tens of megabytes). `uvs`: the base mesh's UV channel, if any.
+// (the state of a large mesh is tens of megabytes). `face_lines`: the live faces in the order of the
+// file's f lines (which t-as-f records refer to), or empty for slot order. `labels` (per base face)
+// become the optional face-labels section. `uvs`: the base mesh's UV channel, if any.
 void write_state(const rgb::Mesh& mesh, bool limit_positions, std::string& out, const std::function<void()>& flush_if_full,
+                 std::span<const rgb::FaceId> face_lines = {}, const BaseFaceLabels& labels = {},
                  const rgb::UvChannel* uvs = nullptr);
 
 // The #rgb lines of a file, or nothing when they are not an rgbsub state at all (no `#rgb state`

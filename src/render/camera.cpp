@@ -69,4 +69,12 @@ OrbitCamera frame_sphere(const BoundingSphere& sphere, float azimuth_deg, float 
     return camera;
 }
 
+rgb::ScreenView screen_view(const OrbitCamera& camera, glm::ivec2 size) {
+    rgb::ScreenView view;
+    view.view_projection = glm::dmat4(camera.view_projection(static_cast<float>(size.x) / static_cast<float>(size.y)));
+    view.viewport = glm::dvec2(size);
+    view.eye = glm::dvec3(camera.eye());
+    return view;
+}
+
 }  // namespace render

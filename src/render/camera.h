@@ -5,7 +5,10 @@
 #include <span>
 
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+
+#include "rgb/screen_detail.h"
 
 namespace render {
 
@@ -41,6 +44,9 @@ private:
 // A camera at the given angles whose view cone contains the sphere (with a small margin) for a
 // viewport of the given aspect ratio (width / height).
 OrbitCamera frame_sphere(const BoundingSphere& sphere, float azimuth_deg, float elevation_deg, float aspect);
+
+// The camera as the core's screen-space criterion sees it, for a viewport of `size` pixels.
+rgb::ScreenView screen_view(const OrbitCamera& camera, glm::ivec2 size);
 
 // Fraction of the view cone's half-angle the framed sphere fills.
 inline constexpr float kFramingMargin = 1.1f;

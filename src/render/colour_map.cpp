@@ -27,4 +27,6 @@ glm::vec3 level_colour(int level) {
     return table[static_cast<std::size_t>(std::clamp(level, 0, static_cast<int>(table.size()) - 1))];
 }
 
+glm::vec3 checker_colour(int parity) { return parity % 2 == 0 ? glm::vec3(0.93f, 0.93f, 0.9f) : glm::vec3(0.2f, 0.3f, 0.55f); }
+
 }  // namespace render

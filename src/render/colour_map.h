@@ -14,6 +14,11 @@ glm::vec3 rgb_type_colour(rgb::Colour colour);
 // the table share its last colour.
 glm::vec3 level_colour(int level);
 
+// The texture checker (Colouring::Checker): cells of kCheckerCells per unit of texture coordinate,
+// cell (i, j) in checker_colour((i + j) mod 2): 0 light grey, 1 dark blue.
+inline constexpr float kCheckerCells = 8.0f;
+glm::vec3 checker_colour(int parity);
+
 // Levels beyond this share the last colour (the shader's palette size).
 inline constexpr int kMaxLevelColours = 32;
 

@@ -9,12 +9,17 @@ OrbitCamera framing_camera(const BoundingSphere& bounds, const HeadlessView& vie
                         static_cast<float>(view.size.x) / static_cast<float>(view.size.y));
 }
 
-Image render_headless(rgb::Mesh& mesh, const RenderOptions& options, const HeadlessView& view) {
+Image render_headless(rgb::Mesh& mesh, const RenderOptions& options, const HeadlessView& view,
+                      std::shared_ptr<const SurfaceAppearance> appearance,
+                      const std::function<void(const OrbitCamera&)>& before_drawing) {
     OffscreenContext context(view.size.x, view.size.y);
     Renderer renderer;
     renderer.attach(mesh);
+    if (appearance) renderer.set_appearance(std::move(appearance));
     renderer.set_positions(options.positions);
-    renderer.draw(framing_camera(renderer.bounds(options.base_mesh_overlay), view), options, view.size);
+    const OrbitCamera camera = framing_camera(renderer.bounds(options.base_mesh_overlay), view);
+    if (before_drawing) before_drawing(camera);
+    renderer.draw(camera, options, view.size);
     return context.read_pixels();
 }
 

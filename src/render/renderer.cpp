@@ -122,10 +122,10 @@ void Renderer::show(const rgb::Mesh& mesh, const SurfaceGeometry& geometry, std:
         s.shown = &geometry;
         s.shown_mesh = &mesh;
         s.base_lines.upload(base_mesh_lines(mesh));
-        s.surface.upload_all(geometry.vertices());
+        s.surface.upload_all(geometry.vertices(), geometry.appearance_vertices());
         s.count_upload(before, 1);
     } else if (!changed.empty()) {
-        s.surface.upload(geometry.vertices(), changed);
+        s.surface.upload(geometry.vertices(), geometry.appearance_vertices(), changed);
         s.count_upload(before, changed.size());
     }
 }
@@ -136,7 +136,7 @@ void Renderer::sync() {
     const std::uint64_t before = s.surface.bytes_uploaded();
     const std::vector<SlotRange> ranges = s.geometry.update(*s.mesh, *s.changes);
     s.changes->clear();
-    s.surface.upload(s.geometry.vertices(), ranges);
+    s.surface.upload(s.geometry.vertices(), s.geometry.appearance_vertices(), ranges);
     s.count_upload(before, ranges.size());
     s.sharp_lines.upload(sharp_edge_lines(*s.mesh, s.geometry));
 }
@@ -147,7 +147,7 @@ void Renderer::reupload_all() {
     const std::uint64_t before = s.surface.bytes_uploaded();
     s.changes->clear();
     s.geometry.rebuild(*s.mesh);
-    s.surface.upload_all(s.geometry.vertices());
+    s.surface.upload_all(s.geometry.vertices(), s.geometry.appearance_vertices());
     s.count_upload(before, 1);
     s.sharp_lines.upload(sharp_edge_lines(*s.mesh, s.geometry));
 }
@@ -155,6 +155,11 @@ void Renderer::reupload_all() {
 void Renderer::set_positions(PositionSource source) {
     if (state_->geometry.source() == source) return;
     state_->geometry.set_source(source);
+    reupload_all();
+}
+
+void Renderer::set_appearance(std::shared_ptr<const SurfaceAppearance> appearance) {
+    state_->geometry.set_appearance(std::move(appearance));
     reupload_all();
 }
 
@@ -193,6 +198,9 @@ void Renderer::draw(const OrbitCamera& camera, const RenderOptions& options, glm
     surface.set("u_plain_colour", kPlainColour);
     surface.set_array("u_rgb_colours", rgb_colours, 3);
     surface.set_array("u_level_colours", level_colours.data(), kMaxLevelColours);
+    const glm::vec3 checker_colours[2] = {checker_colour(0), checker_colour(1)};
+    surface.set_array("u_checker_colours", checker_colours, 2);
+    surface.set("u_checker_cells", kCheckerCells);
     surface.set("u_wire", options.wireframe);
     surface.set("u_wire_width", options.wire_width_px);
     surface.set("u_wire_colour", kWireColour);

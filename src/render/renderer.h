@@ -23,7 +23,10 @@ class Mesh;
 namespace render {
 
 enum class Shading { Smooth, Flat };
-enum class Colouring { Plain, RgbType, Level };
+// Material, VertexColour and Checker (a checker pattern over the texture coordinates) show the
+// geometry's SurfaceAppearance; faces the file gives no such data have the plain colour (Checker: the
+// cell of (0, 0)).
+enum class Colouring { Plain, RgbType, Level, Material, VertexColour, Checker };
 
 // A circle on the surface: where a sphere around `centre` cuts it.
 struct BrushCursor {
@@ -72,6 +75,9 @@ public:
     // Rebuilds and uploads everything (what an observer-less renderer would do after each edit).
     void reupload_all();
     void set_positions(PositionSource source);
+    // What the attached mesh's faces look like (surface_appearance.h), for the appearance modes; until
+    // the next attach or detach.
+    void set_appearance(std::shared_ptr<const SurfaceAppearance> appearance);
 
     // Clears the viewport and draws the mesh seen by `camera`.
     void draw(const OrbitCamera& camera, const RenderOptions& options, glm::ivec2 viewport);

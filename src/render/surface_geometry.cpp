@@ -83,6 +83,7 @@ void SurfaceGeometry::resize(const rgb::Mesh& mesh) {
     const std::size_t slots = mesh.face_capacity();
     for (std::size_t i = slots * 3; i < vertices_.size(); i += 3) count(vertices_[i].code, -1);
     vertices_.resize(slots * 3);
+    appearance_vertices_.resize(appearance_ ? slots * 3 : 0);
 }
 
 void SurfaceGeometry::update_position(const rgb::Mesh& mesh, rgb::VertexId v) {
@@ -130,18 +131,22 @@ void SurfaceGeometry::count(std::uint32_t code, int delta) {
 void SurfaceGeometry::write_slot(const rgb::Mesh& mesh, rgb::FaceId f) {
     SurfaceVertex* slot = &vertices_[3 * static_cast<std::size_t>(f.idx)];
     count(slot[0].code, -1);
+    AppearanceVertex* look = appearance_ ? &appearance_vertices_[3 * static_cast<std::size_t>(f.idx)] : nullptr;
     if (!mesh.is_live(f)) {
         std::fill(slot, slot + 3, SurfaceVertex{});
+        if (look) std::fill(look, look + 3, AppearanceVertex{});
         return;
     }
     const std::uint32_t code = face_code(mesh, f);
     const auto& corners = mesh.face_vertices(f);
     for (int i = 0; i < 3; ++i) slot[i] = {positions_[corners[i].idx], corner_normal(mesh, f, i), code};
+    if (look) std::ranges::copy(appearance_of_face(mesh, *appearance_, f), look);
     count(code, +1);
 }
 
 void SurfaceGeometry::rebuild(const rgb::Mesh& mesh) {
     vertices_.clear();
+    appearance_vertices_.clear();
     colour_counts_ = {};
     level_counts_ = {};
     resize(mesh);

@@ -4,15 +4,19 @@
 // three-vertex range and the GPU buffer mirrors the core's slot arrays; dead slots are degenerate
 // triangles that rasterise to nothing. Smooth normals are area-weighted averages of the incident
 // face normals (split along infinitely sharp creases), so moving a vertex dirties the faces around
-// its one-ring.
+// its one-ring. With a SurfaceAppearance, a second array beside it holds each corner's colours and
+// texture coordinate, slot for slot.
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
 #include "render/camera.h"
+#include "render/surface_appearance.h"
 #include "rgb/face_type.h"
 #include "rgb/handles.h"
 
@@ -56,6 +60,9 @@ public:
 
     PositionSource source() const { return source_; }
     void set_source(PositionSource source) { source_ = source; }
+    // What the faces look like (null: nothing but geometry); takes effect at the next rebuild.
+    const std::shared_ptr<const SurfaceAppearance>& appearance() const { return appearance_; }
+    void set_appearance(std::shared_ptr<const SurfaceAppearance> appearance) { appearance_ = std::move(appearance); }
 
     // Recomputes every slot from the mesh.
     void rebuild(const rgb::Mesh& mesh);
@@ -64,6 +71,8 @@ public:
     std::vector<SlotRange> update(const rgb::Mesh& mesh, const MeshChanges& changes);
 
     std::span<const SurfaceVertex> vertices() const { return vertices_; }
+    // One per vertex of vertices() with an appearance, else empty.
+    std::span<const AppearanceVertex> appearance_vertices() const { return appearance_vertices_; }
     // The three positions of face slot f.
     std::array<glm::dvec3, 3> corners(rgb::FaceId f) const {
         return {glm::dvec3(vertices_[3 * f.idx].position), glm::dvec3(vertices_[3 * f.idx + 1].position),
@@ -98,10 +107,12 @@ private:
     };
 
     PositionSource source_;
+    std::shared_ptr<const SurfaceAppearance> appearance_;
     Marks vertex_marks_, face_marks_;
     std::vector<glm::vec3> positions_;  // by vertex slot
     std::vector<glm::vec3> normals_;    // by vertex slot
     std::vector<SurfaceVertex> vertices_;
+    std::vector<AppearanceVertex> appearance_vertices_;
     std::array<std::size_t, 3> colour_counts_{};
     std::array<std::size_t, 256> level_counts_{};
 };

@@ -101,7 +101,9 @@ void LodDriver::vertex_added(const Mesh&, VertexId v, VertexId a, VertexId b) {
     }
     base_space_[v.idx] = 0.5 * (base_space_[a.idx] + base_space_[b.idx]);
     const bool wanted = splitting_ && ((splitting_->a == a && splitting_->b == b) || (splitting_->a == b && splitting_->b == a));
-    vertex_key_[v.idx] = wanted ? splitting_->key : edge_key(a, b, mesh_.level(v) - 1);
+    std::uint64_t key = wanted ? splitting_->key : edge_key(a, b, mesh_.level(v) - 1);
+    if (key == 0 && settings_.split_past_dependencies && splitting_) key = std::min({key_of(a), key_of(b), splitting_->key});
+    vertex_key_[v.idx] = key;
 }
 
 void LodDriver::start_refining() {

@@ -39,6 +39,11 @@ struct LodSettings {
     double threshold = 0.0;  // splits whose value is not above it are not wanted
     std::size_t max_triangles = 1'000'000;
     int max_level = kMaxLevel;  // edges of this level are never split
+    // A vertex the RGB topology needed (not wanted itself) takes the key of the split that needed
+    // it, capped by its endpoints', instead of none; so the edges at it are judged like any other,
+    // and a threshold run ends with no unsplit green edge above the threshold: the smallest RGB mesh
+    // with that property (criteria that promise something of every face, lod_criteria.h).
+    bool split_past_dependencies = false;
 };
 
 struct LodReport {

@@ -413,6 +413,12 @@ RequestStats apply_request(Mesh& mesh, const LevelRequest& request) {
     return log.stats;
 }
 
+std::vector<FaceId> faces_meeting(const Mesh& mesh, const Sphere& sphere) {
+    static const std::vector<std::uint32_t> every_base_face;  // the test keeps a reference
+    const RegionTest test(mesh, sphere, every_base_face, 0.0);
+    return region_faces(mesh, test, seed_faces(mesh, test.base_faces_meeting(), sphere));
+}
+
 RequestStats set_level(Mesh& mesh, int level, std::optional<Sphere> sphere) {
     LevelRequest request;
     request.level = level;

@@ -21,6 +21,8 @@
 
 #include <glm/vec3.hpp>
 
+#include "rgb/handles.h"
+
 namespace rgb {
 
 class Mesh;
@@ -68,6 +70,10 @@ RequestStats set_level(Mesh& mesh, int level, std::optional<Sphere> sphere = std
 // radius. Costs in proportion to the faces in and around the region, never to the mesh.
 RequestStats apply_request(Mesh& mesh, const LevelRequest& request);
 RequestStats apply_requests(Mesh& mesh, std::span<const LevelRequest> requests);
+
+// The live faces whose parent triangles (the triangles of Σl they are pieces of) meet the ball, found
+// the way requests find their region: in proportion to the faces in and around it.
+std::vector<FaceId> faces_meeting(const Mesh& mesh, const Sphere& sphere);
 
 // An upper estimate of the number of triangles the mesh will have after the request, from the base
 // faces the region meets (4^N triangles per base face, scaled by the part of it the ball can

@@ -1,17 +1,15 @@
-// The brush's pieces on their own: falloff targets, mode inversion, stroke spacing, and ray picking
-// on a known triangle.
-#include <gtest/gtest.h>
+// The brush's pieces on their own: falloff targets, mode inversion, the hit mapped to base space,
+// the work's share of a frame and stroke spacing (picking: surface_picking_test.cpp).
+#include <array>
+#include <chrono>
+#include <vector>
 
-#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
 
 #include "app/brush.h"
 #include "app/job_pacer.h"
 #include "app/stroke_sampler.h"
-#include "app/surface_index.h"
-#include "render/mesh_changes.h"
-#include "render/surface_geometry.h"
 #include "rgb/mesh.h"
-#include "rgb/refine.h"
 
 namespace app {
 namespace {
@@ -80,32 +78,6 @@ TEST(StrokeSampler, SpacesDabsEvenlyAcrossSamples) {
     ASSERT_EQ(dabs.size(), 4u);  // at 4, 8, 12, 16
     for (std::size_t i = 0; i < dabs.size(); ++i) EXPECT_FLOAT_EQ(dabs[i].x, 4.0f * static_cast<float>(i + 1));
     EXPECT_EQ(sampler.move_to({20.0f, 0.0f}, 4.0f).size(), 1u);  // the remainder carries over
-}
-
-rgb::Mesh tetrahedron() {
-    const std::vector<glm::dvec3> p{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-    const std::vector<rgb::Triangle> t{{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
-    return rgb::Mesh(p, t);
-}
-
-TEST(SurfacePicking, HitsTheFrontFaceAndSkipsBackFaces) {
-    rgb::Mesh mesh = tetrahedron();
-    render::SurfaceGeometry geometry;
-    geometry.rebuild(mesh);
-    SurfaceIndex index;
-    index.rebuild(mesh, geometry);
-    // From far along +x+y+z, the slanted face {1,2,3} is the front one; its centroid is (1/3,1/3,1/3).
-    const glm::dvec3 centroid(1.0 / 3.0);
-    const Ray ray{glm::dvec3(3.0), glm::normalize(centroid - glm::dvec3(3.0))};
-    const std::optional<SurfaceHit> hit = index.pick(geometry, ray);
-    ASSERT_TRUE(hit.has_value());
-    EXPECT_EQ(mesh.face_vertices(hit->face)[0].idx + mesh.face_vertices(hit->face)[1].idx +
-                  mesh.face_vertices(hit->face)[2].idx,
-              6u);  // vertices 1, 2, 3
-    EXPECT_NEAR(glm::distance(hit->point, centroid), 0.0, 1e-6);
-    // The same line from inside looking out meets only back faces.
-    const Ray inside{glm::dvec3(0.1), glm::normalize(glm::dvec3(1.0))};
-    EXPECT_FALSE(index.pick(geometry, inside).has_value());
 }
 
 }  // namespace

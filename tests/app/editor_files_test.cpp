@@ -1,10 +1,12 @@
 // The editor's files in the background and its recovery copy, scripted without X or GL: a save runs
-// on a copy while editing goes on, quitting waits for a save, and unsaved work survives a session
-// that did not exit cleanly (simulated by a session named after a process that has ended).
+// on a copy while editing goes on, quitting waits for a save, unsaved work survives a session that
+// did not exit cleanly (simulated by a session named after a process that has ended), files dropped
+// on the window open like any other, and the recent-files list.
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include <sys/wait.h>
 #include <unistd.h>
@@ -13,15 +15,17 @@
 
 #include "app/editor.h"
 #include "io/base_uvs.h"
+#include "editor_fixture.h"
 #include "io/mesh_file.h"
 #include "support/same_mesh.h"
 
 namespace app {
 namespace {
 
-constexpr glm::ivec2 kViewport{800, 600};
+using test::EditorFixture;
+using test::kViewport;
 
-std::string bunny_path() { return std::string(RGBSUB_SOURCE_DIR) + "/assets/bunny.obj"; }
+std::string bunny_path() { return test::asset_path("bunny.obj"); }
 
 // A fresh folder under the test's temporary directory.
 std::filesystem::path fresh_folder(const std::string& name) {
@@ -166,7 +170,9 @@ protected:
         for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(folder)) ++n;
         return n;
     }
-    const std::filesystem::path folder = fresh_folder("recovery") / "state" / "rgbsub";
+    // One folder per test: ctest runs them in parallel processes, which must not remove each other's.
+    const std::filesystem::path folder =
+        fresh_folder(std::string("recovery_") + ::testing::UnitTest::GetInstance()->current_test_info()->name()) / "state" / "rgbsub";
 };
 
 // A whole-mesh action is risky, so unsaved work is copied before it starts.
@@ -241,6 +247,85 @@ TEST_F(EditorRecovery, DiscardingTheOfferRemovesTheCopy) {
     editor.answer_pending(false);
     EXPECT_EQ(files_in_folder(), 0u);
     EXPECT_EQ(Editor(options(0)).pending(), Pending::None);
+}
+
+class DroppedAndRecentFiles : public EditorFixture {
+protected:
+    // A copy of the default mesh named `name` in the test's folder.
+    std::string mesh_copy(const std::string& name) const {
+        const std::filesystem::path path = folder_ / name;
+        std::filesystem::copy_file(test::asset_path("default.obj"), path, std::filesystem::copy_options::overwrite_existing);
+        return path.string();
+    }
+    const std::filesystem::path folder_ = fresh_folder(std::string("dropped_") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+};
+
+TEST_F(DroppedAndRecentFiles, DroppingFilesOpensTheFirst) {
+    const std::vector<std::string> dropped{mesh_copy("first.obj"), mesh_copy("second.obj")};
+    editor.files_dropped(dropped);
+    editor.finish_work();
+    EXPECT_EQ(editor.document().path(), dropped[0]);
+    EXPECT_EQ(editor.window_title(), "first.obj - rgbsub");
+    EXPECT_EQ(editor.document().mesh().num_faces(), 192u) << "the default mesh's control cage";
+    editor.files_dropped({});
+    EXPECT_EQ(editor.file_task(), nullptr) << "an empty drop reads nothing";
+    EXPECT_EQ(editor.document().path(), dropped[0]);
+}
+
+TEST_F(DroppedAndRecentFiles, DroppingOnUnsavedChangesAsksFirst) {
+    ASSERT_TRUE(editor.open(mesh_copy("painted.obj")));
+    editor.start_flood_fill(1);
+    editor.finish_work();
+    ASSERT_TRUE(editor.document().dirty());
+    const std::vector<std::string> dropped{mesh_copy("other.obj")};
+    editor.files_dropped(dropped);
+    editor.finish_work();
+    EXPECT_EQ(editor.pending(), Pending::DiscardForOpen);
+    EXPECT_EQ(editor.document().mesh().num_faces(), 4u * 192u) << "nothing is discarded before the answer";
+    editor.answer_pending(true);
+    EXPECT_EQ(editor.document().path(), dropped[0]);
+    EXPECT_EQ(editor.document().mesh().num_faces(), 192u);
+}
+
+TEST_F(DroppedAndRecentFiles, ADroppedFileThatDoesNotLoadLeavesTheMeshAlone) {
+    ASSERT_TRUE(editor.open(mesh_copy("kept.obj")));
+    const std::filesystem::path text = folder_ / "notes.txt";
+    std::ofstream(text) << "not a mesh\n";
+    editor.files_dropped(std::vector<std::string>{text.string()});
+    editor.finish_work();
+    EXPECT_EQ(editor.pending(), Pending::None);
+    EXPECT_TRUE(editor.message_is_error());
+    EXPECT_NE(editor.message().find("notes.txt"), std::string::npos) << editor.message();
+    EXPECT_EQ(editor.document().path(), (folder_ / "kept.obj").string());
+    EXPECT_EQ(editor.document().mesh().num_faces(), 192u);
+}
+
+// Most recent first, each file once, only files that really opened or saved, and a short list.
+TEST_F(DroppedAndRecentFiles, RecentFilesListTheLastFilesUsedNewestFirst) {
+    const std::string a = mesh_copy("a.obj"), b = mesh_copy("b.obj");
+    ASSERT_TRUE(editor.open(a));
+    ASSERT_TRUE(editor.open(b));
+    const std::string c = (folder_ / "c.obj").string();
+    ASSERT_TRUE(editor.save_as(c));
+    EXPECT_EQ(editor.recent_files(), (std::vector<std::string>{c, b, a}));
+    ASSERT_TRUE(editor.open(a));
+    EXPECT_EQ(editor.recent_files(), (std::vector<std::string>{a, c, b}));
+    EXPECT_FALSE(editor.open((folder_ / "missing.obj").string()));
+    EXPECT_EQ(editor.recent_files(), (std::vector<std::string>{a, c, b}));
+    // Opened in the background, as the window does.
+    editor.request_open(b);
+    editor.finish_work();
+    EXPECT_EQ(editor.recent_files(), (std::vector<std::string>{b, a, c}));
+
+    std::vector<std::string> opened;
+    for (int i = 0; i < 20; ++i) {
+        opened.push_back(mesh_copy("many" + std::to_string(i) + ".obj"));
+        ASSERT_TRUE(editor.open(opened.back()));
+    }
+    const std::vector<std::string>& recent = editor.recent_files();
+    ASSERT_GE(recent.size(), 3u);
+    EXPECT_LT(recent.size(), 20u) << "the list stays short";
+    for (std::size_t i = 0; i < recent.size(); ++i) EXPECT_EQ(recent[i], opened[opened.size() - 1 - i]);
 }
 
 }  // namespace

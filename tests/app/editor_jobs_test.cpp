@@ -1,8 +1,10 @@
 // The editor's work over frames, scripted without X or GL: a large dab spreads over frames coarse to
-// fine with the display following, Esc keeps what is done as one undo step, undo and redo give back
-// every slot across a cancelled stroke, the brush paints only what faces the viewer unless told to
-// paint through, and the session's strokes saved as a script replay to the identical mesh, whole or
-// in two halves with a save and reload between.
+// fine with the display following, Esc keeps what is done as one undo step (a stroke's or automatic
+// LOD's), undo and redo give back every slot across a cancelled job, the undo memory bound as the
+// editor uses it, the brush paints only what faces the viewer unless told to paint through, and the
+// session's strokes saved as a script replay to the identical mesh, whole or in two halves with a
+// save and reload between.
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -62,6 +64,29 @@ protected:
     }
     Editor editor{kViewport};
 };
+
+TEST_F(EditorJobs, WholeMeshActionsAboveTheTriangleLimitAreRefusedBeforeTheyStart) {
+    const std::size_t base_faces = editor.document().mesh().num_faces();
+    // The estimate (rgb::estimated_triangles) is the faces there are plus 4^level per base face they
+    // meet: 17 per base face for level 2, exactly at this limit, 65 for level 3.
+    const std::size_t limit = 17 * base_faces;
+    editor.set_triangle_limit(limit);
+    editor.start_flood_fill(3);
+    EXPECT_EQ(editor.job(), nullptr);
+    EXPECT_NE(editor.message().find("set all to level 3 refused"), std::string::npos) << editor.message();
+    EXPECT_NE(editor.message().find(std::to_string(limit)), std::string::npos) << "names the limit: " << editor.message();
+    EXPECT_EQ(editor.document().mesh().num_faces(), base_faces);
+    EXPECT_FALSE(editor.document().history().can_undo());
+
+    editor.auto_lod_settings().triangle_budget = limit + 1;
+    editor.start_auto_lod();
+    EXPECT_EQ(editor.job(), nullptr);
+    EXPECT_NE(editor.message().find("automatic LOD refused"), std::string::npos) << editor.message();
+
+    editor.start_flood_fill(2);
+    editor.finish_work();
+    EXPECT_EQ(editor.document().mesh().num_faces(), 16 * base_faces);
+}
 
 TEST_F(EditorJobs, ALargeDabSpreadsOverFramesCoarseToFineWithTheDisplayFollowing) {
     const rgb::Mesh original = editor.document().mesh();
@@ -132,6 +157,64 @@ TEST_F(EditorJobs, EscKeepsTheWorkDoneAsOneStepAndUndoRedoCrossItExactly) {
     ASSERT_TRUE(editor.save_strokes(scratch("cancelled_session.lod").string()));
     EXPECT_TRUE(editor.message_is_error());
     EXPECT_NE(editor.message().find("replay will differ"), std::string::npos) << editor.message();
+}
+
+// Automatic LOD stopped by Esc part way: the work done so far stays, as one step that Ctrl+Z takes
+// back whole and Ctrl+Y brings back exactly.
+TEST_F(EditorJobs, EscKeepsAPartialAutomaticLodAsOneUndoStep) {
+    const rgb::Mesh original = editor.document().mesh();
+    // Slices of a microsecond do a unit of work each: stop after a few.
+    editor.start_auto_lod();
+    ASSERT_NE(editor.job(), nullptr);
+    for (int i = 0; i < 3; ++i) editor.update(std::chrono::microseconds(1));
+    ASSERT_NE(editor.job(), nullptr) << "the job finished before it could be cancelled";
+    const std::size_t partial_faces = editor.document().mesh().num_faces();
+    ASSERT_GT(partial_faces, original.num_faces());
+    const std::string label = editor.job()->label();
+
+    editor.key_pressed(Key::Escape, {});
+    EXPECT_EQ(editor.job(), nullptr);
+    EXPECT_EQ(editor.document().mesh().num_faces(), partial_faces) << "cancelling keeps the work done";
+    EXPECT_TRUE(rgb::check_invariants(editor.document().mesh()).ok());
+    EXPECT_TRUE(editor.document().dirty());
+    EXPECT_EQ(editor.document().history().undo_steps(), 1u);
+    EXPECT_EQ(editor.document().history().undo_label(), label);
+    const rgb::Mesh partial = editor.document().mesh();
+
+    editor.key_pressed(Key::Z, {.ctrl = true});
+    EXPECT_TRUE(rgbtest::same_slots(editor.document().mesh(), original));
+    EXPECT_FALSE(editor.document().history().can_undo());
+    editor.key_pressed(Key::Y, {.ctrl = true});
+    EXPECT_TRUE(rgbtest::same_slots(editor.document().mesh(), partial));
+}
+
+// With a bound too small for any step the editor still edits, but keeps no step to undo.
+TEST_F(EditorJobs, UndoMemoryBoundLimitsTheStepsKept) {
+    const std::size_t base_faces = editor.document().mesh().num_faces();
+    editor.document().history().set_byte_bound(0);
+    editor.start_flood_fill(1);
+    editor.finish_work();
+    EXPECT_EQ(editor.document().mesh().num_faces(), 4 * base_faces);
+    EXPECT_TRUE(editor.document().dirty());
+    EXPECT_FALSE(editor.document().history().can_undo());
+    EXPECT_EQ(editor.document().history().bytes(), 0u);
+    EXPECT_FALSE(editor.undo());
+
+    // With room again, two edits leave two steps; a bound just below them forgets the older.
+    editor.document().history().set_byte_bound(std::size_t{1} << 30);
+    editor.start_flood_fill(2);
+    editor.finish_work();
+    const rgb::Mesh level_two = editor.document().mesh();
+    editor.start_flood_fill(0);
+    editor.finish_work();
+    ASSERT_EQ(editor.document().history().undo_steps(), 2u);
+    editor.document().history().set_byte_bound(editor.document().history().bytes() - 1);
+    EXPECT_EQ(editor.document().history().undo_steps(), 1u);
+    EXPECT_EQ(editor.document().history().undo_label(), "set all to level 0");
+    ASSERT_TRUE(editor.undo());
+    EXPECT_EQ(editor.document().mesh().num_faces(), 16 * base_faces) << "back to level 2 everywhere";
+    EXPECT_TRUE(rgbtest::same_slots(editor.document().mesh(), level_two));
+    EXPECT_FALSE(editor.undo());
 }
 
 TEST_F(EditorJobs, UndoWaitsForTheStrokeUnderWay) {

@@ -8,23 +8,24 @@
 
 #include <gtest/gtest.h>
 
-#include "app/editor.h"
 #include "io/mesh_file.h"
 #include "rgb/invariants.h"
 #include "rgb/state.h"
 #include "rgb/requests.h"
 #include "support/same_mesh.h"
 #include "support/same_slots.h"
+#include "editor_fixture.h"
 #include "stroke_support.h"
 
 namespace app {
 namespace {
 
-constexpr glm::ivec2 kViewport{800, 600};
+using test::EditorFixture;
+using test::kViewport;
 
-std::string bunny_path() { return std::string(RGBSUB_SOURCE_DIR) + "/assets/bunny.obj"; }
+std::string bunny_path() { return test::asset_path("bunny.obj"); }
 
-class EditorScript : public ::testing::Test {
+class EditorScript : public EditorFixture {
 protected:
     void SetUp() override {
         ASSERT_TRUE(editor.open(bunny_path())) << editor.message();
@@ -32,15 +33,6 @@ protected:
         editor.brush().target_level = 3;
         editor.brush().radius_px = 30.0f;
         editor.brush().falloff = 0.0f;
-    }
-
-    // A left-drag from `from` to `to` in `samples` mouse events, as a fast mouse delivers them.
-    void stroke(glm::vec2 from, glm::vec2 to, int samples, Modifiers mods = {}) {
-        editor.mouse_moved(from);
-        editor.mouse_pressed(MouseButton::Left, mods);
-        for (int i = 1; i <= samples; ++i) editor.mouse_moved(from + (to - from) * (float(i) / float(samples)));
-        editor.mouse_released(MouseButton::Left);
-        editor.finish_work();
     }
 
     // Where the stroke's path meets the surface, before painting changes it.
@@ -53,7 +45,6 @@ protected:
         return points;
     }
 
-    Editor editor{kViewport};
     const glm::vec2 from{0.4f * kViewport.x, 0.55f * kViewport.y};
     const glm::vec2 to{0.6f * kViewport.x, 0.55f * kViewport.y};
 };
@@ -81,10 +72,10 @@ TEST_F(EditorScript, StrokeUndoRedoSaveRoundTrip) {
 
     editor.key_pressed(Key::Z, {.ctrl = true});
     EXPECT_EQ(editor.document().mesh().num_faces(), original_faces);
-    EXPECT_TRUE(rgbtest::same_mesh(editor.document().mesh(), original));
+    EXPECT_TRUE(rgbtest::same_slots(editor.document().mesh(), original));
 
     editor.key_pressed(Key::Z, {.shift = true, .ctrl = true});
-    EXPECT_TRUE(rgbtest::same_mesh(editor.document().mesh(), painted));
+    EXPECT_TRUE(rgbtest::same_slots(editor.document().mesh(), painted));
 
     const std::filesystem::path saved = std::filesystem::path(::testing::TempDir()) / "editor_script_saved.obj";
     ASSERT_TRUE(editor.save_as(saved.string())) << editor.message();
@@ -181,8 +172,26 @@ TEST_F(EditorScript, SampleLevelReadsTheFaceUnderTheCursor) {
 }
 
 TEST_F(EditorScript, QuittingWithUnsavedChangesAsksFirst) {
-    editor.request_quit();
-    EXPECT_TRUE(editor.should_quit());  // nothing to lose
+    stroke(from, to, 3);
+    ASSERT_TRUE(editor.document().dirty());
+    editor.key_pressed(Key::Q, {.ctrl = true});
+    EXPECT_EQ(editor.pending(), Pending::DiscardForQuit);
+    EXPECT_FALSE(editor.should_quit());
+    editor.key_pressed(Key::Escape, {});  // Esc answers no
+    EXPECT_EQ(editor.pending(), Pending::None);
+    EXPECT_FALSE(editor.should_quit());
+    editor.key_pressed(Key::Q, {.ctrl = true});
+    editor.answer_pending(true);
+    EXPECT_TRUE(editor.should_quit());
+}
+
+TEST_F(EditorScript, QuittingAfterSavingDoesNotAsk) {
+    stroke(from, to, 3);
+    const std::filesystem::path saved = std::filesystem::path(::testing::TempDir()) / "editor_quit_saved.obj";
+    ASSERT_TRUE(editor.save_as(saved.string())) << editor.message();
+    editor.key_pressed(Key::Q, {.ctrl = true});
+    EXPECT_EQ(editor.pending(), Pending::None);
+    EXPECT_TRUE(editor.should_quit());
 }
 
 TEST_F(EditorScript, UnsavedChangesAskBeforeQuitOrOpen) {

@@ -1,17 +1,33 @@
 #!/usr/bin/env bash
 # End-to-end: the real editor window under Xvfb, driven by xdotool, on a copy of the bunny:
-#   1. the pointer jumps onto the panel and drags there at once: nothing is painted (saved);
-#   2. a stroke (saved), then the session's strokes saved as a script (Ctrl+E, Enter);
-#   3. undo (saved), redo (saved), Ctrl+Q: a clean exit leaves no recovery copy;
-#   4. `rgbsub apply` replays the script on the bunny, whole and in two halves with a save and a
+#   1. the unchanged bunny is saved (Ctrl+S writes even an unchanged mesh);
+#   2. the pointer jumps onto the panel and drags there at once: nothing is painted (saved);
+#   3. a stroke (saved), then the session's strokes saved as a script (Ctrl+E, Enter);
+#   4. undo (saved), redo with Ctrl+Shift+Z (saved), undo and redo with Ctrl+Y (saved), Ctrl+Q: a
+#      clean exit leaves no recovery copy;
+#   5. `rgbsub apply` replays the script on the bunny, whole and in two halves with a save and a
 #      reload between.
-# saved_files_check judges the files.
+# Undo must give back the file as opened and both redos the painted one, byte for byte, and so must
+# the drag on the panel; saved_files_check judges the files as meshes.
 # Usage (ctest runs it): editor_window_test.sh RGBSUB SAVED_FILES_CHECK BUNNY.obj
 set -euo pipefail
+
+# A missing tool is an error of the machine, reported as such rather than skipped.
+for tool in xvfb-run xauth xdotool; do
+  if ! command -v "$tool" >/dev/null; then
+    echo "editor_window_test.sh: $tool is missing: install the Debian packages xvfb xauth xdotool" \
+         "(third_party/debian_packages.sh, RGBSUB_TEST_PACKAGES)" >&2
+    exit 1
+  fi
+done
+if [[ -z "${RGBSUB_UNDER_XVFB:-}" ]]; then
+  RGBSUB_UNDER_XVFB=1 exec xvfb-run -a -s "-screen 0 1280x1024x24" "$0" "$@"
+fi
+
 rgbsub=$1 check=$2 bunny=$3
 work=$(mktemp -d)
-trap 'kill "$editor_pid" 2>/dev/null || true; rm -rf "$work"' EXIT
 editor_pid=
+trap 'if [[ -n "$editor_pid" ]]; then kill "$editor_pid" 2>/dev/null || true; fi; rm -rf "$work"' EXIT
 cp "$bunny" "$work/mesh.obj"
 export XDG_STATE_HOME="$work/state"  # the recovery copy stays in here
 
@@ -26,13 +42,20 @@ save_as() {
   sleep 1
   cp "$work/mesh.obj" "$work/$1.obj"
 }
+key() {
+  xdotool key --clearmodifiers "$1"
+  sleep 1
+}
 
-# 1. Onto the panel's empty lower part and pressed in the same instant, then dragged.
+# 1.
+save_as opened
+
+# 2. Onto the panel's empty lower part and pressed in the same instant, then dragged.
 xdotool mousemove --window "$window" 1110 730 mousedown 1 mousemove --window "$window" 1160 700 mouseup 1
 sleep 0.5
 save_as panel
 
-# 2. A stroke across the bunny (left of the panel).
+# 3. A stroke across the bunny (left of the panel).
 x0=340 y0=440 x1=560 y1=440
 xdotool mousemove --window "$window" $x0 $y0
 sleep 0.3
@@ -54,13 +77,14 @@ sleep 0.3
 xdotool keyup Return
 sleep 0.5
 
-# 3.
-xdotool key --clearmodifiers ctrl+z
-sleep 1
+# 4.
+key ctrl+z
 save_as undone
-xdotool key --clearmodifiers ctrl+shift+z
-sleep 1
+key ctrl+shift+z
 save_as redone
+key ctrl+z
+key ctrl+y
+save_as redone_with_y
 xdotool key --clearmodifiers ctrl+q
 for _ in $(seq 50); do kill -0 "$editor_pid" 2>/dev/null || break; sleep 0.2; done
 if kill -0 "$editor_pid" 2>/dev/null; then
@@ -68,12 +92,13 @@ if kill -0 "$editor_pid" 2>/dev/null; then
   exit 1
 fi
 wait "$editor_pid" || { echo "the editor exited with an error:" >&2; cat "$work/editor.log" >&2; exit 1; }
+editor_pid=
 if [ -n "$(ls -A "$XDG_STATE_HOME/rgbsub" 2>/dev/null)" ]; then
   echo "a clean exit left a recovery copy: $(ls "$XDG_STATE_HOME/rgbsub")" >&2
   exit 1
 fi
 
-# 4. The script, whole and cut at the brush line nearest its middle.
+# 5. The script, whole and cut at the brush line nearest its middle.
 script="$work/mesh.lod"
 [ -s "$script" ] || { echo "Ctrl+E, Enter wrote no script" >&2; exit 1; }
 "$rgbsub" apply "$bunny" "$script" -o "$work/replayed.obj" >/dev/null
@@ -84,5 +109,19 @@ tail -n +"$cut" "$script" >"$work/second.lod"
 "$rgbsub" apply "$bunny" "$work/first.lod" -o "$work/half.obj" >/dev/null
 "$rgbsub" apply "$work/half.obj" "$work/second.lod" -o "$work/halves.obj" >/dev/null
 
+failed=0
+same_bytes() {
+  if cmp -s "$work/$1.obj" "$work/$2.obj"; then
+    echo "ok: $1.obj and $2.obj are the same bytes"
+  else
+    echo "FAILED: $1.obj and $2.obj differ ($3)"
+    failed=1
+  fi
+}
+same_bytes panel opened "a drag on the panel paints nothing"
+same_bytes undone opened "Ctrl+Z restores the mesh as opened"
+same_bytes redone painted "Ctrl+Shift+Z restores the painted mesh"
+same_bytes redone_with_y painted "Ctrl+Y restores the painted mesh"
 "$check" "$bunny" "$work/panel.obj" "$work/painted.obj" "$work/undone.obj" "$work/redone.obj" \
-  "$work/replayed.obj" "$work/halves.obj" $x0 $y0 $x1 $y1
+  "$work/replayed.obj" "$work/halves.obj" $x0 $y0 $x1 $y1 || failed=1
+exit "$failed"

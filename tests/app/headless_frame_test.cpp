@@ -1,5 +1,13 @@
-// rgbsub edit --screenshot: a full editor frame through OSMesa, panels included.
+// rgbsub edit --screenshot: a full editor frame through OSMesa, panels included. Checked by what
+// each part of the frame must look like: the framed mesh in the middle of what the panel leaves
+// free, the dark panel at the top right and status bar at the bottom, the brush ring around the
+// resting mouse, white elsewhere.
+#include <algorithm>
+#include <cmath>
+
 #include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
 
 #include "app/editor.h"
 #include "app/headless_frame.h"
@@ -7,19 +15,80 @@
 namespace app {
 namespace {
 
-TEST(HeadlessFrame, DrawsTheMeshAndThePanel) {
+// The plain surface colour under light: grey, neither the white background nor the dark panel.
+bool is_mesh_grey(glm::u8vec4 p) {
+    const int lo = std::min({p.r, p.g, p.b}), hi = std::max({p.r, p.g, p.b});
+    return hi - lo < 16 && lo > 60 && hi < 235;
+}
+bool is_dark(glm::u8vec4 p) { return std::max({p.r, p.g, p.b}) < 80; }
+bool is_white(glm::u8vec4 p) { return p.r == 255 && p.g == 255 && p.b == 255; }
+// The brush ring's orange (1, 0.55, 0) blended over the grey surface.
+bool is_orange(glm::u8vec4 p) { return p.r > 150 && p.r > p.g + 40 && p.g > p.b + 40; }
+
+class HeadlessFrameImage : public ::testing::Test {
+protected:
+    void SetUp() override {
+        frame.size = {800, 600};
+        image = render_editor_frame(std::string(RGBSUB_SOURCE_DIR) + "/assets/default.obj", frame);
+        ASSERT_EQ(image.width, 800);
+        ASSERT_EQ(image.height, 600);
+    }
+    // Fraction of the pixels in [x0, x1) x [y0, y1) that pass `test`.
+    template <class Test>
+    double fraction(int x0, int y0, int x1, int y1, Test test) const {
+        std::size_t n = 0;
+        for (int y = y0; y < y1; ++y)
+            for (int x = x0; x < x1; ++x) n += test(image.pixel(x, y));
+        return static_cast<double>(n) / static_cast<double>((x1 - x0) * (y1 - y0));
+    }
     HeadlessFrame frame;
-    frame.size = {800, 600};
-    const render::Image image = render_editor_frame(std::string(RGBSUB_SOURCE_DIR) + "/assets/default.obj", frame);
-    ASSERT_EQ(image.width, 800);
-    ASSERT_EQ(image.height, 600);
-    const glm::u8vec4 background = image.pixel(2, image.height / 2);
-    // The framed mesh covers the centre of what the panel leaves free, and not what it covers.
-    const int free_centre = static_cast<int>((800.0f - kPanelCover) / 2.0f);
-    EXPECT_NE(image.pixel(free_centre, 300), background);
-    // The panel sits at the top right: its title bar is neither background nor mesh.
-    EXPECT_NE(image.pixel(image.width - 100, 16), background);
-    EXPECT_NE(image.pixel(image.width - 100, 16), image.pixel(free_centre, 300));
+    render::Image image;
+};
+
+// The panel is kPanelWidth (320) pixels wide at the top right, kPanelCover with its margin, and the
+// view is framed on what it leaves free, so the mesh's silhouette is centred there; a one-line
+// status bar runs along the bottom.
+TEST_F(HeadlessFrameImage, DrawsTheMeshCentredInTheFreePartThePanelAndTheStatusBar) {
+    const int free_width = 800 - static_cast<int>(kPanelCover), free_centre = free_width / 2;
+    EXPECT_GT(fraction(free_width + 10, 40, 800 - 20, 300, is_dark), 0.6) << "the panel's dark background";
+    EXPECT_EQ(fraction(0, 0, 60, 60, is_white), 1.0) << "the top-left corner shows the background";
+    EXPECT_EQ(fraction(0, 480, 60, 540, is_white), 1.0) << "and so does the bottom-left one above the status bar";
+    EXPECT_GT(fraction(0, 590, 800, 600, is_dark), 0.6) << "the status bar";
+
+    int x_min = image.width, x_max = -1, y_min = image.height, y_max = -1;
+    std::size_t grey = 0;
+    for (int y = 0; y < 560; ++y)  // above the status bar, whose text is grey too
+        for (int x = 0; x < free_width; ++x)
+            if (is_mesh_grey(image.pixel(x, y))) {
+                ++grey;
+                x_min = std::min(x_min, x), x_max = std::max(x_max, x), y_min = std::min(y_min, y), y_max = std::max(y_max, y);
+            }
+    EXPECT_GT(grey, 800u * 600u / 10) << "the framed mesh covers a good part of the view";
+    EXPECT_FALSE(is_white(image.pixel(free_centre, 300))) << "the mesh covers the centre of the free part";
+    EXPECT_NEAR(0.5 * (x_min + x_max), free_centre, 0.1 * free_width);
+    EXPECT_NEAR(0.5 * (y_min + y_max), 300.0, 0.1 * 600);
+    EXPECT_LT(x_min, free_centre - 100) << "the silhouette reaches well left of the free part's centre";
+    EXPECT_GT(x_max, free_centre + 100) << "and well right of it";
+    EXPECT_GT(x_max - x_min, free_width / 2) << "and spans over half the free part's width, the side it is framed in";
+}
+
+// The cursor rests in the middle of the free part: the brush's 40-pixel ring surrounds it, hollow,
+// and there is no orange anywhere else.
+TEST_F(HeadlessFrameImage, DrawsTheBrushRingAroundTheRestingMouse) {
+    const glm::vec2 cursor = frame.cursor * glm::vec2(frame.size);
+    std::size_t orange = 0;
+    double nearest = 1e9, furthest = 0.0;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x)
+            if (is_orange(image.pixel(x, y))) {
+                ++orange;
+                const double d = glm::distance(glm::vec2(x, y), cursor);
+                nearest = std::min(nearest, d);
+                furthest = std::max(furthest, d);
+            }
+    EXPECT_GT(orange, 100u) << "a ring of about 2 pi 40 pixels";
+    EXPECT_GT(nearest, 20.0) << "hollow";
+    EXPECT_LT(furthest, 60.0);
 }
 
 TEST(HeadlessFrame, ALoadErrorIsReported) {

@@ -1,6 +1,9 @@
 // The undo history over the core's journal: undo and redo give back every slot, a failed edit is
 // abandoned back to the mesh before it, memory follows the edits, and a change made outside an edit
-// drops the history instead of corrupting the mesh on a later undo.
+// drops the history instead of corrupting the mesh on a later undo; the memory bound, over both
+// sides, forgets the furthest steps and counts at least what the kept steps must remember.
+#include <cstdint>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -12,7 +15,9 @@
 #include "rgb/invariants.h"
 #include "rgb/mesh.h"
 #include "rgb/refine.h"
+#include "rgb/observer.h"
 #include "rgb/requests.h"
+#include "rgb/surface_point.h"
 #include "support/random_operations.h"
 #include "support/same_mesh.h"
 #include "support/same_slots.h"
@@ -115,19 +120,104 @@ TEST(UndoHistory, MemoryFollowsTheEditsNotTheMesh) {
     EXPECT_LT(history.bytes() * 100, mesh.memory_bytes());
 }
 
+// Three steps (levels 1, 2, 3 everywhere) on the tetrahedron, with the mesh before each step and the
+// bytes each step added taken by the test itself.
+struct ThreeLevels {
+    rgb::Mesh mesh = rgbtest::make_rgb_mesh(rgbtest::tetrahedron());
+    UndoHistory history{mesh};
+    std::vector<rgb::Mesh> before;        // before[k]: the mesh step k + 1 started from
+    std::vector<std::size_t> step_bytes;  // what each step added to the history's bytes
+
+    ThreeLevels() {
+        for (int level = 1; level <= 3; ++level) {
+            before.push_back(mesh);
+            const std::size_t bytes = history.bytes();
+            history.begin_edit("level " + std::to_string(level));
+            rgb::refine_uniform(mesh, level);
+            history.end_edit(true);
+            step_bytes.push_back(history.bytes() - bytes);
+        }
+    }
+};
+
 TEST(UndoHistory, ForgetsTheOldestStepsBeyondTheBound) {
+    ThreeLevels t;
+    ASSERT_EQ(t.history.undo_steps(), 3u);
+    t.history.set_byte_bound(t.history.bytes() - 1);
+    ASSERT_EQ(t.history.undo_steps(), 2u);
+    EXPECT_EQ(t.history.bytes(), t.step_bytes[1] + t.step_bytes[2]);
+    EXPECT_LE(t.history.bytes(), t.history.byte_bound());
+    EXPECT_EQ(t.history.undo_label(), "level 3");
+
+    // The two newest steps still come back exactly, newest first; the oldest is gone. (The bound is
+    // lifted first: stepping back puts the redo record on the other side, which counts too.)
+    t.history.set_byte_bound(std::numeric_limits<std::size_t>::max());
+    ASSERT_TRUE(t.history.undo());
+    EXPECT_TRUE(rgbtest::same_slots(t.mesh, t.before[2]));
+    EXPECT_EQ(t.history.undo_label(), "level 2");
+    ASSERT_TRUE(t.history.undo());
+    EXPECT_TRUE(rgbtest::same_slots(t.mesh, t.before[1]));
+    EXPECT_FALSE(t.history.can_undo());
+    EXPECT_FALSE(t.history.undo()) << "the step back to the bare tetrahedron was forgotten";
+    EXPECT_TRUE(rgbtest::same_slots(t.mesh, t.before[1]));
+}
+
+// Counts what the mesh reports to any observer: what an edit removed and added.
+struct ChangeCounter : rgb::MeshObserver {
+    std::size_t faces_removed = 0, faces_added = 0, vertices_removed = 0, vertices_added = 0;
+    void face_removed(const rgb::Mesh&, rgb::FaceId) override { ++faces_removed; }
+    void face_added(const rgb::Mesh&, rgb::FaceId) override { ++faces_added; }
+    void vertex_removed(const rgb::Mesh&, rgb::VertexId) override { ++vertices_removed; }
+    void vertex_added(const rgb::Mesh&, rgb::VertexId, rgb::VertexId, rgb::VertexId) override { ++vertices_added; }
+};
+
+// The bound counts at least what a step must keep to be undone (rgb/journal.h: each removed face with
+// its slot and corners, each removed vertex with its slot, address and insertion position, the slot of
+// everything added), so it bounds the memory the history really holds.
+TEST(UndoHistory, BytesCoverWhatEachStepMustRemember) {
     rgb::Mesh mesh = rgbtest::make_rgb_mesh(rgbtest::tetrahedron());
     UndoHistory history(mesh);
+    std::size_t total = 0;
     for (int level = 1; level <= 3; ++level) {
+        ChangeCounter counter;
+        mesh.add_observer(&counter);
+        const std::size_t bytes = history.bytes();
         history.begin_edit("level " + std::to_string(level));
         rgb::refine_uniform(mesh, level);
         history.end_edit(true);
+        mesh.remove_observer(&counter);
+        const std::size_t step = history.bytes() - bytes;
+        total += step;
+        // Each level quadruples the 4 faces of the tetrahedron: 12, 48, 192 more faces.
+        EXPECT_EQ(counter.faces_added - counter.faces_removed, 12u << (2 * (level - 1))) << "level " << level;
+        const std::size_t slot = sizeof(std::uint32_t);
+        const std::size_t payload = counter.faces_removed * (slot + 3 * slot) +
+                                    counter.vertices_removed * (slot + sizeof(rgb::SurfacePoint) + sizeof(glm::dvec3)) +
+                                    (counter.faces_added + counter.vertices_added) * slot;
+        EXPECT_GE(step, payload) << "level " << level;
     }
-    ASSERT_EQ(history.undo_steps(), 3u);
-    history.set_byte_bound(history.bytes() - 1);
-    EXPECT_EQ(history.undo_steps(), 2u);
-    EXPECT_EQ(history.undo_label(), "level 3");
-    EXPECT_LE(history.bytes(), history.byte_bound());
+    EXPECT_EQ(history.bytes(), total);
+}
+
+// Undoing moves a step to the redo side, which the bound covers too: shrinking the bound drops the
+// furthest step first (the oldest undo, then the redo furthest from the present).
+TEST(UndoHistory, BoundCoversTheRedoSideAndKeepsTheNearestSteps) {
+    ThreeLevels t;
+    const rgb::Mesh level_three = t.mesh;
+    ASSERT_TRUE(t.history.undo());  // now at level 2; redo leads to level 3
+    ASSERT_EQ(t.history.undo_steps(), 2u);
+    ASSERT_EQ(t.history.redo_steps(), 1u);
+    t.history.set_byte_bound(t.history.bytes() - 1);
+    EXPECT_EQ(t.history.undo_steps(), 1u) << "the oldest undo step goes first";
+    EXPECT_EQ(t.history.redo_steps(), 1u);
+    EXPECT_LE(t.history.bytes(), t.history.byte_bound());
+    ASSERT_TRUE(t.history.redo());
+    EXPECT_TRUE(rgbtest::same_slots(t.mesh, level_three));
+
+    t.history.set_byte_bound(0);
+    EXPECT_EQ(t.history.bytes(), 0u);
+    EXPECT_FALSE(t.history.can_undo());
+    EXPECT_FALSE(t.history.can_redo());
 }
 
 // Undoing past a change the history did not see would put faces where they no longer fit.

@@ -75,6 +75,10 @@ TEST_F(ExitCodes, EveryCommandFollowsTheReadmeTable) {
         {{"render", mesh, "-o", folder}, "I/O or resource failure"},
         {{"render", mesh, "-o", ""}, "I/O or resource failure"},
         {{"render", mesh, "-o", png, "--size", "64x48"}, "I/O or resource failure", tiny_disk},
+        {{"render", mesh, "-o", png, "--size", "64x48", "--screen-lod", "4", "--lod-view", "200,10"}, "ok"},
+        {{"render", mesh, "-o", png, "--screen-lod", "0"}, "usage error"},
+        {{"render", mesh, "-o", png, "--lod-view", "10,10"}, "usage error"},
+        {{"render", mesh, "-o", png, "--screen-lod", "1", "--max-triangles", "20"}, "I/O or resource failure"},
 
         {{"info", mesh}, "ok"},
         {{"info", "-x", mesh}, "usage error"},
@@ -90,6 +94,9 @@ TEST_F(ExitCodes, EveryCommandFollowsTheReadmeTable) {
         {{"refine", missing, "-o", obj, "--level", "2"}, "I/O or resource failure"},
         {{"refine", mesh, "-o", folder, "--level", "2"}, "I/O or resource failure"},
         {{"refine", mesh, "-o", obj, "--level", "2"}, "I/O or resource failure", tiny_disk},
+        {{"refine", mesh, "-o", obj, "--tolerance", "0.5%"}, "ok"},
+        {{"refine", mesh, "-o", obj, "--max-edge", "0"}, "usage error"},
+        {{"refine", mesh, "-o", obj, "--tolerance", "0.0001%", "--max-triangles", "100"}, "I/O or resource failure"},
 
         {{"apply", mesh, path("script.txt"), "-o", obj}, "ok"},
         {{"apply", mesh, path("script.txt"), "-o", obj, "-x"}, "usage error"},

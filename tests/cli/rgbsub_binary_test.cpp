@@ -1,5 +1,7 @@
 // Runs the rgbsub executable and checks what a user sees: output and exit code.
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -11,14 +13,28 @@ namespace {
 using cli_test::Outcome;
 using cli_test::run_rgbsub;
 
+// The commands the README documents, written out here rather than taken from the table that prints
+// the help: a command missing from the help, or one the README does not know, fails.
 TEST(RgbsubBinary, HelpListsEverySubcommandAndExitsZero) {
     const Outcome run = run_rgbsub({"--help"});
     EXPECT_EQ(run.exit_code, cli::exit_ok);
-#define RGBSUB_EXPECT_LISTED(name, description) \
-    EXPECT_NE(run.output.find("  " #name " "), std::string::npos) << run.output; \
-    EXPECT_NE(run.output.find(description), std::string::npos) << run.output;
-    RGBSUB_COMMANDS(RGBSUB_EXPECT_LISTED)
-#undef RGBSUB_EXPECT_LISTED
+    const std::string header = "commands:\n";
+    const std::size_t start = run.output.find(header);
+    ASSERT_NE(start, std::string::npos) << run.output;
+    // One "  NAME   description" line per command, up to the blank line.
+    std::vector<std::string> listed;
+    std::istringstream lines(run.output.substr(start + header.size()));
+    for (std::string line; std::getline(lines, line) && !line.empty();) {
+        ASSERT_EQ(line.rfind("  ", 0), 0u) << line;
+        std::istringstream words(line);
+        std::string name, description;
+        words >> name;
+        std::getline(words >> std::ws, description);
+        EXPECT_FALSE(description.empty()) << name << " has a description";
+        listed.push_back(name);
+    }
+    EXPECT_EQ(listed, (std::vector<std::string>{"edit", "render", "info", "refine", "apply"}));
+    EXPECT_NE(run.output.find("without a COMMAND: rgbsub edit"), std::string::npos) << run.output;
 }
 
 TEST(RgbsubBinary, UnknownSubcommandExitsOneNamingIt) {

@@ -1,5 +1,5 @@
-// The info/refine/apply subcommands through the dispatcher: exit codes 0/1/2/3, and refine then
-// `--level 0` gives back the input mesh exactly.
+// The info/refine/apply subcommands through the dispatcher: exit codes 0/1/2/3 and apply's scripts
+// (refine itself: tests/cli/refine_command_test.cpp).
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -26,6 +26,7 @@ namespace rgbio {
 namespace {
 
 namespace fs = std::filesystem;
+using test::triangles_by_position;
 
 class CliCommands : public test::ScratchFolder {
 protected:
@@ -35,20 +36,6 @@ protected:
     }
     static int run(std::vector<std::string> args) { return cli::dispatch(args); }
 };
-
-// Triangles as triples of positions, rotated to start at the smallest, so that meshes can be
-// compared regardless of vertex and face numbering.
-using PositionTriangle = std::array<std::array<double, 3>, 3>;
-std::multiset<PositionTriangle> triangles_by_position(const LoadedMesh& mesh) {
-    std::multiset<PositionTriangle> set;
-    for (const rgb::Triangle& t : mesh.triangles) {
-        PositionTriangle p;
-        for (int i = 0; i < 3; ++i) p[i] = {mesh.positions[t[i]].x, mesh.positions[t[i]].y, mesh.positions[t[i]].z};
-        std::rotate(p.begin(), std::min_element(p.begin(), p.end()), p.end());
-        set.insert(p);
-    }
-    return set;
-}
 
 TEST_F(CliCommands, ExitCodes) {
     EXPECT_EQ(run({"info", path("octahedron.obj")}), 0);
@@ -118,17 +105,7 @@ TEST_F(CliCommands, PlainOutputHasNoStateLines) {
     }
 }
 
-TEST_F(CliCommands, RefineThenLevelZeroGivesBackTheInput) {
-    ASSERT_EQ(run({"refine", path("octahedron.obj"), "-o", path("fine.obj"), "--level", "3", "--sphere", "1,0,0,0.8"}), 0);
-    const LoadedMesh fine = read_obj_file(path("fine.obj"));
-    ASSERT_TRUE(fine.adaptive);
-    EXPECT_GT(fine.triangles.size(), 8u);
-    ASSERT_EQ(run({"refine", path("fine.obj"), "-o", path("base.obj"), "--level", "0"}), 0);
-    const LoadedMesh input = read_obj_file(path("octahedron.obj"));
-    const LoadedMesh base = read_obj_file(path("base.obj"));
-    EXPECT_EQ(base.positions, input.positions);
-    EXPECT_EQ(triangles_by_position(base), triangles_by_position(input));
-}
+using PositionTriangle = std::array<std::array<double, 3>, 3>;
 
 // Each triangle's corner UVs keyed by its corners' positions (rotated to start at the smallest).
 std::map<PositionTriangle, std::array<glm::dvec2, 3>> uvs_by_position(const LoadedMesh& mesh) {

@@ -18,6 +18,7 @@
 #include "io/obj_error.h"
 #include "io/number_format.h"
 #include "io/obj_reader.h"
+#include "mesh_state_difference.h"
 #include "obj_test_support.h"
 #include "rgb/invariants.h"
 #include "rgb/loop_geometry.h"
@@ -65,12 +66,7 @@ rgb::Mesh round_trip(const rgb::Mesh& mesh, const SaveOptions& options = {}) {
     return build_mesh(loaded);
 }
 
-void expect_same_state(const rgb::MeshState& a, const rgb::MeshState& b) {
-    EXPECT_EQ(a.base_positions, b.base_positions);
-    EXPECT_EQ(a.base_triangles, b.base_triangles);
-    EXPECT_EQ(a.vertices, b.vertices);
-    EXPECT_EQ(a.faces, b.faces);
-}
+void expect_same_state(const rgb::MeshState& a, const rgb::MeshState& b) { EXPECT_EQ(test::state_difference(a, b), ""); }
 
 TEST(MeshFile, PlainObjLoadsAsABaseMesh) {
     const rgb::Mesh mesh = octahedron();

@@ -60,8 +60,9 @@ TEST(ObjLoadFixes, DialectsFromTheWild) {
     ASSERT_EQ(mesh.triangles.size(), 2u);
     EXPECT_EQ(mesh.triangles[1], (rgb::Triangle{3, 2, 1}));
     ASSERT_EQ(mesh.warnings.size(), 2u);
-    EXPECT_EQ(mesh.warnings[0], "dropped 1 vertex normals (vn, the first on line 8): normals of the input surface do not fit the "
-                                "subdivided one; rgbsub can write new ones when saving");
+    EXPECT_EQ(mesh.warnings[0], "dropped 1 vertex normals (vn, the first on line 8): they cannot be subdivided meaningfully (a "
+                                "refined surface bends between the input's vertices, so its normals follow from its shape, not "
+                                "from the input's); --normals writes the exact normals of the limit surface instead");
     EXPECT_EQ(mesh.warnings[1], "dropped the vertex colours: 3 of the 4 vertices used by faces have none (the first on line 3), "
                                 "and colours are kept only when every vertex has one");
     EXPECT_TRUE(mesh.colours.empty());
@@ -86,6 +87,44 @@ TEST(ObjLoadFixes, FlippedFacesAreReorientedToTheMajority) {
     EXPECT_TRUE(test::has_warning(mesh.warnings, "re-oriented 2 of 8 faces")) << mesh.warnings.size();
     EXPECT_EQ(mesh.triangles[1], (rgb::Triangle{1, 4, 2}));  // 2 3 5 flipped back to outward (0-based)
     EXPECT_EQ(mesh.triangles[0], (rgb::Triangle{0, 2, 4}));  // majority faces untouched
+}
+
+// Whether triangle t is (a, b, c) up to rotation: the same face with the same winding.
+bool same_winding(const rgb::Triangle& t, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+    return (t[0] == a && t[1] == b && t[2] == c) || (t[0] == b && t[1] == c && t[2] == a) || (t[0] == c && t[1] == a && t[2] == b);
+}
+
+// Three separate parts, each decided on its own: an octahedron with 2 of 8 faces flipped (keeps
+// outwards), a second one with 6 of 8 flipped (keeps inwards: the majority, not "outwards", wins),
+// and a square of two triangles that disagree one to one (the tie goes to its first face).
+TEST(ObjLoadFixes, EachConnectedPartKeepsItsOwnMajorityAndTiesKeepTheFirstFace) {
+    // Outward octahedron faces, 0-based, as in test::kOctahedron.
+    const std::vector<rgb::Triangle> outward{{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+    const std::vector<glm::dvec3> corners{{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    std::string text;
+    for (int part = 0; part < 2; ++part)  // the second octahedron 10 units along x
+        for (const glm::dvec3& c : corners)
+            text += "v " + std::to_string(c.x + 10 * part) + " " + std::to_string(c.y) + " " + std::to_string(c.z) + "\n";
+    const auto face = [&](int part, const rgb::Triangle& t, bool flip) {
+        const auto index = [&](std::uint32_t i) { return std::to_string(6 * part + i + 1); };
+        text += "f " + index(t[0]) + " " + (flip ? index(t[2]) + " " + index(t[1]) : index(t[1]) + " " + index(t[2])) + "\n";
+    };
+    for (std::size_t i = 0; i < 8; ++i) face(0, outward[i], i == 1 || i == 6);
+    for (std::size_t i = 0; i < 8; ++i) face(1, outward[i], i != 0 && i != 4);
+    text += "v 20 0 0\nv 21 0 0\nv 21 1 0\nv 20 1 0\nf 13 14 15\nf 16 15 13\n";
+
+    const LoadedMesh mesh = read_obj_text(text, "parts.obj");
+    ASSERT_EQ(mesh.triangles.size(), 18u);
+    EXPECT_TRUE(test::has_warning(mesh.warnings, "re-oriented 5 of 18 faces")) << (mesh.warnings.empty() ? "" : mesh.warnings.front());
+    ASSERT_EQ(mesh.positions.size(), 16u);
+    for (std::size_t i = 0; i < 8; ++i) {
+        const rgb::Triangle& t = outward[i];
+        EXPECT_TRUE(same_winding(mesh.triangles[i], t[0], t[1], t[2])) << "first octahedron, face " << i;
+        EXPECT_TRUE(same_winding(mesh.triangles[8 + i], 6 + t[0], 6 + t[2], 6 + t[1])) << "second octahedron, face " << i;
+    }
+    EXPECT_TRUE(same_winding(mesh.triangles[16], 12, 13, 14));
+    EXPECT_TRUE(same_winding(mesh.triangles[17], 12, 14, 15)) << "flipped to agree with the first face";
+    expect_consistently_oriented(mesh);
 }
 
 TEST(ObjLoadFixes, UnreferencedVerticesAreRemovedAndTheRestRenumbered) {

@@ -1,9 +1,13 @@
 #pragma once
 // Helpers shared by the io tests: reading OBJ text in memory and asserting on the error it gives.
+#include <algorithm>
+#include <array>
+#include <set>
 #include <string>
 
 #include <gtest/gtest.h>
 
+#include "io/loaded_mesh.h"
 #include "io/obj_error.h"
 #include "io/obj_reader.h"
 
@@ -25,6 +29,20 @@ inline bool has_warning(const std::vector<std::string>& warnings, const std::str
     for (const std::string& w : warnings)
         if (w.find(part) != std::string::npos) return true;
     return false;
+}
+
+// Triangles as triples of positions, rotated to start at the smallest, so that meshes can be
+// compared regardless of vertex and face numbering.
+using PositionTriangle = std::array<std::array<double, 3>, 3>;
+inline std::multiset<PositionTriangle> triangles_by_position(const LoadedMesh& mesh) {
+    std::multiset<PositionTriangle> set;
+    for (const rgb::Triangle& t : mesh.triangles) {
+        PositionTriangle p;
+        for (int i = 0; i < 3; ++i) p[i] = {mesh.positions[t[i]].x, mesh.positions[t[i]].y, mesh.positions[t[i]].z};
+        std::rotate(p.begin(), std::min_element(p.begin(), p.end()), p.end());
+        set.insert(p);
+    }
+    return set;
 }
 
 // A closed octahedron (8 triangles, consistently oriented outwards).

@@ -1,5 +1,10 @@
 // Ear clipping keeps every triangle inside the polygon: no flips for concave input, areas add up.
+#include <algorithm>
 #include <cmath>
+#include <map>
+#include <set>
+#include <span>
+#include <utility>
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -53,10 +58,50 @@ TEST(PolygonTriangulation, FanWouldFlipButEarClippingDoesNot) {
     for (const auto& t : triangulate_polygon(arrow, polygon)) EXPECT_GT(triangle_normal(arrow, t).z, 0);
 }
 
+// Whatever the geometry, n - 2 triangles triangulate the polygon when they glue into a disc bounded
+// by it: each polygon side is used once, in the polygon's direction, and every other edge (a
+// diagonal) twice, once in each direction; no triangle repeats a vertex or leaves the polygon.
+void expect_triangulates(std::span<const std::uint32_t> polygon, const std::vector<std::array<std::uint32_t, 3>>& triangles) {
+    ASSERT_EQ(triangles.size(), polygon.size() - 2);
+    std::map<std::pair<std::uint32_t, std::uint32_t>, int> directed;
+    for (const auto& t : triangles) {
+        EXPECT_TRUE(t[0] != t[1] && t[1] != t[2] && t[2] != t[0]) << t[0] << " " << t[1] << " " << t[2];
+        for (int i = 0; i < 3; ++i) {
+            EXPECT_NE(std::find(polygon.begin(), polygon.end(), t[i]), polygon.end()) << "vertex " << t[i];
+            ++directed[{t[i], t[(i + 1) % 3]}];
+        }
+    }
+    std::set<std::pair<std::uint32_t, std::uint32_t>> sides;
+    for (std::size_t i = 0; i < polygon.size(); ++i) sides.insert({polygon[i], polygon[(i + 1) % polygon.size()]});
+    for (const auto& [edge, count] : directed) {
+        const std::pair<std::uint32_t, std::uint32_t> reverse{edge.second, edge.first};
+        EXPECT_EQ(count, 1) << "edge " << edge.first << "->" << edge.second << " used twice in one direction";
+        EXPECT_FALSE(sides.contains(reverse)) << "side " << reverse.first << "->" << reverse.second << " reversed";
+        if (!sides.contains(edge)) {
+            EXPECT_TRUE(directed.contains(reverse)) << "diagonal " << edge.first << "-" << edge.second << " used once";
+        }
+    }
+    for (const auto& side : sides) EXPECT_TRUE(directed.contains(side)) << "side " << side.first << "->" << side.second << " missing";
+}
+
 TEST(PolygonTriangulation, DegenerateCollinearPolygonStillGivesAllTriangles) {
     const std::vector<glm::dvec3> line = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}, {4, 0, 0}};
     const std::vector<std::uint32_t> polygon = {0, 1, 2, 3, 4};
-    EXPECT_EQ(triangulate_polygon(line, polygon).size(), 3u);
+    expect_triangulates(polygon, triangulate_polygon(line, polygon));
+    // The same points in another order along the line: the polygon folds back on itself.
+    const std::vector<std::uint32_t> folded = {0, 3, 1, 4, 2};
+    expect_triangulates(folded, triangulate_polygon(line, folded));
+}
+
+TEST(PolygonTriangulation, TriangulationsAreDiscsBoundedByThePolygon) {
+    glm::dvec3 axis;
+    const std::vector<glm::dvec3> star = tilted_star(7, axis);
+    std::vector<std::uint32_t> polygon(star.size());
+    for (std::uint32_t i = 0; i < polygon.size(); ++i) polygon[i] = i;
+    expect_triangulates(polygon, triangulate_polygon(star, polygon));
+    const std::vector<glm::dvec3> arrow = {{1, 1, 0}, {0, 2, 0}, {0, 0, 0}, {3, 1, 0}, {0, 3, 0}};
+    const std::vector<std::uint32_t> arrow_polygon = {2, 3, 4, 1, 0};
+    expect_triangulates(arrow_polygon, triangulate_polygon(arrow, arrow_polygon));
 }
 
 TEST(PolygonTriangulation, QuadIsCutAtItsFirstEarInCornerOrder) {

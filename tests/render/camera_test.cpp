@@ -5,6 +5,7 @@
 #include <vector>
 
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 #include <glm/vec4.hpp>
 
 #include "render/camera.h"
@@ -52,6 +53,31 @@ TEST(Camera, ElevationNinetyLooksStraightDown) {
     const glm::mat4 view = camera.view();
     for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r) EXPECT_TRUE(std::isfinite(view[c][r]));
+}
+
+// A segment of length s through the target, across the line of sight, spans s / (2 d tan(fov/2)) of
+// the image's height at distance d: s * H / (2 d tan(fov/2)) pixels, whatever the azimuth.
+TEST(Camera, ScreenViewMeasuresPixelsOnTheImagePlane) {
+    render::OrbitCamera camera;
+    camera.target = glm::vec3(1.0f, 2.0f, -3.0f);
+    camera.distance = 8.0f;
+    camera.elevation_deg = 0.0f;
+    camera.fov_y_deg = 40.0f;
+    const glm::ivec2 size(800, 600);
+    const double expected = 0.5 * 600.0 / (2.0 * 8.0 * std::tan(glm::radians(20.0)));  // for s = 0.5
+    for (float azimuth : {0.0f, 90.0f, 215.0f}) {
+        camera.azimuth_deg = azimuth;
+        const rgb::ScreenView view = render::screen_view(camera, size);
+        EXPECT_EQ(view.viewport, glm::dvec2(800.0, 600.0));
+        EXPECT_NEAR(glm::distance(view.eye, glm::dvec3(camera.eye())), 0.0, 1e-6);
+        // Vertical through the target (always across the line of sight at elevation 0).
+        const glm::dvec3 t(camera.target);
+        const glm::dvec4 p = view.view_projection * glm::dvec4(t + glm::dvec3(0.0, 0.25, 0.0), 1.0);
+        const glm::dvec4 q = view.view_projection * glm::dvec4(t - glm::dvec3(0.0, 0.25, 0.0), 1.0);
+        const glm::dvec2 pixels = 0.5 * (glm::dvec2(p) / p.w - glm::dvec2(q) / q.w) * view.viewport;
+        EXPECT_NEAR(std::abs(pixels.x), 0.0, 1e-3) << azimuth;
+        EXPECT_NEAR(std::abs(pixels.y), expected, 1e-3 * expected) << azimuth;
+    }
 }
 
 }  // namespace

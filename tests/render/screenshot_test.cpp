@@ -1,14 +1,15 @@
 // Headless screenshots (OSMesa) checked against what the mesh says they must show.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include <glm/geometric.hpp>
 #include <glm/vec4.hpp>
 
 #include "gl_test_support.h"
-#include "render/colour_map.h"
 #include "render/headless.h"
 #include "render/surface_geometry.h"
 #include "rgb/mesh.h"
@@ -127,25 +128,48 @@ TEST(Screenshot, SphereSilhouetteCoversItsProjectedArea) {
     EXPECT_LE(covered, std::numbers::pi * r_out * r_out + band);
 }
 
-TEST(Screenshot, LevelLegendShowsEachLevelsColour) {
+// The icosphere refined to `level` around its +z pole, in the level colouring, seen from +z.
+Image level_picture(int level) {
     rgb::Mesh mesh = render_test::icosphere(1);
-    rgb::set_level(mesh, 2, rgb::Sphere{{0.0, 0.0, 1.0}, 0.7});
-    RenderOptions options;
-    options.colouring = Colouring::Level;
-    const HeadlessView view{{240, 200}, 0.0f, 0.0f};
-    const Image image = render::render_headless(mesh, options, view);
+    rgb::set_level(mesh, level, rgb::Sphere{{0.0, 0.0, 1.0}, 0.7});
     int max_level = 0;
     for (rgb::FaceId f : mesh.faces()) max_level = std::max(max_level, mesh.level(f));
-    ASSERT_EQ(max_level, 2);
-    for (int level = 0; level <= max_level; ++level) {
-        // Swatch centres, as laid out in level_legend.cpp (12 px margin, 16 px swatches, 4 px gap).
-        const int y = view.size.y - 12 - (level + 1) * 20 + 4 + 8;
-        const glm::u8vec4 p = image.pixel(12 + 8, y);
-        const glm::vec3 want = render::level_colour(level) * 255.0f;
-        EXPECT_NEAR(p.r, want.r, 1.0) << "level " << level;
-        EXPECT_NEAR(p.g, want.g, 1.0) << "level " << level;
-        EXPECT_NEAR(p.b, want.b, 1.0) << "level " << level;
-    }
+    EXPECT_EQ(max_level, level);
+    RenderOptions options;
+    options.colouring = Colouring::Level;
+    return render::render_headless(mesh, options, HeadlessView{{240, 200}, 0.0f, 0.0f});
+}
+
+// The legend stacks one swatch per level in the bottom-left corner, finest on top, and each level
+// has one fixed colour (README: a level looks the same in every picture whatever else is on screen),
+// blue at level 0 and each differing from its neighbours. So pictures with different finest levels
+// show the same swatches for the levels they share, and the mesh shows the top swatch's colour.
+TEST(Screenshot, LevelLegendShowsEachLevelsColourTheSameInEveryPicture) {
+    const Image two = level_picture(2), three = level_picture(3);
+    // Column 20 runs through the swatches (12 to 28 pixels from the left), left of the sphere.
+    const std::vector<render_test::Swatch> legend_two = render_test::legend_column(two, 20, 12);
+    const std::vector<render_test::Swatch> legend_three = render_test::legend_column(three, 20, 12);
+    ASSERT_EQ(legend_two.size(), 3u) << "levels 0 to 2";
+    ASSERT_EQ(legend_three.size(), 4u) << "levels 0 to 3";
+    EXPECT_EQ(legend_two.back().kind, render_test::PixelClass::Blue) << "level 0";
+    for (std::size_t level = 0; level < 3; ++level)
+        EXPECT_EQ(legend_two[2 - level].colour, legend_three[3 - level].colour) << "level " << level;
+    for (std::size_t i = 0; i + 1 < legend_three.size(); ++i)
+        EXPECT_NE(legend_three[i].colour, legend_three[i + 1].colour) << "levels " << 3 - i << " and " << 2 - i;
+
+    // The same colours on the mesh: its coarsest faces in level 0's class, its finest in level 3's.
+    const render_test::PixelClass finest = legend_three.front().kind;
+    ASSERT_NE(finest, render_test::PixelClass::Neutral) << "the top swatch has a clear hue";
+    const render_test::PixelCounts counts = count_pixels(three);
+    const auto count_of = [&](render_test::PixelClass c) {
+        return c == render_test::PixelClass::Red ? counts.red : c == render_test::PixelClass::Green ? counts.green : counts.blue;
+    };
+    std::size_t swatches_of_class = 0;
+    for (const render_test::Swatch& s : legend_three) swatches_of_class += s.kind == finest;
+    EXPECT_GT(count_of(finest), swatches_of_class * 16u * 16u + 500u);
+    std::size_t blue_swatches = 0;
+    for (const render_test::Swatch& s : legend_three) blue_swatches += s.kind == render_test::PixelClass::Blue;
+    EXPECT_GT(counts.blue, blue_swatches * 16u * 16u + 500u);
 }
 
 TEST(Screenshot, BrushCursorAndBaseOverlayAddOnlyWhatTheyDraw) {

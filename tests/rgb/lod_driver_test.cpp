@@ -12,6 +12,7 @@
 #include "rgb/lod_driver.h"
 #include "rgb/mesh.h"
 #include "rgb/requests.h"
+#include "support/clear_threshold.h"
 #include "support/identity_tracker.h"
 #include "support/request_oracle.h"
 #include "support/same_mesh.h"
@@ -37,30 +38,6 @@ std::set<Identity> wanted_vertices(const UniformLoopOracle& oracle, double thres
                 if (length > threshold && wanted.count(x) && wanted.count(y)) wanted.insert(*oracle.midpoint(x, y));
             }
     return wanted;
-}
-
-// A threshold near the given share of the edge lengths that no length comes close to, so that
-// rounding differences between the core and the oracle cannot decide an edge.
-double clear_threshold(const UniformLoopOracle& oracle, int cap, double share) {
-    std::vector<double> lengths;
-    for (int j = 0; j < cap; ++j)
-        for (const IdentityTriangle& t : oracle.faces(j))
-            for (int i = 0; i < 3; ++i) {
-                const Identity x = t[i], y = t[(i + 1) % 3];
-                lengths.push_back(glm::distance(oracle.position(j, x), oracle.position(j, y)));
-            }
-    std::sort(lengths.begin(), lengths.end());
-    std::size_t best = 0;
-    double best_gap = -1.0;
-    const auto target = static_cast<std::size_t>(share * static_cast<double>(lengths.size()));
-    for (std::size_t k = target; k + 1 < lengths.size() && k < target + 200; ++k)
-        if (lengths[k + 1] - lengths[k] > best_gap) {
-            best_gap = lengths[k + 1] - lengths[k];
-            best = k;
-        }
-    const double threshold = 0.5 * (lengths[best] + lengths[best + 1]);
-    EXPECT_GT(best_gap, 1e-9 * threshold);
-    return threshold;
 }
 
 std::set<Identity> vertex_set(const rgb::Mesh& mesh, const IdentityTracker& ids) {

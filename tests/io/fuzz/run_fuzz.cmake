@@ -1,8 +1,21 @@
-# cmake -DSOURCE=... -DBINARY=... -DSECONDS=... -P run_fuzz.cmake
+# cmake -DSOURCE=... -DBINARY=... -DGENERATOR=... -DMAKE_PROGRAM=... -DSECONDS=... -P run_fuzz.cmake
 # Builds the fuzz project with clang and runs it for SECONDS, seeded with small OBJ files.
+# GENERATOR and MAKE_PROGRAM are the outer build's (CMAKE_GENERATOR, CMAKE_MAKE_PROGRAM).
+foreach(required SOURCE BINARY GENERATOR MAKE_PROGRAM SECONDS)
+  if(NOT DEFINED ${required})
+    message(FATAL_ERROR "run_fuzz.cmake needs -D${required}=...")
+  endif()
+endforeach()
 find_program(CLANGXX clang++ REQUIRED)
-execute_process(COMMAND ${CMAKE_COMMAND} -S ${SOURCE} -B ${BINARY} -G Ninja -DCMAKE_CXX_COMPILER=${CLANGXX}
-                        -DCMAKE_BUILD_TYPE=RelWithDebInfo RESULT_VARIABLE result)
+# A fuzz build made earlier with another generator cannot be reconfigured; start it afresh.
+if(EXISTS ${BINARY}/CMakeCache.txt)
+  file(STRINGS ${BINARY}/CMakeCache.txt cached_generator REGEX "^CMAKE_GENERATOR:INTERNAL=")
+  if(NOT cached_generator STREQUAL "CMAKE_GENERATOR:INTERNAL=${GENERATOR}")
+    file(REMOVE_RECURSE ${BINARY})
+  endif()
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} -S ${SOURCE} -B ${BINARY} -G "${GENERATOR}" -DCMAKE_MAKE_PROGRAM=${MAKE_PROGRAM}
+                        -DCMAKE_CXX_COMPILER=${CLANGXX} -DCMAKE_BUILD_TYPE=RelWithDebInfo RESULT_VARIABLE result)
 if(result)
   message(FATAL_ERROR "configuring the fuzz project failed")
 endif()

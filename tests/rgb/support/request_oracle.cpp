@@ -97,6 +97,10 @@ std::set<Identity> RequestOracle::coarsened(const std::set<Identity>& current, i
         for (const IdentityTriangle& t : parent_triangles(v))
             if (meets(t, ball)) doomed.insert(v);
     }
+    return without(current, doomed);
+}
+
+std::set<Identity> RequestOracle::without(const std::set<Identity>& current, const std::set<Identity>& doomed) const {
     // Whatever needs a doomed vertex goes too: keep exactly the vertices whose closure avoids them.
     std::set<Identity> kept;
     for (Identity v : current) {

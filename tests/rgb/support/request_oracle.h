@@ -30,6 +30,10 @@ public:
     std::set<Identity> coarsened(const std::set<Identity>& current, int level, const OracleBall& ball) const;
     // The closure of a set of identities.
     std::set<Identity> closure(std::set<Identity> vertices) const;
+    // The vertices of `current` whose closure holds none of `doomed`.
+    std::set<Identity> without(const std::set<Identity>& current, const std::set<Identity>& doomed) const;
+    // The ends of the edge the identity was inserted on (a base vertex: itself twice).
+    std::pair<Identity, Identity> parents(Identity v) const { return parents_[v]; }
     // The base vertices alone.
     std::set<Identity> base() const;
     const glm::dvec3& base_space(Identity id) const { return base_space_[id]; }

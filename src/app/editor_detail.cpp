@@ -1,0 +1,76 @@
+// Detail by size, accuracy and view in the editor (README "Detail by size, accuracy and view"): the
+// whole-mesh max-edge and tolerance edits, and the view-dependent mode with its freeze.
+#include <stdexcept>
+
+#include "app/editor.h"
+#include "io/lod_script.h"
+#include "io/triangle_limit.h"
+#include "render/camera.h"
+
+namespace app {
+
+void Editor::start_detail_edit() {
+    if (refuse_if_busy("change the detail")) return;
+    rgbio::DetailEdit edit;
+    edit.criterion = detail_settings_.criterion;
+    edit.amount = detail_settings_.amount;
+    std::unique_ptr<DetailJob> job;
+    try {
+        job = std::make_unique<DetailJob>(document_.mesh(), edit, rgbio::default_triangle_limit());
+    } catch (const std::invalid_argument& refused) {
+        report(refused.what(), true);
+        return;
+    }
+    keep_recovery_copy(true);
+    queue(std::move(job));
+}
+
+void Editor::start_view_lod() {
+    if (refuse_if_busy("start view-dependent LOD")) return;
+    keep_recovery_copy(true);
+    rgb::ViewLodSettings settings;
+    settings.pixels = detail_settings_.view_pixels;
+    settings.max_triangles = rgbio::default_triangle_limit();
+    // The camera of the frame being drawn: the job asks for it every step.
+    queue(std::make_unique<ViewLodJob>(document_.mesh(), settings, [this] { return render::screen_view(camera_.camera(), viewport_); }));
+}
+
+void Editor::freeze_view_lod() {
+    if (!view_lod()) return;
+    jobs_.front()->cancel();
+    if (front_begun_) {
+        finish_front();
+    } else {
+        jobs_.pop_front();
+    }
+    report("view-dependent LOD frozen: the mesh is an ordinary state now (Ctrl+Z undoes the mode's changes)", false);
+}
+
+// The amount in the mesh's units: in pixels it is measured where the dab lands, so zooming in asks for
+// finer detail (Blender's relative detail; a tolerance in pixels bounds the error seen on screen);
+// the script line holds the world amount, so it replays.
+void Editor::detail_dab(const BaseSpaceHit& at, const glm::dvec3& hit_point) {
+    rgbio::DetailEdit edit;
+    edit.criterion = brush_.target == BrushSettings::Target::Tolerance ? rgbio::DetailCriterion::Tolerance : rgbio::DetailCriterion::MaxEdge;
+    const double size = brush_.detail_unit == RadiusUnit::ScreenPixels
+                            ? brush_.detail_px * camera_.world_per_pixel(camera_.depth_of(hit_point), viewport_)
+                            : static_cast<double>(brush_.detail_world);
+    edit.amount = {size, false};
+    switch (effective_mode(brush_.mode, mods_.shift)) {
+        case BrushMode::Refine: edit.kind = rgb::RequestKind::Refine; break;
+        case BrushMode::Coarsen: edit.kind = rgb::RequestKind::Coarsen; break;
+        case BrushMode::Set: edit.kind = rgb::RequestKind::Set; break;
+    }
+    edit.sphere = rgb::Sphere{at.centre, at.radius};
+    rgb::Mesh& mesh = document_.mesh();
+    stroke_->add_whole(
+        [&mesh, edit] {
+            const rgbio::DetailOutcome outcome = rgbio::apply_detail_edit(mesh, edit, rgbio::default_triangle_limit());
+            return rgb::RequestStats{outcome.report.splits, outcome.report.removals, outcome.report.level_cap_bound};
+        },
+        rgbio::format_detail_line(edit) + "\n");
+}
+
+ViewLodJob* Editor::view_lod() const { return jobs_.empty() ? nullptr : dynamic_cast<ViewLodJob*>(jobs_.front().get()); }
+
+}  // namespace app

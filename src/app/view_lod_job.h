@@ -1,0 +1,54 @@
+#pragma once
+// The editor's view-dependent mode (README "Detail by size, accuracy and view"): a job that never
+// ends by itself; every frame it hands the updater (rgb/view_lod.h) the camera as it is now and lets it
+// work a time slice, so detail follows the camera while it orbits. Freezing it (cancel) ends the job
+// and leaves the current mesh as an ordinary editable state: one undoable step like any job.
+#include <chrono>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "app/mesh_job.h"
+#include "rgb/screen_detail.h"
+#include "rgb/view_lod.h"
+
+namespace rgb {
+class Mesh;
+}
+
+namespace app {
+
+class ViewLodJob : public MeshJob {
+public:
+    // `current_view` is asked once per step for the camera the frame is drawn with.
+    ViewLodJob(rgb::Mesh& mesh, const rgb::ViewLodSettings& settings, std::function<rgb::ScreenView()> current_view);
+    ~ViewLodJob() override;
+    ViewLodJob(const ViewLodJob&) = delete;
+    ViewLodJob& operator=(const ViewLodJob&) = delete;
+
+    // Returns false only once frozen.
+    bool step(std::chrono::microseconds slice) override;
+    // 1 while the mesh is settled for the current camera, 0 while it catches up.
+    float progress() const override;
+    bool changed() const override;
+    std::string label() const override { return "view-dependent LOD"; }
+    // Freezes: the mesh stays as it is.
+    void cancel() override { frozen_ = true; }
+    // A camera's detail is no script line.
+    std::optional<std::string> script() const override { return std::nullopt; }
+
+    bool converged() const { return lod_.converged(); }
+    const rgb::ViewLodStats& stats() const { return lod_.stats(); }
+    // Takes effect at the next step.
+    void set_settings(const rgb::ViewLodSettings& settings) { lod_.set_settings(settings); }
+    const rgb::ViewLodSettings& settings() const { return lod_.settings(); }
+
+private:
+    std::function<rgb::ScreenView()> current_view_;
+    rgb::ScreenView view_;
+    rgb::ViewLod lod_;
+    bool frozen_ = false;
+};
+
+}  // namespace app

@@ -1,0 +1,58 @@
+#include "io/gltf_export.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+
+#include "rgb/face_location.h"
+#include "rgb/limit_normals.h"
+#include "rgb/loop_geometry.h"
+
+namespace rgbio {
+
+bool is_gltf_path(const std::string& path) {
+    std::string extension = std::filesystem::path(path).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+    return extension == ".glb" || extension == ".gltf";
+}
+
+GltfMesh gltf_mesh(const rgb::Mesh& mesh, const SaveOptions& options) {
+    GltfMesh out;
+    std::vector<std::uint32_t> index(mesh.vertex_capacity(), kNoIndex);
+    const std::vector<glm::dvec3> normals = rgb::limit_normals(mesh);
+    for (rgb::VertexId v : mesh.vertices()) {
+        index[v.idx] = static_cast<std::uint32_t>(out.positions.size());
+        out.positions.push_back(options.positions == SavedPositions::Limit ? rgb::limit_position_uncached(mesh, v)
+                                                                           : rgb::displayed_position(mesh, v));
+        out.normals.push_back(normals[v.idx]);
+    }
+    const BaseAttributes* attributes = options.attributes.get();
+    const bool texcoords = attributes && is_base_mesh(mesh) && !attributes->triangle_texcoords.empty();
+    FaceLabels materials;  // per written triangle, for material_indices
+    if (attributes && !attributes->labels.materials.empty()) materials.names = attributes->labels.materials.names;
+    for (rgb::FaceId f : mesh.faces()) {
+        const auto& v = mesh.face_vertices(f);
+        out.triangles.push_back({index[v[0].idx], index[v[1].idx], index[v[2].idx]});
+        if (texcoords)
+            out.triangle_texcoords.push_back({base_corner_texcoord(mesh, *attributes, f, 0), base_corner_texcoord(mesh, *attributes, f, 1),
+                                              base_corner_texcoord(mesh, *attributes, f, 2)});
+        if (!materials.names.empty()) materials.of_triangle.push_back(attributes->labels.materials.of_triangle[rgb::base_face_of(mesh, f)]);
+    }
+    if (texcoords) out.texcoords = attributes->texcoords;
+    if (attributes) {
+        out.materials = attributes->materials;
+        out.triangle_materials = material_indices(materials, out.materials);
+    }
+    return out;
+}
+
+void export_gltf(const rgb::Mesh& mesh, const std::string& path, const SaveOptions& options) {
+    save_gltf(gltf_mesh(mesh, options), path);
+}
+
+void save_mesh_file(const rgb::Mesh& mesh, const std::string& path, const SaveOptions& options) {
+    if (is_gltf_path(path)) export_gltf(mesh, path, options);
+    else save_mesh(mesh, path, options);
+}
+
+}  // namespace rgbio

@@ -1,0 +1,26 @@
+#pragma once
+// The adaptive mesh as a glTF 2.0 file (gltf_writer.h), for pipelines: its positions (displayed or
+// limit, as SaveOptions says), the exact limit normals (rgb/limit_normals.h), one primitive per
+// material of the base faces the triangles lie in, the materials the .mtl libraries define (base
+// colour, or base colour texture), and texture coordinates while the mesh is its base mesh (a refined
+// mesh has none yet: dropped_attributes says so).
+#include <string>
+
+#include "io/gltf_writer.h"
+#include "io/mesh_file.h"
+#include "rgb/mesh.h"
+
+namespace rgbio {
+
+// Whether `path` names a glTF file (.glb or .gltf, any case): what `-o` and Save use to choose.
+bool is_gltf_path(const std::string& path);
+
+GltfMesh gltf_mesh(const rgb::Mesh& mesh, const SaveOptions& options);
+
+// save_gltf(gltf_mesh(mesh, options), path). Throws SaveError.
+void export_gltf(const rgb::Mesh& mesh, const std::string& path, const SaveOptions& options);
+
+// export_gltf for a glTF path, save_mesh otherwise.
+void save_mesh_file(const rgb::Mesh& mesh, const std::string& path, const SaveOptions& options);
+
+}  // namespace rgbio

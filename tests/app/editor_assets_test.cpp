@@ -1,0 +1,105 @@
+// A file's materials, groups, texture coordinates and colours in the editor: opening it shows them
+// (the document's appearance), painting keeps them, and Save writes the labels back with an mtllib
+// that still leads to the library from another folder, as OBJ or glTF.
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "app/editor.h"
+#include "io/base_attributes.h"
+#include "io/obj_reader.h"
+#include "render/surface_appearance.h"
+
+namespace app {
+namespace {
+
+constexpr glm::ivec2 kViewport{800, 600};
+constexpr int kCells = 4;
+
+std::filesystem::path fresh_folder(const std::string& name) {
+    const std::filesystem::path folder = std::filesystem::path(::testing::TempDir()) / name;
+    std::filesystem::remove_all(folder);
+    std::filesystem::create_directories(folder);
+    return folder;
+}
+
+// A flat kCells x kCells grid facing +z with texture coordinates (x, y) / kCells and vertex colours
+// (x / kCells, y / kCells, 0.5), material "left" (red) or "right" (blue) by column half and group
+// "bottom" or "top" by row half, and its library.
+void write_grid(const std::filesystem::path& folder) {
+    std::ofstream mtl(folder / "grid.mtl");
+    mtl << "newmtl left\nKd 1 0 0\nnewmtl right\nKd 0 0 1\n";
+    std::ofstream obj(folder / "grid.obj");
+    obj << "mtllib grid.mtl\n";
+    for (int y = 0; y <= kCells; ++y)
+        for (int x = 0; x <= kCells; ++x)
+            obj << "v " << x << ' ' << y << " 0 " << double(x) / kCells << ' ' << double(y) / kCells << " 0.5\nvt "
+                << double(x) / kCells << ' ' << double(y) / kCells << '\n';
+    for (int y = 0; y < kCells; ++y)
+        for (int x = 0; x < kCells; ++x) {
+            const int a = y * (kCells + 1) + x + 1, b = a + 1, c = a + kCells + 2, d = a + kCells + 1;
+            obj << "g " << (y < kCells / 2 ? "bottom" : "top") << "\nusemtl " << (x < kCells / 2 ? "left" : "right") << '\n';
+            obj << "f " << a << '/' << a << ' ' << b << '/' << b << ' ' << c << '/' << c << '\n';
+            obj << "f " << a << '/' << a << ' ' << c << '/' << c << ' ' << d << '/' << d << '\n';
+        }
+}
+
+TEST(EditorAssets, OpeningShowsTheFilesLookAndSavingKeepsItsLabels) {
+    const std::filesystem::path in = fresh_folder("assets_in"), out = fresh_folder("assets_out") / "deeper";
+    std::filesystem::create_directories(out);
+    write_grid(in);
+    Editor editor(kViewport);
+    ASSERT_TRUE(editor.open((in / "grid.obj").string())) << editor.message();
+
+    const std::shared_ptr<const render::SurfaceAppearance>& look = editor.document().appearance();
+    ASSERT_NE(look, nullptr);
+    ASSERT_EQ(look->face_colours.size(), 2u * kCells * kCells);
+    ASSERT_EQ(look->corner_texcoords.size(), 2u * kCells * kCells);
+    ASSERT_EQ(look->vertex_colours.size(), std::size_t{(kCells + 1) * (kCells + 1)});
+    const rgb::BaseMesh& base = editor.document().mesh().base();
+    for (std::uint32_t f = 0; f < base.num_faces(); ++f) {
+        glm::dvec3 centroid(0.0);
+        for (int c = 0; c < 3; ++c) {
+            const glm::dvec3& p = base.position(base.face(f)[c]);
+            centroid += p / 3.0;
+            EXPECT_EQ((*look->corner_texcoords[f])[c], glm::vec2(p.x / kCells, p.y / kCells));
+        }
+        EXPECT_EQ(*look->face_colours[f], centroid.x < kCells / 2 ? glm::vec3(1, 0, 0) : glm::vec3(0, 0, 1)) << "face " << f;
+    }
+
+    const std::size_t before = editor.document().mesh().num_faces();
+    editor.brush().target_level = 3;
+    editor.brush().radius_px = 60.0f;
+    editor.mouse_moved({0.3f * kViewport.x, 0.5f * kViewport.y});
+    editor.mouse_pressed(MouseButton::Left, {});
+    editor.mouse_moved({0.7f * kViewport.x, 0.5f * kViewport.y});
+    editor.mouse_released(MouseButton::Left);
+    editor.finish_work();
+    ASSERT_GT(editor.document().mesh().num_faces(), before) << "the stroke refined the grid";
+
+    editor.request_save_as((out / "painted.obj").string());
+    editor.finish_work();
+    ASSERT_FALSE(editor.message_is_error()) << editor.message();
+    std::vector<std::string> warnings;
+    const rgbio::LoadedAsset saved = rgbio::load_asset((out / "painted.obj").string(), &warnings);
+    EXPECT_EQ(saved.mesh.num_faces(), editor.document().mesh().num_faces());
+    const rgbio::LoadedMesh input = rgbio::read_obj_file((in / "grid.obj").string());
+    EXPECT_EQ(saved.attributes->labels.materials, input.face_materials);
+    EXPECT_EQ(saved.attributes->labels.groups, input.face_groups);
+    const rgbio::LoadedMesh written = rgbio::read_obj_file((out / "painted.obj").string());
+    ASSERT_EQ(written.materials.size(), 2u) << "the mtllib line leads to grid.mtl from the other folder";
+    EXPECT_EQ(written.materials[1].diffuse, glm::dvec3(0, 0, 1));
+
+    editor.request_save_as((out / "painted.glb").string());
+    editor.finish_work();
+    ASSERT_FALSE(editor.message_is_error()) << editor.message();
+    std::ifstream glb(out / "painted.glb", std::ios::binary);
+    std::string magic(4, '\0');
+    glb.read(magic.data(), 4);
+    EXPECT_EQ(magic, "glTF");
+}
+
+}  // namespace
+}  // namespace app

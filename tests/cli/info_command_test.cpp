@@ -1,0 +1,73 @@
+// `rgbsub info`: the whole report, line for line, for meshes whose counts are known by hand.
+#include <string>
+
+#include "command_test_support.h"
+#include "obj_test_support.h"
+
+namespace cli {
+namespace {
+
+class InfoCommand : public test::CommandFolder {
+protected:
+    // The report for `text`, which must be accepted.
+    std::string info(const std::string& name, const std::string& text) {
+        const test::CommandRun run = test::run_command({"info", write(name, text)});
+        EXPECT_EQ(run.exit_code, 0) << run.err;
+        EXPECT_EQ(run.err, "");
+        return run.out;
+    }
+};
+
+// Closed and genus 0: V - E + F = 2, E = 3F/2.
+TEST_F(InfoCommand, ClosedOctahedron) {
+    EXPECT_EQ(info("octahedron.obj", rgbio::test::kOctahedron),
+              path("octahedron.obj") + ": valid\n"
+              "adaptive state: none (base mesh)\n"
+              "vertices: 6\nedges: 12\nfaces: 8\nboundary loops: 0\nEuler characteristic: 2\n"
+              "triangles per colour: green 8, red 0, blue 0\n"
+              "triangles per level: 0:8\n");
+}
+
+// A square ring: four outer and four inner corners, two triangles per side, two boundary loops.
+TEST_F(InfoCommand, AnnulusHasTwoBoundaryLoops) {
+    const std::string ring =
+        "v -2 -2 0\nv 2 -2 0\nv 2 2 0\nv -2 2 0\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n"
+        "f 1 2 6\nf 1 6 5\nf 2 3 7\nf 2 7 6\nf 3 4 8\nf 3 8 7\nf 4 1 5\nf 4 5 8\n";
+    EXPECT_EQ(info("ring.obj", ring),
+              path("ring.obj") + ": valid\n"
+              "adaptive state: none (base mesh)\n"
+              "vertices: 8\nedges: 16\nfaces: 8\nboundary loops: 2\nEuler characteristic: 0\n"
+              "triangles per colour: green 8, red 0, blue 0\n"
+              "triangles per level: 0:8\n");
+}
+
+// A fixed file says so and lists what was fixed: a quad split in two, an unused vertex dropped.
+TEST_F(InfoCommand, FixesAreListedAsWarnings) {
+    const test::CommandRun run = test::run_command(
+        {"info", write("quad.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 5 5 5\nf 1 2 3 4\n")});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const std::string head = path("quad.obj") + ": valid after fixes\n";
+    EXPECT_EQ(run.out.substr(0, head.size()), head);
+    std::size_t warnings = 0;
+    for (std::size_t at = run.out.find("\nwarning: "); at != std::string::npos; at = run.out.find("\nwarning: ", at + 1)) ++warnings;
+    EXPECT_EQ(warnings, 2u) << run.out;
+    EXPECT_NE(run.out.find("vertices: 4\nedges: 5\nfaces: 2\nboundary loops: 1\nEuler characteristic: 1\n"), std::string::npos)
+        << run.out;
+}
+
+// A saved level-1 refinement: 4 * 8 green faces of level 1; V = 6 + 12 edge points, E = 3F/2.
+TEST_F(InfoCommand, SavedStateIsReportedWithItsLevels) {
+    ASSERT_EQ(test::run_command({"refine", write("octahedron.obj", rgbio::test::kOctahedron), "-o", path("fine.obj"), "--level", "1"})
+                  .exit_code,
+              0);
+    const test::CommandRun run = test::run_command({"info", path("fine.obj")});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_EQ(run.out, path("fine.obj") + ": valid\n"
+                       "adaptive state: restored from the file's #rgb lines\n"
+                       "vertices: 18\nedges: 48\nfaces: 32\nboundary loops: 0\nEuler characteristic: 2\n"
+                       "triangles per colour: green 32, red 0, blue 0\n"
+                       "triangles per level: 1:32\n");
+}
+
+}  // namespace
+}  // namespace cli

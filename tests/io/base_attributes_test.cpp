@@ -1,0 +1,112 @@
+// Texture coordinates and vertex colours, which the core cannot subdivide yet: a save at level 0
+// writes them back exactly (read with tinyobjloader, an independent reader) and a saved level-0 file
+// resumes with them; a refined save leaves them out and says so.
+#include <algorithm>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include <gtest/gtest.h>
+#include <tiny_obj_loader.h>
+
+#include "io/base_attributes.h"
+#include "io/mesh_file.h"
+#include "obj_test_support.h"
+#include "rgb/requests.h"
+#include "scratch_folder.h"
+
+namespace rgbio {
+namespace {
+
+// Two triangles of a square with per-corner UVs (a seam: vertex 1 has two) and vertex colours.
+const std::string kTextured =
+    "v 0 0 0 1 0 0\nv 1 0 0 0 1 0\nv 1 1 0 0 0 1\nv 0 1 0 0.5 0.25 0.125\n"
+    "vt 0 0\nvt 0.5 0\nvt 0.5 0.5\nvt 0 0.5\nvt 0.75 0.75\n"
+    "f 1/1 2/2 3/3\nf 1/5 3/3 4/4\n";
+
+// Each corner of the file as (x, y, z, u, v, r, g, b), read with tinyobjloader.
+std::multiset<std::array<double, 8>> corners_read_independently(const std::string& path) {
+    tinyobj::attrib_t attrib;
+    std::vector<tinyobj::shape_t> shapes;
+    std::vector<tinyobj::material_t> materials;
+    std::string warnings, errors;
+    EXPECT_TRUE(tinyobj::LoadObj(&attrib, &shapes, &materials, &warnings, &errors, path.c_str(), nullptr, false)) << errors;
+    std::multiset<std::array<double, 8>> corners;
+    for (const tinyobj::shape_t& shape : shapes)
+        for (const tinyobj::index_t& i : shape.mesh.indices) {
+            std::array<double, 8> c{};
+            for (int k = 0; k < 3; ++k) {
+                c[k] = attrib.vertices[3 * i.vertex_index + k];
+                c[5 + k] = attrib.colors[3 * i.vertex_index + k];
+            }
+            for (int k = 0; k < 2; ++k) c[3 + k] = i.texcoord_index < 0 ? -1.0 : attrib.texcoords[2 * i.texcoord_index + k];
+            corners.insert(c);
+        }
+    return corners;
+}
+
+class TexturedMesh : public test::ScratchFolder {};
+
+TEST_F(TexturedMesh, ALevelZeroSaveKeepsTextureCoordinatesAndColours) {
+    write("in.obj", kTextured);
+    LoadedAsset asset = load_asset(path("in.obj"));
+    // Refined and back: the mesh is its base mesh again.
+    rgb::set_level(asset.mesh, 2);
+    rgb::set_level(asset.mesh, 0);
+    EXPECT_TRUE(dropped_attributes(asset.mesh, asset.attributes.get()).empty());
+    SaveOptions options;
+    options.attributes = asset.attributes;
+    save_mesh(asset.mesh, path("level0.obj"), options);
+    EXPECT_EQ(corners_read_independently(path("level0.obj")), corners_read_independently(path("in.obj")));
+
+    // The saved file resumes (its state) with the same base attributes.
+    std::vector<std::string> warnings;
+    const LoadedAsset resumed = load_asset(path("level0.obj"), &warnings);
+    EXPECT_TRUE(warnings.empty()) << warnings.front();
+    EXPECT_EQ(resumed.attributes->texcoords, asset.attributes->texcoords);
+    EXPECT_EQ(resumed.attributes->triangle_texcoords, asset.attributes->triangle_texcoords);
+    EXPECT_EQ(resumed.attributes->colours, asset.attributes->colours);
+    EXPECT_EQ(resumed.attributes->colours[3], glm::dvec3(0.5, 0.25, 0.125));
+}
+
+TEST_F(TexturedMesh, ARefinedSaveLeavesThemOutAndSaysWhy) {
+    write("in.obj", kTextured);
+    LoadedAsset asset = load_asset(path("in.obj"));
+    rgb::set_level(asset.mesh, 1);
+    const std::vector<std::string> dropped = dropped_attributes(asset.mesh, asset.attributes.get());
+    ASSERT_EQ(dropped.size(), 2u);
+    EXPECT_TRUE(test::has_warning(dropped, "the texture coordinates (vt) are not written: the mesh is refined"));
+    EXPECT_TRUE(test::has_warning(dropped, "the vertex colours are not written"));
+    SaveOptions options;
+    options.attributes = asset.attributes;
+    const std::string text = format_obj(asset.mesh, options);
+    EXPECT_EQ(text.find("\nvt "), std::string::npos);
+    std::istringstream lines(text);
+    for (std::string line; std::getline(lines, line);) {
+        const bool vertex = line.rfind("v ", 0) == 0;
+        EXPECT_TRUE(!vertex || std::count(line.begin(), line.end(), ' ') == 3) << line;  // no colours
+    }
+}
+
+TEST_F(TexturedMesh, TextureCoordinatesOfARefinedFileAreIgnoredWithAWarning) {
+    write("in.obj", kTextured);
+    LoadedAsset asset = load_asset(path("in.obj"));
+    rgb::set_level(asset.mesh, 1);
+    save_mesh(asset.mesh, path("refined.obj"));
+    // Another program gave the refined faces texture coordinates, which have no base counterpart.
+    std::string text = read(path("refined.obj"));
+    const std::size_t f = text.find("\nf ") + 1, end = text.find('\n', f);
+    std::istringstream corners(text.substr(f + 2, end - f - 2));
+    std::string with_uv = "vt 0.5 0.5\nf";
+    for (std::string v; corners >> v;) with_uv += " " + v + "/1";
+    text.replace(f, end - f, with_uv);
+    write("refined.obj", text);
+    std::vector<std::string> warnings;
+    const LoadedAsset resumed = load_asset(path("refined.obj"), &warnings);
+    EXPECT_EQ(resumed.mesh.num_faces(), asset.mesh.num_faces());  // the state still fits the faces
+    EXPECT_TRUE(resumed.attributes->triangle_texcoords.empty());
+    EXPECT_TRUE(test::has_warning(warnings, "ignored the file's texture coordinates and vertex colours: they belong to a refined mesh"));
+}
+
+}  // namespace
+}  // namespace rgbio

@@ -1,0 +1,102 @@
+// Vertex colours subdivide as positions do (issue 12): a channel's values on an adaptive mesh equal,
+// bit for bit, the positions of the same adaptive mesh built over a base mesh whose positions are the
+// channel's values. The two meshes go through the same operators (chosen by slot, which geometry does
+// not influence), so they have the same vertices in the same slots.
+#include <memory>
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "rgb/loop_geometry.h"
+#include "rgb/mesh.h"
+#include "rgb/operators.h"
+#include "rgb/refine.h"
+#include "rgb/vertex_channel.h"
+#include "support/test_meshes.h"
+
+namespace {
+
+using rgbtest::TestMesh;
+
+struct ChannelCase {
+    TestMesh mesh;
+    rgb::SharpFeatures features;
+};
+
+void PrintTo(const ChannelCase& c, std::ostream* os) { *os << c.mesh.name << (c.features == rgb::SharpFeatures{} ? "" : " tagged"); }
+
+std::vector<ChannelCase> channel_cases() {
+    rgb::SharpFeatures icosahedron_tags;
+    icosahedron_tags.edges = {{0, 1, rgb::kInfiniteSharpness}, {1, 2, 2}};
+    icosahedron_tags.corners = {{5, rgb::kInfiniteSharpness}};
+    rgb::SharpFeatures grid_tags;
+    grid_tags.boundary = rgb::BoundaryInterpolation::EdgeAndCorner;
+    return {{rgbtest::icosahedron(), {}}, {rgbtest::grid(3, 3), {}}, {rgbtest::fan(6), {}},
+            {rgbtest::icosahedron(), icosahedron_tags}, {rgbtest::grid(3, 3), grid_tags}};
+}
+
+// Colours unrelated to the positions (and not a linear function of them).
+std::vector<glm::dvec3> random_colours(std::size_t n, std::uint32_t seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::vector<glm::dvec3> colours(n);
+    for (glm::dvec3& c : colours) c = {unit(rng), unit(rng), unit(rng)};
+    return colours;
+}
+
+class VertexChannel : public ::testing::TestWithParam<ChannelCase> {};
+
+TEST_P(VertexChannel, ValuesAreThePositionsOfTheMeshOverTheChannelsBase) {
+    const ChannelCase& c = GetParam();
+    const std::vector<glm::dvec3> colours = random_colours(c.mesh.positions.size(), 7);
+    rgb::Mesh mesh(std::make_shared<const rgb::BaseMesh>(c.mesh.positions, c.mesh.triangles, c.features));
+    rgb::Mesh over_colours(std::make_shared<const rgb::BaseMesh>(colours, c.mesh.triangles, c.features));
+    std::mt19937 rng(11);
+    std::size_t checks = 0;
+    for (int step = 0; step < 300; ++step) {
+        // The same random operator on both, by slot.
+        std::vector<rgb::FaceId> faces;
+        for (rgb::FaceId f : mesh.faces()) faces.push_back(f);
+        const rgb::FaceId f = faces[rng() % faces.size()];
+        const rgb::HalfedgeId h = rgb::Mesh::halfedge(f, static_cast<int>(rng() % 3));
+        const rgb::VertexId v = mesh.face_vertices(f)[rng() % 3];
+        if (rng() % 4 != 0 && rgb::can_split_edge(mesh, h) && mesh.edge_type(h).level < 4) {
+            rgb::split_edge(mesh, h);
+            rgb::split_edge(over_colours, h);
+        } else if (mesh.level(v) > 0 && rgb::can_remove_vertex(mesh, v)) {
+            rgb::remove_vertex(mesh, v);
+            rgb::remove_vertex(over_colours, v);
+        }
+        ASSERT_EQ(mesh.num_vertices(), over_colours.num_vertices());
+        if (step % 50 != 49) continue;
+        const std::vector<glm::dvec3> displayed = rgb::vertex_channel_values(mesh, colours, rgb::ChannelLevel::Displayed);
+        const std::vector<glm::dvec3> limit = rgb::vertex_channel_values(mesh, colours, rgb::ChannelLevel::Limit);
+        for (rgb::VertexId w : mesh.vertices()) {
+            ASSERT_TRUE(over_colours.is_live(w));
+            ASSERT_EQ(displayed[w.idx], rgb::displayed_position(over_colours, w)) << "vertex " << w.idx << " step " << step;
+            ASSERT_EQ(limit[w.idx], rgb::limit_position_uncached(over_colours, w)) << "vertex " << w.idx << " step " << step;
+            ++checks;
+        }
+    }
+    EXPECT_GT(checks, 100u);
+}
+
+TEST_P(VertexChannel, PositionsAsAChannelGiveThePositions) {
+    const ChannelCase& c = GetParam();
+    rgb::Mesh mesh(std::make_shared<const rgb::BaseMesh>(c.mesh.positions, c.mesh.triangles, c.features));
+    rgb::refine_uniform(mesh, 3);
+    const std::vector<glm::dvec3> displayed = rgb::vertex_channel_values(mesh, c.mesh.positions, rgb::ChannelLevel::Displayed);
+    for (rgb::VertexId v : mesh.vertices()) ASSERT_EQ(displayed[v.idx], rgb::displayed_position(mesh, v)) << "vertex " << v.idx;
+}
+
+TEST(VertexChannelInput, OneValuePerBaseVertex) {
+    const TestMesh m = rgbtest::octahedron();
+    const rgb::Mesh mesh = rgbtest::make_rgb_mesh(m);
+    const std::vector<glm::dvec3> too_few(m.positions.size() - 1);
+    EXPECT_THROW(rgb::vertex_channel_values(mesh, too_few, rgb::ChannelLevel::Displayed), std::invalid_argument);
+}
+
+INSTANTIATE_TEST_SUITE_P(Meshes, VertexChannel, ::testing::ValuesIn(channel_cases()));
+
+}  // namespace
