@@ -26,6 +26,8 @@ void Document::adopt(LoadedDocument loaded, std::string path, bool dirty) {
     changes_->clear();
     geometry_ = std::move(loaded.geometry);
     index_ = std::move(loaded.index);
+    uv_channel_ = std::move(loaded.uvs);
+    uv_layout_.reset();
     display_changes_ = DisplayChanges{{}, true};
     path_ = std::move(path);
     history_.clear();
@@ -37,6 +39,8 @@ void Document::adopt(rgb::Mesh mesh, std::string path) {
     attributes_ = nullptr;
     geometry_.set_appearance(nullptr);
     replace_mesh(std::move(mesh));
+    uv_channel_.reset();
+    uv_layout_.reset();
     path_ = std::move(path);
     history_.clear();
     dirty_ = false;
@@ -49,8 +53,31 @@ void Document::save(const std::string& path, const rgbio::SaveOptions& options) 
     dirty_ = false;
 }
 
-rgbio::SaveOptions Document::with_attributes(rgbio::SaveOptions options) const {
+std::shared_ptr<const rgb::UvLayout> Document::uv_layout() {
+    if (!uv_channel_) return nullptr;
+    if (!uv_layout_ || uv_layout_base_ != mesh_.base().serial()) {
+        uv_layout_ = std::make_shared<const rgb::UvLayout>(mesh_.base(), *uv_channel_);
+        uv_layout_base_ = mesh_.base().serial();
+    }
+    return uv_layout_;
+}
+
+std::optional<rgb::UvInterpolation> Document::uv_interpolation() const {
+    if (!uv_channel_) return std::nullopt;
+    return uv_channel_->interpolation;
+}
+
+void Document::set_uv_interpolation(rgb::UvInterpolation interpolation) {
+    if (!uv_channel_ || uv_channel_->interpolation == interpolation) return;
+    uv_channel_->interpolation = interpolation;
+    uv_layout_.reset();
+    dirty_ = true;
+    ++changes_count_;
+}
+
+rgbio::SaveOptions Document::with_attributes(rgbio::SaveOptions options) {
     options.attributes = attributes_;
+    options.uvs = uv_layout();
     return options;
 }
 

@@ -36,9 +36,9 @@ public:
     // Throws rgbio::SaveError. Clears the unsaved mark and makes `path` the document's file. Writes
     // glTF for a .glb or .gltf path, else OBJ; with_attributes(options) either way.
     void save(const std::string& path, const rgbio::SaveOptions& options);
-    // `options` with what rides on the base mesh (materials, groups, texture coordinates, colours
-    // from the file read), for saves made elsewhere (in the background).
-    rgbio::SaveOptions with_attributes(rgbio::SaveOptions options) const;
+    // `options` with what rides on the base mesh (materials, groups, colours from the file read, the
+    // exact texture coordinates' layout), for saves made elsewhere (in the background).
+    rgbio::SaveOptions with_attributes(rgbio::SaveOptions options);
     // The file's look (materials, vertex colours, texture coordinates) the geometry shows; null if none.
     const std::shared_ptr<const render::SurfaceAppearance>& appearance() const { return geometry_.appearance(); }
     // A copy saved elsewhere (in the background) reached `path`: the file is the document's, and
@@ -64,6 +64,12 @@ public:
     // vertex set stays, every position follows the new rules. Throws std::invalid_argument for tags
     // the base mesh refuses (the document is unchanged then).
     void set_sharp_features(const rgb::SharpFeatures& features, std::string label);
+    // Texture coordinates: the base mesh's UV channel if the file had one, and its layout over the
+    // current base mesh (rebuilt after a retag), for saving; null without.
+    std::shared_ptr<const rgb::UvLayout> uv_layout();
+    std::optional<rgb::UvInterpolation> uv_interpolation() const;
+    // Another OpenSubdiv face-varying option for the UVs: a setting of the file, not an undoable edit.
+    void set_uv_interpolation(rgb::UvInterpolation interpolation);
     UndoHistory& history() { return history_; }
     const UndoHistory& history() const { return history_; }
 
@@ -95,6 +101,9 @@ private:
     std::string path_;
     bool dirty_ = false;
     std::uint64_t changes_count_ = 0;
+    std::optional<rgb::UvChannel> uv_channel_;
+    std::shared_ptr<const rgb::UvLayout> uv_layout_;
+    std::uint64_t uv_layout_base_ = 0;  // BaseMesh::serial of the base uv_layout_ was built over
     render::SurfaceGeometry geometry_;
     SurfaceIndex index_;
     std::unique_ptr<render::MeshChanges> changes_;

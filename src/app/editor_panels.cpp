@@ -183,6 +183,14 @@ void files_panel(Editor& editor, PanelState& state) {
     ImGui::RadioButton("limit", &positions, 1);
     tooltip("Which positions a save writes: as shown, or on the Loop limit surface");
     editor.save_options().positions = static_cast<rgbio::SavedPositions>(positions);
+    if (const std::optional<rgb::UvInterpolation> uv = editor.document().uv_interpolation()) {
+        int option = static_cast<int>(*uv);
+        if (ImGui::Combo("UV interpolation", &option, "none\0corners\0boundaries\0all\0"))
+            editor.document().set_uv_interpolation(static_cast<rgb::UvInterpolation>(option));
+        tooltip("How saved texture coordinates are subdivided (OpenSubdiv's FVAR_LINEAR_* options): none moves every "
+                "UV (seams become smooth curves), corners keeps UV corners in place, boundaries keeps seams and borders "
+                "on their input lines, all is linear");
+    }
     if (!editor.recent_files().empty() && ImGui::BeginCombo("recent", "choose a recent file")) {
         for (const std::string& recent : editor.recent_files())
             if (ImGui::Selectable(recent.c_str())) copy_path(state, recent);

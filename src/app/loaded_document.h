@@ -1,6 +1,7 @@
 #pragma once
 // A mesh read from a file with everything the editor shows and picks on already built, so that
 // reading can happen away from the window's thread and handing it over costs nothing.
+#include <optional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -9,6 +10,7 @@
 #include "io/base_attributes.h"
 #include "render/surface_geometry.h"
 #include "rgb/mesh.h"
+#include "rgb/uv_layout.h"
 
 namespace app {
 
@@ -18,6 +20,7 @@ struct LoadedDocument {
     render::SurfaceGeometry geometry;
     SurfaceIndex index;
     std::vector<std::string> warnings;
+    std::optional<rgb::UvChannel> uvs;  // the base mesh's texture coordinates (io/base_uvs.h)
 };
 
 // Reads `path` (throws rgbio::ObjError) and builds its geometry at `source` positions, with the

@@ -26,12 +26,13 @@ double percentile(std::vector<double> values, double p) {
 
 int run_apply(std::span<const std::string> args) {
     const Arguments arguments(args, {"--timings", "--normals", "--plain", kStrictSwitch},
-                              {"--output", "--positions", "--max-triangles", kSharpAngleOption, kBoundaryOption},
+                              {"--output", "--positions", "--max-triangles", kSharpAngleOption, kBoundaryOption,
+                               kUvInterpolationOption},
                               {{"-o", "--output"}});
     if (arguments.has("--help")) {
         std::cout << "usage: rgbsub apply IN.obj SCRIPT -o OUT [--timings] [--positions display|limit] [--normals]\n"
                      "                    [--max-triangles N] [--plain] [--strict] [--sharp-angle DEG]\n"
-                     "                    [--boundary edge-only|edge-and-corner]\n"
+                     "                    [--boundary edge-only|edge-and-corner] [--uv-interpolation OPTION]\n"
                      "Runs SCRIPT, one edit per line, then saves the adaptive mesh. Coordinates are those of IN.obj's\n"
                      "base mesh.\n"
                      "  level N [sphere X Y Z R]     set the level of detail to N in the sphere (everywhere without one)\n"
@@ -47,7 +48,7 @@ int run_apply(std::span<const std::string> args) {
                      "Blank lines and lines starting with # are skipped. --timings prints the engine time per line,\n"
                      "and for the dabs their count and the engine time per dab (p50, p95).\n"
                      "--plain writes an OBJ without the adaptive state (#rgb lines), for tools that dislike them.\n"
-                  << kOutputHelp << kStrictHelp << kSharpHelp;
+                  << kOutputHelp << kStrictHelp << kSharpHelp << kUvHelp;
         return exit_ok;
     }
     if (arguments.positional().size() != 2) throw UsageError("expects IN.obj and SCRIPT");
@@ -67,6 +68,7 @@ int run_apply(std::span<const std::string> args) {
     rgbio::LoadedAsset asset = load_input("apply", input, arguments);
     rgb::Mesh& mesh = asset.mesh;
     save.attributes = asset.attributes;
+    save.uvs = input_uv_layout(arguments, asset);
     Progress progress("applying " + script_file);
     rgbio::ScriptRunner runner(limit);
     std::vector<double> dab_ms;

@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "cli/commands.h"
+#include "io/base_uvs.h"
 #include "io/gltf_export.h"
 #include "rgb/sharp_angle.h"
 #include "rgb/state.h"
@@ -22,7 +23,8 @@ rgbio::LoadedAsset load_input(const char* command, const std::string& file, cons
 }
 
 void save_output(const char* command, const rgb::Mesh& mesh, const std::string& file, const rgbio::SaveOptions& save) {
-    std::vector<std::string> warnings = rgbio::dropped_attributes(mesh, save.attributes.get());
+    // The OBJ writer has the exact texture coordinates of every level; the glTF writer only those of level 0.
+    std::vector<std::string> warnings = rgbio::dropped_attributes(mesh, save.attributes.get(), save.uvs && !rgbio::is_gltf_path(file));
     if (mesh.base().has_sharp_features() && (save.normals || rgbio::is_gltf_path(file)))
         warnings.push_back("the normals follow the smooth Loop rules (rgb/limit_normals.h): at vertices on tagged creases and "
                            "corners, whose tangent masks are not implemented yet, they are approximate");
@@ -49,6 +51,17 @@ rgb::Mesh with_sharp_options(const Arguments& arguments, rgb::Mesh mesh) {
     }
     if (features == mesh.base().sharp_features()) return mesh;
     return rgb::with_sharp_features(mesh, features);
+}
+
+std::shared_ptr<const rgb::UvLayout> input_uv_layout(const Arguments& arguments, const rgbio::LoadedAsset& asset) {
+    std::optional<rgb::UvInterpolation> interpolation;
+    if (const std::optional<std::string> value = arguments.value(kUvInterpolationOption)) {
+        interpolation = rgb::parse_uv_interpolation(*value);
+        if (!interpolation)
+            throw UsageError("--uv-interpolation must be 'none', 'corners', 'boundaries' or 'all', not '" + *value + "'");
+    }
+    // Classified by the final base mesh's tags (load_input applies the crease options first).
+    return rgbio::uv_layout(asset.uvs, asset.mesh, interpolation);
 }
 
 rgbio::SavedPositions parse_positions(const std::string& value) {

@@ -1,6 +1,8 @@
 #pragma once
 // What the mesh commands (info, refine, apply, render, edit) share: `--strict`, printing loader
-// warnings, reading `--positions`, and the crease options `--sharp-angle` and `--boundary`.
+// warnings, reading `--positions`, the crease options `--sharp-angle` and `--boundary`, and
+// `--uv-interpolation` for the commands that save.
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -26,6 +28,20 @@ inline constexpr std::string_view kSharpHelp =
     "  --boundary edge-only|edge-and-corner\n"
     "                      OpenSubdiv's boundary rule: edge-and-corner keeps boundary vertices with a\n"
     "                      single face fixed (default: the file's, else edge-only)\n";
+
+// How texture coordinates are subdivided (rgb/uv_layout.h), for the commands that save a mesh.
+inline constexpr std::string_view kUvInterpolationOption = "--uv-interpolation";
+inline constexpr std::string_view kUvHelp =
+    "  --uv-interpolation none|corners|boundaries|all\n"
+    "                      how texture coordinates (vt) are subdivided, as OpenSubdiv's FVAR_LINEAR_*:\n"
+    "                      none moves every UV (seams become smooth curves), corners keeps UV corners\n"
+    "                      (one-triangle spans) in place, boundaries keeps seams and borders on their\n"
+    "                      input lines, all is linear over each input triangle\n"
+    "                      (default: the file's, else corners)\n";
+
+// The input's UV layout over its (retagged) base mesh, with --uv-interpolation in place of the file's
+// option when given; nullptr for a file without texture coordinates. Throws UsageError for a bad value.
+std::shared_ptr<const rgb::UvLayout> input_uv_layout(const Arguments& arguments, const rgbio::LoadedAsset& asset);
 
 // The mesh with the tags these options add to its base mesh's (the file's t lines or saved state);
 // the mesh itself when neither is given. Throws UsageError for a bad value.

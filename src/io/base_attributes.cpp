@@ -1,5 +1,7 @@
 #include "io/base_attributes.h"
 
+#include "io/base_uvs.h"
+
 #include <filesystem>
 #include <iterator>
 
@@ -70,9 +72,10 @@ BaseAttributes base_attributes(const LoadedMesh& loaded, const rgb::Mesh& mesh, 
 LoadedAsset load_asset(const std::string& path, std::vector<std::string>* warnings, const ReadOptions& options) {
     LoadedMesh loaded = read_obj_file(path, options);
     std::vector<std::string> messages = std::move(loaded.warnings);
-    LoadedAsset asset{build_mesh(loaded), nullptr};
+    LoadedAsset asset{build_mesh(loaded), nullptr, std::nullopt};
     asset.attributes = std::make_shared<const BaseAttributes>(
         base_attributes(loaded, asset.mesh, std::filesystem::path(path).parent_path().string(), messages));
+    asset.uvs = base_uv_channel(loaded, asset.mesh, messages);
     if (warnings) warnings->insert(warnings->end(), messages.begin(), messages.end());
     return asset;
 }
@@ -106,12 +109,12 @@ std::vector<std::string> library_references(const BaseAttributes& attributes, co
     return references;
 }
 
-std::vector<std::string> dropped_attributes(const rgb::Mesh& mesh, const BaseAttributes* attributes) {
+std::vector<std::string> dropped_attributes(const rgb::Mesh& mesh, const BaseAttributes* attributes, bool exact_uvs) {
     std::vector<std::string> dropped;
     if (!attributes || is_base_mesh(mesh)) return dropped;
     const char* why = " are not written: the mesh is refined, and rgbsub cannot subdivide them yet (they need Loop rules "
                       "of their own); saving at level 0 keeps them";
-    if (!attributes->triangle_texcoords.empty()) dropped.push_back(std::string("the texture coordinates (vt)") + why);
+    if (!exact_uvs && !attributes->triangle_texcoords.empty()) dropped.push_back(std::string("the texture coordinates (vt)") + why);
     if (!attributes->colours.empty()) dropped.push_back(std::string("the vertex colours") + why);
     return dropped;
 }

@@ -11,6 +11,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,7 @@
 
 #include "io/loaded_mesh.h"
 #include "rgb/mesh.h"
+#include "rgb/uv_layout.h"
 
 namespace rgbio {
 
@@ -46,9 +48,10 @@ BaseAttributes base_attributes(const LoadedMesh& loaded, const rgb::Mesh& mesh, 
 struct LoadedAsset {
     rgb::Mesh mesh;
     std::shared_ptr<const BaseAttributes> attributes;
+    std::optional<rgb::UvChannel> uvs;  // the base mesh's texture coordinates (base_uvs.h), if any
 };
 
-// read_obj_file + build_mesh + base_attributes. Warnings are appended to *warnings if given.
+// read_obj_file + build_mesh + base_attributes + base_uv_channel. Warnings are appended to *warnings if given.
 LoadedAsset load_asset(const std::string& path, std::vector<std::string>* warnings = nullptr, const ReadOptions& options = {});
 
 // Whether the adaptive mesh is its base mesh (no face refined): then texture coordinates and colours
@@ -64,6 +67,7 @@ std::uint32_t base_corner_texcoord(const rgb::Mesh& mesh, const BaseAttributes& 
 std::vector<std::string> library_references(const BaseAttributes& attributes, const std::string& output_folder);
 
 // What a save of `mesh` leaves out of the attributes, one sentence each (empty when nothing).
-std::vector<std::string> dropped_attributes(const rgb::Mesh& mesh, const BaseAttributes* attributes);
+// `exact_uvs`: the texture coordinates are written through their own channel (rgb/uv_layout.h).
+std::vector<std::string> dropped_attributes(const rgb::Mesh& mesh, const BaseAttributes* attributes, bool exact_uvs = false);
 
 }  // namespace rgbio

@@ -18,6 +18,7 @@
 #include <glm/vec3.hpp>
 
 #include "rgb/mesh.h"
+#include "rgb/uv_layout.h"
 
 namespace rgbio {
 
@@ -82,6 +83,9 @@ struct LoadedMesh {
     // triangle_texcoords is empty when no face corner names a vt.
     std::vector<glm::dvec2> texcoords;
     std::vector<std::array<std::uint32_t, 3>> triangle_texcoords;
+    // With `adaptive`: the base mesh's UV channel from the state's base-uvs section, if it has one
+    // (texcoords above are then the saved mesh's, corner by corner of its f lines).
+    std::optional<rgb::UvChannel> base_uvs;
 
     FaceLabels face_materials;  // usemtl; a name refers to the entry of `materials` with that name
     FaceLabels face_groups;     // g (all names of one g line, as written, form one label)

@@ -14,6 +14,8 @@
 #include "io/truncation_check.h"
 #include "rgb/limit_normals.h"
 #include "rgb/loop_geometry.h"
+#include "rgb/mesh_uvs.h"
+#include "rgb/uv_evaluator.h"
 
 namespace rgbio {
 
@@ -60,7 +62,8 @@ void write_obj(const rgb::Mesh& mesh, const SaveOptions& options, const std::str
     // Texture coordinates and colours are the base mesh's: written only while the mesh is that.
     const bool base_data = attributes && is_base_mesh(mesh);
     const bool colours = base_data && !attributes->colours.empty();
-    const bool texcoords = base_data && !attributes->triangle_texcoords.empty();
+    // The exact UV channel, when there is one, says every corner's UV at every level.
+    const bool texcoords = !options.uvs && base_data && !attributes->triangle_texcoords.empty();
     const LabelledFaceOrder order = labelled_face_order(mesh, attributes ? attributes->labels : BaseFaceLabels{});
 
     std::string& out = output.buffer();
@@ -82,6 +85,18 @@ void write_obj(const rgb::Mesh& mesh, const SaveOptions& options, const std::str
         out += '\n';
         output.flush_if_full();
     }
+    rgb::MeshUvs uvs;
+    if (options.uvs) {
+        rgb::UvEvaluator evaluator(mesh.base(), *options.uvs);
+        uvs = rgb::mesh_uvs(mesh, evaluator, options.positions == SavedPositions::Limit);
+        for (const glm::dvec2& uv : uvs.values) {
+            out += "vt";
+            append_double(out, uv.x);
+            append_double(out, uv.y);
+            out += '\n';
+            output.flush_if_full();
+        }
+    }
     if (texcoords)
         for (const glm::dvec2& uv : attributes->texcoords) {
             out += "vt";
@@ -101,9 +116,12 @@ void write_obj(const rgb::Mesh& mesh, const SaveOptions& options, const std::str
     for (std::size_t i = 0; i < order.faces.size(); ++i) {
         if (block != order.blocks.end() && block->first == i) out += (block++)->lines;
         out += 'f';
+        const rgb::FaceId f = order.faces[i];
         for (int c = 0; c < 3; ++c) {
-            const std::string index = std::to_string(std::size_t(obj_index[mesh.face_vertices(order.faces[i])[c].idx]) + 1);
-            const std::uint32_t uv = texcoords ? base_corner_texcoord(mesh, *attributes, order.faces[i], c) : kNoIndex;
+            const std::string index = std::to_string(std::size_t(obj_index[mesh.face_vertices(f)[c].idx]) + 1);
+            std::uint32_t uv = kNoIndex;
+            if (options.uvs) uv = uvs.corners[f.idx][c] == rgb::MeshUvs::kNone ? kNoIndex : uvs.corners[f.idx][c];
+            else if (texcoords) uv = base_corner_texcoord(mesh, *attributes, f, c);
             out += ' ' + index;
             if (uv != kNoIndex) out += '/' + std::to_string(std::size_t(uv) + 1);
             if (options.normals) out += (uv != kNoIndex ? "/" : "//") + index;
@@ -114,7 +132,7 @@ void write_obj(const rgb::Mesh& mesh, const SaveOptions& options, const std::str
     append_tag_lines(mesh, obj_index, out);
     if (options.state)
         write_state(mesh, options.positions == SavedPositions::Limit, out, [&] { output.flush_if_full(); }, order.faces,
-                    attributes ? attributes->labels : BaseFaceLabels{});
+                    attributes ? attributes->labels : BaseFaceLabels{}, options.uvs ? &options.uvs->channel() : nullptr);
 }
 
 }  // namespace

@@ -1,8 +1,8 @@
 #pragma once
 // OBJ files <-> rgb::Mesh: the entry points for the editor and the CLI.
 //
-// A saved file is a standard OBJ of the current adaptive mesh (v, optional vn, f, and what rides on
-// the base mesh: base_attributes.h) followed by the
+// A saved file is a standard OBJ of the current adaptive mesh (v, optional vt and vn, f, and what rides
+// on the base mesh: base_attributes.h) followed by the
 // exact adaptive state in "#rgb" comment lines (state_format.h). Loading such a file restores the
 // adaptive mesh slot for slot; a plain OBJ loads as a base mesh (all green, level 0).
 #include <cstddef>
@@ -13,6 +13,7 @@
 #include "io/base_attributes.h"
 #include "io/loaded_mesh.h"
 #include "rgb/mesh.h"
+#include "rgb/uv_layout.h"
 
 namespace rgbio {
 
@@ -31,6 +32,10 @@ struct SaveOptions {
     SavedPositions positions = SavedPositions::Displayed;
     bool normals = false;      // vn: exact normals of the Loop limit surface (rgb/limit_normals.h)
     bool state = true;         // the #rgb lines that make the file resumable
+    // Texture coordinates (io/base_uvs.h): vt lines with every corner's exact UV (at its vertex's
+    // display level, or the limit beside limit positions) and f v/vt corners; the state keeps the
+    // base channel. Must have been built over the saved mesh's base mesh. Null: none.
+    std::shared_ptr<const rgb::UvLayout> uvs = nullptr;
     // What rides on the base mesh (labels, material libraries, texture coordinates, colours), written
     // with the mesh: faces grouped by label (labelled_faces.h), mtllib references that still lead to
     // the libraries, and texture coordinates and colours while the mesh is at level 0

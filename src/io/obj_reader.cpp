@@ -116,6 +116,7 @@ LoadedMesh read_records(const ObjRecords& records, const std::string& name, cons
             if (std::shared_ptr<rgb::Mesh> mesh = adaptive_mesh(*saved, records, reason)) {
                 LoadedMesh loaded = saved_mesh_content(records, std::move(saved->mesh.faces));
                 loaded.adaptive = std::move(mesh);
+                loaded.base_uvs = std::move(saved->uvs);
                 loaded.adaptive_labels = std::move(saved->labels);
                 return loaded;
             }

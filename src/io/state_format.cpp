@@ -1,6 +1,7 @@
 #include "io/state_format.h"
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <cstring>
@@ -111,10 +112,84 @@ std::vector<std::size_t> base_face_lines(const rgb::Mesh& mesh, std::span<const 
     return lines;
 }
 
+void append_uv_section(const rgb::UvChannel& uvs, std::string& out, const std::function<void()>& flush_if_full) {
+    out += "#rgb section base-uvs " + std::to_string(uvs.values.size()) + "\n";
+    out += std::string("#rgb uv-interpolation ") + rgb::uv_interpolation_name(uvs.interpolation) + "\n";
+    for (std::size_t i = 0; i < uvs.values.size(); i += kPerLine) {
+        out += "#rgb uv";
+        for (std::size_t k = i; k < std::min(uvs.values.size(), i + kPerLine); ++k) {
+            append_double(out, uvs.values[k].x);
+            append_double(out, uvs.values[k].y);
+        }
+        out += '\n';
+        flush_if_full();
+    }
+    for (std::size_t i = 0; i < uvs.faces_without_uvs.size(); i += 3 * kPerLine) {
+        out += "#rgb uv-untextured";
+        for (std::size_t k = i; k < std::min(uvs.faces_without_uvs.size(), i + 3 * kPerLine); ++k) append_number(out, uvs.faces_without_uvs[k]);
+        out += '\n';
+        flush_if_full();
+    }
+    for (std::size_t i = 0; i < uvs.corners.size(); i += kPerLine) {
+        out += "#rgb uv-faces";
+        for (std::size_t k = i; k < std::min(uvs.corners.size(), i + kPerLine); ++k)
+            for (std::uint32_t x : uvs.corners[k]) append_number(out, x);
+        out += '\n';
+        flush_if_full();
+    }
+}
+
+// The base-uvs section's records, checked against its count and the base faces.
+rgb::UvChannel parse_uv_section(std::span<const ObjStateLine> records, std::size_t values, std::size_t base_faces,
+                                const ObjStateLine& section_line, const std::string& file) {
+    rgb::UvChannel uvs;
+    bool option_seen = false;
+    for (const ObjStateLine& line : records) {
+        StateLineReader r(line, file);
+        const std::string_view kind = r.word();
+        if (kind == "uv-interpolation") {
+            const auto option = rgb::parse_uv_interpolation(r.word());
+            if (!option) r.fail("uv-interpolation must be 'none', 'corners', 'boundaries' or 'all'");
+            uvs.interpolation = *option;
+            option_seen = true;
+            r.expect_end();
+        } else if (kind == "uv") {
+            while (!r.at_end()) {
+                const double u = r.number<double>();
+                uvs.values.push_back({u, r.number<double>()});
+            }
+            if (uvs.values.size() > values) r.fail("more UVs than the section announces");
+        } else if (kind == "uv-untextured") {
+            while (!r.at_end()) {
+                const auto f = r.number<std::uint32_t>();
+                if (f >= base_faces) r.fail("untextured face " + std::to_string(f) + " of " + std::to_string(base_faces));
+                if (!uvs.faces_without_uvs.empty() && f <= uvs.faces_without_uvs.back()) r.fail("untextured faces out of order");
+                uvs.faces_without_uvs.push_back(f);
+            }
+        } else {
+            while (!r.at_end()) {
+                std::array<std::uint32_t, 3> t;
+                for (std::uint32_t& x : t)
+                    if ((x = r.number<std::uint32_t>()) >= values) r.fail("UV index " + std::to_string(x) + " of " + std::to_string(values) + " UVs");
+                uvs.corners.push_back(t);
+            }
+            if (uvs.corners.size() > base_faces) r.fail("more faces of UV indices than base faces");
+        }
+    }
+    StateLineReader r(section_line, file);
+    if (!option_seen) r.fail("section 'base-uvs' has no uv-interpolation record");
+    if (uvs.values.size() != values)
+        r.fail("section 'base-uvs' announces " + std::to_string(values) + " UVs but holds " + std::to_string(uvs.values.size()));
+    if (uvs.corners.size() != base_faces)
+        r.fail("section 'base-uvs' gives UV indices for " + std::to_string(uvs.corners.size()) + " faces of " +
+               std::to_string(base_faces));
+    return uvs;
+}
+
 }  // namespace
 
 void write_state(const rgb::Mesh& mesh, bool limit_positions, std::string& out, const std::function<void()>& flush_if_full,
-                 std::span<const rgb::FaceId> face_lines, const BaseFaceLabels& labels) {
+                 std::span<const rgb::FaceId> face_lines, const BaseFaceLabels& labels, const rgb::UvChannel* uvs) {
     const rgb::BaseMesh& base = mesh.base();
     const std::size_t n0 = base.num_vertices();
     out += "# rgbsub adaptive state: the #rgb lines restore the exact RGB mesh; other readers ignore them\n";
@@ -188,6 +263,7 @@ void write_state(const rgb::Mesh& mesh, bool limit_positions, std::string& out, 
         }
     }
     if (on_line > 0) out += '\n';
+    if (uvs) append_uv_section(*uvs, out, flush_if_full);
     out += tag_records;
     append_face_label_section(labels, triangles.size(), out);
     out += "#rgb end\n";
@@ -207,9 +283,11 @@ std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const
 
     SavedState saved;
     rgb::MeshState& state = saved.mesh;
-    enum class Section { None, BaseVertices, BaseFaces, Addresses } section = Section::None;
-    std::size_t expected[4] = {0, 0, 0, 0};
-    bool seen[4] = {false, false, false, false};
+    enum class Section { None, BaseVertices, BaseFaces, Addresses, BaseUvs } section = Section::None;
+    std::size_t expected[5] = {0, 0, 0, 0, 0};
+    bool seen[5] = {false, false, false, false, false};
+    std::vector<ObjStateLine> uv_records;
+    const ObjStateLine* uv_section_line = nullptr;
     std::vector<rgb::SurfacePoint> addresses;
     std::vector<ObjStateLine> tag_records;  // version 4
     FaceLabelSectionReader face_labels(file);
@@ -229,10 +307,12 @@ std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const
             if (name == "base-vertices") section = Section::BaseVertices;
             else if (name == "base-faces") section = Section::BaseFaces;
             else if (name == "addresses") section = Section::Addresses;
+            else if (name == "base-uvs") section = Section::BaseUvs;
             else r.fail("unknown section '" + std::string(name.substr(0, 40)) + "' (written by a newer rgbsub?)");
             const auto s = static_cast<int>(section);
             if (seen[s]) r.fail("section '" + std::string(name) + "' appears twice");
             seen[s] = true;
+            if (section == Section::BaseUvs) uv_section_line = &line;
             // Counts are bounded by what the lines can hold, so a forged count cannot exhaust memory.
             expected[s] = r.number<std::size_t>(kPerLine * lines.size() + std::max(body_vertices, body_faces));
             r.expect_end();
@@ -277,6 +357,9 @@ std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const
                 p.a[0] = static_cast<std::uint32_t>(total - p.a[1] - p.a[2]);
                 addresses.push_back(p);
             }
+        } else if (kind == "uv-interpolation" || kind == "uv" || kind == "uv-faces" || kind == "uv-untextured") {
+            if (section != Section::BaseUvs) r.fail("texture coordinates outside their section");
+            uv_records.push_back(line);
         } else if (version == kTaggedStateFormatVersion && is_state_tag_record(kind)) {
             tag_records.push_back(line);
         } else if (kind == "end") {
@@ -302,6 +385,9 @@ std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const
     state.vertices.assign(state.base_positions.size(), rgb::SurfacePoint{});
     state.vertices.insert(state.vertices.end(), addresses.begin(), addresses.end());
     state.sharp_features = parse_state_tag_records(tag_records, file);
+    if (uv_section_line)
+        saved.uvs = parse_uv_section(uv_records, expected[static_cast<int>(Section::BaseUvs)], state.base_triangles.size(),
+                                     *uv_section_line, file);
     saved.labels = face_labels.finish(state.base_triangles.size(), lines.back());
     return saved;
 }

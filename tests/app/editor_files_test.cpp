@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "app/editor.h"
+#include "io/base_uvs.h"
 #include "editor_fixture.h"
 #include "io/mesh_file.h"
 #include "support/same_mesh.h"
@@ -72,6 +73,34 @@ TEST(EditorFiles, ABackgroundSaveWritesTheMeshAsItWasAndEditingGoesOn) {
     editor.finish_work();
     EXPECT_FALSE(editor.document().dirty());
     EXPECT_TRUE(rgbtest::same_mesh(rgbio::load_mesh(file.string()), editor.document().mesh()));
+}
+
+// The file's texture coordinates and the chosen face-varying option reach the saved file.
+TEST(EditorFiles, TextureCoordinatesAreSavedWithTheChosenInterpolation) {
+    const std::filesystem::path folder = fresh_folder("textured_save");
+    std::ofstream(folder / "textured.obj") << "v 1 0 0\nv -1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nv 0 0 -1\n"
+                                              "vt 0.1 0.2\nvt 0.3 0.2\nvt 0.2 0.1\nvt 0.2 0.3\nvt 0.2 0.2\n"
+                                              "vt 0.7 0.2\nvt 0.9 0.2\nvt 0.8 0.1\nvt 0.8 0.3\nvt 0.8 0.2\n"
+                                              "f 1/1 3/3 5/5\nf 3/3 2/2 5/5\nf 2/2 4/4 5/5\nf 4/4 1/1 5/5\n"
+                                              "f 3/8 1/6 6/10\nf 2/7 3/8 6/10\nf 4/9 2/7 6/10\nf 1/6 4/9 6/10\n";
+    Editor editor(kViewport);
+    ASSERT_TRUE(editor.open((folder / "textured.obj").string()));
+    ASSERT_EQ(editor.document().uv_interpolation(), rgb::UvInterpolation::Corners);
+    std::vector<std::string> warnings;
+    const rgb::UvChannel original = *rgbio::load_mesh_with_uvs((folder / "textured.obj").string(), warnings).uvs;
+    paint(editor, 0.5f);
+    editor.document().set_uv_interpolation(rgb::UvInterpolation::Boundaries);
+    EXPECT_TRUE(editor.document().dirty());
+    const std::filesystem::path file = folder / "saved.obj";
+    editor.request_save_as(file.string());
+    editor.finish_work();
+    EXPECT_FALSE(editor.message_is_error()) << editor.message();
+    const rgbio::MeshWithUvs saved = rgbio::load_mesh_with_uvs(file.string(), warnings);
+    ASSERT_TRUE(saved.uvs);
+    EXPECT_EQ(saved.uvs->interpolation, rgb::UvInterpolation::Boundaries);
+    EXPECT_EQ(saved.uvs->values, original.values);
+    EXPECT_EQ(saved.uvs->corners, original.corners);
+    EXPECT_TRUE(rgbtest::same_mesh(saved.mesh, editor.document().mesh()));
 }
 
 // The stroke belongs to the mesh on screen: the file read meanwhile waits for it, then asks.

@@ -1,7 +1,9 @@
 // The info/refine/apply subcommands through the dispatcher: exit codes 0/1/2/3 and apply's scripts
 // (refine itself: tests/cli/refine_command_test.cpp).
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <map>
 #include <set>
 #include <tuple>
 
@@ -101,6 +103,57 @@ TEST_F(CliCommands, PlainOutputHasNoStateLines) {
         EXPECT_EQ(plain.triangles.size(), 8u * 16u) << name;
         EXPECT_EQ(triangles_by_position(plain), triangles_by_position(read_obj_file(path("full.obj")))) << name;
     }
+}
+
+using PositionTriangle = std::array<std::array<double, 3>, 3>;
+
+// Each triangle's corner UVs keyed by its corners' positions (rotated to start at the smallest).
+std::map<PositionTriangle, std::array<glm::dvec2, 3>> uvs_by_position(const LoadedMesh& mesh) {
+    std::map<PositionTriangle, std::array<glm::dvec2, 3>> uvs;
+    for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+        PositionTriangle p;
+        std::array<glm::dvec2, 3> uv;
+        for (std::size_t i = 0; i < 3; ++i) {
+            const glm::dvec3& q = mesh.positions[mesh.triangles[f][i]];
+            p[i] = {q.x, q.y, q.z};
+            uv[i] = mesh.texcoords[mesh.triangle_texcoords[f][i]];
+        }
+        const auto first = std::min_element(p.begin(), p.end()) - p.begin();
+        std::rotate(p.begin(), p.begin() + first, p.end());
+        std::rotate(uv.begin(), uv.begin() + first, uv.end());
+        uvs.emplace(p, uv);
+    }
+    return uvs;
+}
+
+TEST_F(CliCommands, RefineWritesExactUvsAndLevelZeroGivesBackTheInputUvs) {
+    // The octahedron's upper and lower halves as two UV islands (a seam along the equator).
+    write("textured.obj", "v 1 0 0\nv -1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nv 0 0 -1\n"
+                          "vt 0.1 0.2\nvt 0.3 0.2\nvt 0.2 0.1\nvt 0.2 0.3\nvt 0.2 0.2\n"
+                          "vt 0.7 0.2\nvt 0.9 0.2\nvt 0.8 0.1\nvt 0.8 0.3\nvt 0.8 0.2\n"
+                          "f 1/1 3/3 5/5\nf 3/3 2/2 5/5\nf 2/2 4/4 5/5\nf 4/4 1/1 5/5\n"
+                          "f 3/8 1/6 6/10\nf 2/7 3/8 6/10\nf 4/9 2/7 6/10\nf 1/6 4/9 6/10\n");
+    ASSERT_EQ(run({"refine", path("textured.obj"), "-o", path("fine.obj"), "--level", "3", "--sphere", "1,0,0,0.8",
+                   "--uv-interpolation", "boundaries"}),
+              0);
+    const std::string text = read_text_file(path("fine.obj"));
+    EXPECT_NE(text.find("\n#rgb uv-interpolation boundaries\n"), std::string::npos);
+    const LoadedMesh fine = read_obj_file(path("fine.obj"));
+    ASSERT_TRUE(fine.adaptive);
+    ASSERT_EQ(fine.triangle_texcoords.size(), fine.triangles.size());
+    // With `boundaries` the seam's UVs stay on the base UV segments: the midpoint of the equator edge
+    // from (1,0,0) to (0,1,0) on the upper island is halfway between vt 1 and vt 3.
+    const glm::dvec2 midpoint = 0.5 * (glm::dvec2(0.1, 0.2) + glm::dvec2(0.2, 0.1));
+    bool found = false;
+    for (std::size_t f = 0; f < fine.triangles.size(); ++f)
+        for (std::size_t i = 0; i < 3; ++i)
+            if (std::abs(fine.positions[fine.triangles[f][i]].z) < 1e-12 && fine.texcoords[fine.triangle_texcoords[f][i]] == midpoint)
+                found = true;
+    EXPECT_TRUE(found);
+    EXPECT_EQ(run({"refine", path("textured.obj"), "-o", path("bad.obj"), "--level", "1", "--uv-interpolation", "smooth"}), 1);
+
+    ASSERT_EQ(run({"refine", path("fine.obj"), "-o", path("base.obj"), "--level", "0"}), 0);
+    EXPECT_EQ(uvs_by_position(read_obj_file(path("base.obj"))), uvs_by_position(read_obj_file(path("textured.obj"))));
 }
 
 // Base-space positions of a saved adaptive mesh's vertices (where each sits under midpoint

@@ -102,6 +102,12 @@ std::vector<UvCase> uv_cases() {
     half_row.input.creases = {{5, 6, 2.0}, {6, 7, 2.0}};  // (0, 1) - (1, 1) - (2, 1)
     cases.push_back(half_row);
 
+    // A semi-sharp corner tag on the seam, at (2, 1): both of its values stay put for two levels, then
+    // move along the seam.
+    UvCase semi_corner = grid_case("seam_through_semi_sharp_corner", halves);
+    semi_corner.input.corners = {{7, 2.0}};
+    cases.push_back(semi_corner);
+
     // A closed bipyramid cut along its equator into two UV caps; then the same with the equator sharp.
     FarInput caps = far_input(rgbtest::bipyramid(6));
     caps.uv = islands(caps, [&](int t) {

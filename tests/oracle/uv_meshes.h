@@ -2,7 +2,8 @@
 // Meshes with a UV channel for the face-varying tests (issue 12's list): seams across a grid and
 // ending inside it (a UV dart), three and four seams meeting, a one-triangle UV island, a closed mesh
 // cut along its equator with and without a geometric crease there, seams crossing infinitely sharp
-// and semi-sharp edges, and both boundary options. The UV interpolation option is left to the test.
+// and semi-sharp edges, a semi-sharp corner on a seam, and both boundary options. The UV
+// interpolation option is left to the test.
 #include <ostream>
 #include <string>
 #include <vector>
