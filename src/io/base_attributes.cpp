@@ -112,10 +112,9 @@ std::vector<std::string> library_references(const BaseAttributes& attributes, co
 std::vector<std::string> dropped_attributes(const rgb::Mesh& mesh, const BaseAttributes* attributes, bool exact_uvs) {
     std::vector<std::string> dropped;
     if (!attributes || is_base_mesh(mesh)) return dropped;
-    const char* why = " are not written: the mesh is refined, and rgbsub cannot subdivide them yet (they need Loop rules "
-                      "of their own); saving at level 0 keeps them";
-    if (!exact_uvs && !attributes->triangle_texcoords.empty()) dropped.push_back(std::string("the texture coordinates (vt)") + why);
-    if (!attributes->colours.empty()) dropped.push_back(std::string("the vertex colours") + why);
+    if (!exact_uvs && !attributes->triangle_texcoords.empty())
+        dropped.push_back("the texture coordinates (vt) are not written: the mesh is refined, and this writer has only "
+                          "their level-0 values (an OBJ save with the file's UV layout writes them all)");
     return dropped;
 }
 

@@ -16,6 +16,7 @@
 #include "rgb/loop_geometry.h"
 #include "rgb/mesh_uvs.h"
 #include "rgb/uv_evaluator.h"
+#include "rgb/vertex_channel.h"
 
 namespace rgbio {
 
@@ -59,9 +60,15 @@ void append_vector(std::string& out, const char* keyword, const glm::dvec3& x) {
 template <class Output>
 void write_obj(const rgb::Mesh& mesh, const SaveOptions& options, const std::string& output_folder, Output& output) {
     const BaseAttributes* attributes = options.attributes.get();
-    // Texture coordinates and colours are the base mesh's: written only while the mesh is that.
+    // Level-0 texture coordinates are the base mesh's: written only while the mesh is that.
     const bool base_data = attributes && is_base_mesh(mesh);
-    const bool colours = base_data && !attributes->colours.empty();
+    // Vertex colours follow the position rules (rgb/vertex_channel.h): written at every level, at the
+    // same level as the positions beside them.
+    const std::vector<glm::dvec3> colours =
+        attributes && !attributes->colours.empty()
+            ? rgb::vertex_channel_values(mesh, attributes->colours,
+                                         options.positions == SavedPositions::Limit ? rgb::ChannelLevel::Limit : rgb::ChannelLevel::Displayed)
+            : std::vector<glm::dvec3>();
     // The exact UV channel, when there is one, says every corner's UV at every level.
     const bool texcoords = !options.uvs && base_data && !attributes->triangle_texcoords.empty();
     const LabelledFaceOrder order = labelled_face_order(mesh, attributes ? attributes->labels : BaseFaceLabels{});
@@ -76,12 +83,10 @@ void write_obj(const rgb::Mesh& mesh, const SaveOptions& options, const std::str
     std::vector<std::uint32_t> obj_index(mesh.vertex_capacity(), UINT32_MAX);
     std::uint32_t written = 0;
     for (rgb::VertexId v : mesh.vertices()) {
-        // At level 0 the live vertices are the base vertices, in base order.
-        const std::uint32_t i = written++;
-        obj_index[v.idx] = i;
+        obj_index[v.idx] = written++;
         append_vector(out, "v", written_position(mesh, v, options.positions));
-        if (colours)
-            for (int c = 0; c < 3; ++c) append_double(out, attributes->colours[i][c]);
+        if (!colours.empty())
+            for (int c = 0; c < 3; ++c) append_double(out, colours[v.idx][c]);
         out += '\n';
         output.flush_if_full();
     }

@@ -1,6 +1,7 @@
-// Texture coordinates and vertex colours, which the core cannot subdivide yet: a save at level 0
-// writes them back exactly (read with tinyobjloader, an independent reader) and a saved level-0 file
-// resumes with them; a refined save leaves them out and says so.
+// Texture coordinates and vertex colours through saves: a save at level 0 writes them back exactly
+// (read with tinyobjloader, an independent reader) and a saved level-0 file resumes with them; a
+// refined save writes colours by the position rules, and leaves level-0 UVs out (saying so) when it
+// has no UV layout.
 #include <algorithm>
 #include <map>
 #include <set>
@@ -69,22 +70,48 @@ TEST_F(TexturedMesh, ALevelZeroSaveKeepsTextureCoordinatesAndColours) {
     EXPECT_EQ(resumed.attributes->colours[3], glm::dvec3(0.5, 0.25, 0.125));
 }
 
-TEST_F(TexturedMesh, ARefinedSaveLeavesThemOutAndSaysWhy) {
+TEST_F(TexturedMesh, ARefinedSaveWithoutTheUvLayoutLeavesTheUvsOutAndSaysWhy) {
     write("in.obj", kTextured);
     LoadedAsset asset = load_asset(path("in.obj"));
     rgb::set_level(asset.mesh, 1);
     const std::vector<std::string> dropped = dropped_attributes(asset.mesh, asset.attributes.get());
-    ASSERT_EQ(dropped.size(), 2u);
+    ASSERT_EQ(dropped.size(), 1u);
     EXPECT_TRUE(test::has_warning(dropped, "the texture coordinates (vt) are not written: the mesh is refined"));
-    EXPECT_TRUE(test::has_warning(dropped, "the vertex colours are not written"));
+    EXPECT_TRUE(dropped_attributes(asset.mesh, asset.attributes.get(), true).empty()) << "with the exact UV channel";
     SaveOptions options;
     options.attributes = asset.attributes;
     const std::string text = format_obj(asset.mesh, options);
     EXPECT_EQ(text.find("\nvt "), std::string::npos);
-    std::istringstream lines(text);
-    for (std::string line; std::getline(lines, line);) {
-        const bool vertex = line.rfind("v ", 0) == 0;
-        EXPECT_TRUE(!vertex || std::count(line.begin(), line.end(), ' ') == 3) << line;  // no colours
+}
+
+// Vertex colours follow the position rules, so a mesh whose colours are its positions is saved, at
+// every level and for both kinds of positions, with each v line's colour equal to its position.
+TEST_F(TexturedMesh, ARefinedSaveWritesEachVertexsColourByThePositionRules) {
+    write("in.obj", "v 0 0 0 0 0 0\nv 1 0 0 1 0 0\nv 1 1 0.5 1 1 0.5\nv 0 1 0.25 0 1 0.25\nv 0.5 0.5 1 0.5 0.5 1\n"
+                    "f 1 2 5\nf 2 3 5\nf 3 4 5\nf 4 1 5\n");
+    LoadedAsset asset = load_asset(path("in.obj"));
+    rgb::LevelRequest request;
+    request.level = 3;
+    request.sphere = rgb::Sphere{{1.0, 1.0, 0.5}, 0.6};
+    rgb::apply_request(asset.mesh, request);
+    EXPECT_TRUE(dropped_attributes(asset.mesh, asset.attributes.get()).empty());
+    for (const SavedPositions positions : {SavedPositions::Displayed, SavedPositions::Limit}) {
+        SaveOptions options;
+        options.attributes = asset.attributes;
+        options.positions = positions;
+        std::istringstream lines(format_obj(asset.mesh, options));
+        std::size_t coloured = 0;
+        for (std::string line; std::getline(lines, line);) {
+            if (line.rfind("v ", 0) != 0) continue;
+            std::istringstream words(line.substr(2));
+            std::vector<std::string> numbers;
+            for (std::string w; words >> w;) numbers.push_back(w);
+            ASSERT_EQ(numbers.size(), 6u) << line;
+            EXPECT_EQ(std::vector<std::string>(numbers.begin(), numbers.begin() + 3), std::vector<std::string>(numbers.begin() + 3, numbers.end()))
+                << line;
+            ++coloured;
+        }
+        EXPECT_EQ(coloured, asset.mesh.num_vertices());
     }
 }
 
