@@ -100,6 +100,25 @@ TEST_F(EditorScript, ShiftInvertsRefineIntoCoarsen) {
     EXPECT_LT(editor.document().mesh().num_faces(), refined_faces);
     EXPECT_TRUE(rgb::check_invariants(editor.document().mesh()).ok());
     EXPECT_EQ(editor.document().history().undo_steps(), 2u);
+
+    // What Shift means (README): the refine brush becomes the coarsen brush to level 0. The same two
+    // strokes in a second editor, the second with that brush and no Shift, give the identical mesh.
+    Editor other{kViewport};
+    ASSERT_TRUE(other.open(bunny_path())) << other.message();
+    other.brush() = editor.brush();
+    auto drag = [&](Modifiers mods) {
+        other.mouse_moved(from);
+        other.mouse_pressed(MouseButton::Left, mods);
+        for (int i = 1; i <= 3; ++i) other.mouse_moved(from + (to - from) * (float(i) / 3.0f));
+        other.mouse_released(MouseButton::Left);
+        other.finish_work();
+    };
+    drag({});
+    ASSERT_EQ(other.document().mesh().num_faces(), refined_faces);
+    other.brush().mode = BrushMode::Coarsen;
+    other.brush().target_level = 0;
+    drag({});
+    EXPECT_TRUE(rgbtest::same_mesh(other.document().mesh(), editor.document().mesh()));
 }
 
 TEST_F(EditorScript, NavigationDragsDoNotPaint) {
