@@ -18,6 +18,10 @@
 #include "rgb/mesh.h"
 
 namespace app {
+
+namespace {
+constexpr std::size_t kRollbackReserve = std::size_t{32} << 20;
+}  // namespace
 namespace {
 
 constexpr float kDabSpacing = 0.25f;  // of the brush radius: dabs overlap enough to leave no gaps
@@ -32,7 +36,8 @@ double milliseconds_since(std::chrono::steady_clock::time_point start) {
 Editor::Editor(glm::ivec2 viewport) : Editor(EditorOptions{viewport, std::nullopt, 0, 0.0f, std::chrono::seconds(120)}) {}
 
 Editor::Editor(const EditorOptions& options)
-    : viewport_(options.viewport), recovery_interval_(options.recovery_interval), covered_right_(options.covered_right) {
+    : viewport_(options.viewport), recovery_interval_(options.recovery_interval), covered_right_(options.covered_right),
+      rollback_reserve_(new char[kRollbackReserve]) {
     frame_mesh();
     recovery_due_ = std::chrono::steady_clock::now() + recovery_interval_;
     if (!options.recovery_folder) return;
@@ -369,11 +374,13 @@ void Editor::recover_from(const std::exception& failure) {
     jobs_.clear();
     front_begun_ = false;
     std::string outcome;
+    rollback_reserve_.reset();
     try {
         if (document_.abandon_edit()) outcome = "; " + action + " was rolled back, the mesh is as before it";
     } catch (const std::exception&) {
         outcome = "; " + action + " could not be rolled back either: save under a new name and check the file";
     }
+    rollback_reserve_.reset(new (std::nothrow) char[kRollbackReserve]);
     report((action.empty() ? cause : cause + " during " + action) + outcome, true);
 }
 

@@ -277,6 +277,9 @@ private:
     bool recovering_ = false;                          // file_task_ reads offered_
 
     float covered_right_ = 0.0f;
+    // Memory held back for rolling an edit back after the edit ran out of memory (the rollback needs
+    // a little itself): released before the rollback, taken again after it.
+    std::unique_ptr<char[]> rollback_reserve_;
     Browse browse_request_ = Browse::None;
     std::uint64_t open_failures_ = 0;
 
