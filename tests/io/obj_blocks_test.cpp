@@ -5,6 +5,7 @@
 // all three kinds, skipped statements.
 #include <random>
 #include <string>
+#include <tuple>
 
 #include <gtest/gtest.h>
 
@@ -65,11 +66,8 @@ void expect_same_skipped(const SkippedLines& a, const SkippedLines& b, const cha
 }
 
 void expect_same_records(const ObjRecords& a, const ObjRecords& b) {
-    EXPECT_EQ(a.positions, b.positions);
-    EXPECT_EQ(a.position_lines, b.position_lines);
-    EXPECT_EQ(a.colours, b.colours);
-    EXPECT_EQ(a.has_colour, b.has_colour);
-    EXPECT_EQ(a.texcoords, b.texcoords);
+    EXPECT_EQ(std::tie(a.positions, a.position_lines, a.colours, a.has_colour, a.texcoords),
+              std::tie(b.positions, b.position_lines, b.colours, b.has_colour, b.texcoords));
     expect_same_skipped(a.texcoord_w, b.texcoord_w, "vt w");
     ASSERT_EQ(a.polygons.size(), b.polygons.size());
     for (std::size_t i = 0; i < a.polygons.size(); ++i) {
@@ -82,12 +80,8 @@ void expect_same_records(const ObjRecords& a, const ObjRecords& b) {
         EXPECT_EQ(p.object, q.object) << "face " << i;
         EXPECT_EQ(p.smoothing_group, q.smoothing_group) << "face " << i;
     }
-    EXPECT_EQ(a.material_names, b.material_names);
-    EXPECT_EQ(a.group_names, b.group_names);
-    EXPECT_EQ(a.object_names, b.object_names);
-    EXPECT_EQ(a.material_libraries, b.material_libraries);
-    EXPECT_EQ(a.line_elements, b.line_elements);
-    EXPECT_EQ(a.point_elements, b.point_elements);
+    EXPECT_EQ(std::tie(a.material_names, a.group_names, a.object_names, a.material_libraries, a.line_elements, a.point_elements),
+              std::tie(b.material_names, b.group_names, b.object_names, b.material_libraries, b.line_elements, b.point_elements));
     expect_same_skipped(a.normals, b.normals, "vn");
     expect_same_skipped(a.unsupported, b.unsupported, "unsupported");
     expect_same_skipped(a.unknown, b.unknown, "unknown");
