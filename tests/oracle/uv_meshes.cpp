@@ -1,7 +1,9 @@
 #include "uv_meshes.h"
 
+#include <cmath>
 #include <functional>
 #include <map>
+#include <numbers>
 #include <random>
 
 #include "support/test_meshes.h"
@@ -147,6 +149,18 @@ std::vector<UvCase> uv_bow_tie_cases() {
     cases.push_back(grid_case("bow_tie_on_boundary", [](const std::array<int, 3>& t) {
         return centroid_x3(t) == 7 && centroid_y3(t) == 2 ? 1 : 0;
     }));
+    // A half disc of four triangles around a boundary vertex with alternating values A B A B: Far
+    // walks from one end of the boundary, so which value is split tells whether the walk starts at
+    // the same end as the core's.
+    FarInput fan;
+    fan.positions.push_back({0.0, 0.0, 0.1});
+    for (int k = 0; k <= 4; ++k) {
+        const double angle = 0.25 * std::numbers::pi * k;
+        fan.positions.push_back({std::cos(angle), std::sin(angle) * (1.0 + 0.1 * k), 0.05 * k});
+    }
+    for (int k = 0; k < 4; ++k) fan.triangles.push_back({0, k + 1, k + 2});
+    fan.uv = islands(fan, [](int t) { return t % 2; }, never);
+    cases.push_back({"bow_ties_alternating_on_boundary", fan});
     return cases;
 }
 
