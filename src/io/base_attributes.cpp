@@ -116,8 +116,8 @@ std::vector<std::string> dropped_attributes(const rgb::Mesh& mesh, const BaseAtt
     std::vector<std::string> dropped;
     if (!attributes || is_base_mesh(mesh)) return dropped;
     if (!exact_uvs && !attributes->triangle_texcoords.empty())
-        dropped.push_back("the texture coordinates (vt) are not written: the mesh is refined, and this writer has only "
-                          "their level-0 values (an OBJ save with the file's UV layout writes them all)");
+        dropped.push_back("the texture coordinates (vt) are not written: the mesh is refined, and without the file's UV "
+                          "layout only their level-0 values are known");
     return dropped;
 }
 
