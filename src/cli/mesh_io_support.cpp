@@ -23,8 +23,8 @@ rgbio::LoadedAsset load_input(const char* command, const std::string& file, cons
 }
 
 void save_output(const char* command, const rgb::Mesh& mesh, const std::string& file, const rgbio::SaveOptions& save) {
-    // The OBJ writer has the exact texture coordinates of every level; the glTF writer only those of level 0.
-    std::vector<std::string> warnings = rgbio::dropped_attributes(mesh, save.attributes.get(), save.uvs && !rgbio::is_gltf_path(file));
+    // Both writers have the exact texture coordinates of every level from the UV layout.
+    std::vector<std::string> warnings = rgbio::dropped_attributes(mesh, save.attributes.get(), save.uvs != nullptr);
     if (mesh.base().has_sharp_features() && (save.normals || rgbio::is_gltf_path(file)))
         warnings.push_back("the normals follow the smooth Loop rules (rgb/limit_normals.h): at vertices on tagged creases and "
                            "corners, whose tangent masks are not implemented yet, they are approximate");

@@ -58,13 +58,16 @@ BaseAttributes base_attributes(const LoadedMesh& loaded, const rgb::Mesh& mesh, 
         return attributes;
     }
     attributes.labels = loaded.adaptive_labels;
-    if (is_base_mesh(mesh)) {
+    if (is_base_mesh(mesh) && !loaded.triangle_texcoords.empty()) base_texcoords_of_faces(loaded, mesh, attributes);
+    // A refined mesh's UVs go through its base-uvs section (base_uvs.h), which warns without one.
+    if (!loaded.base_colours.empty()) {
+        attributes.colours = loaded.base_colours;
+    } else if (is_base_mesh(mesh)) {
         // The base vertices are the first v lines, in base order.
         attributes.colours = loaded.colours;
-        if (!loaded.triangle_texcoords.empty()) base_texcoords_of_faces(loaded, mesh, attributes);
-    } else if (!loaded.triangle_texcoords.empty() || !loaded.colours.empty()) {
-        warnings.push_back("ignored the file's texture coordinates and vertex colours: they belong to a refined mesh, and rgbsub "
-                           "keeps those of the base mesh only (it cannot subdivide them yet)");
+    } else if (!loaded.colours.empty()) {
+        warnings.push_back("ignored the file's vertex colours: the file is a refined mesh whose rgbsub state has no base-colours "
+                           "section (written by another program or an older rgbsub), so they cannot be put back on its base mesh");
     }
     return attributes;
 }
@@ -113,8 +116,8 @@ std::vector<std::string> dropped_attributes(const rgb::Mesh& mesh, const BaseAtt
     std::vector<std::string> dropped;
     if (!attributes || is_base_mesh(mesh)) return dropped;
     if (!exact_uvs && !attributes->triangle_texcoords.empty())
-        dropped.push_back("the texture coordinates (vt) are not written: the mesh is refined, and this writer has only "
-                          "their level-0 values (an OBJ save with the file's UV layout writes them all)");
+        dropped.push_back("the texture coordinates (vt) are not written: the mesh is refined, and without the file's UV "
+                          "layout only their level-0 values are known");
     return dropped;
 }
 

@@ -5,9 +5,10 @@
 // mesh lies in one base face (rgb::base_face_of) and takes its labels. rgb::Mesh holds geometry only;
 // the CLI and the editor keep this beside it (shared, immutable) and hand it to the savers.
 //
-// Texture coordinates and colours of a refined mesh need their own Loop rules (face-varying and
-// vertex data), which the core does not have yet: they are written only for a mesh at level 0, and
-// saving a refined one says that it leaves them out (dropped_attributes).
+// Colours are vertex data (rgb/vertex_channel.h): written at every level, and kept in the state's
+// base-colours section (base_colour_state.h). Texture coordinates here are the level-0 ones; a
+// refined mesh's come from its exact UV channel (base_uvs.h), and a save without one says that it
+// leaves them out (dropped_attributes).
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -37,10 +38,10 @@ struct BaseAttributes {
 
 // The attributes of the base mesh of a loaded file, whose mesh is `mesh` (build_mesh(loaded)). A
 // plain file's base faces are its triangles in order, so its own data is the base's. A file with an
-// adaptive state gives its base faces' labels from the state, and its texture coordinates and
-// colours when the saved mesh is the base mesh itself (level 0): they are on base faces then.
-// `folder`: the file's folder (material libraries are relative to it). Appends a warning for a
-// refined file that carries texture coordinates or colours, which cannot be put back on its base.
+// adaptive state gives its base faces' labels from the state, its colours from the state's
+// base-colours section, and its texture coordinates and colours when the saved mesh is the base mesh
+// itself (level 0): they are on base faces then. `folder`: the file's folder (material libraries are
+// relative to it). Appends a warning for a refined file with colours but no base-colours section.
 BaseAttributes base_attributes(const LoadedMesh& loaded, const rgb::Mesh& mesh, const std::string& folder,
                                std::vector<std::string>& warnings);
 

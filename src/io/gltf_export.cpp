@@ -7,6 +7,9 @@
 #include "rgb/face_location.h"
 #include "rgb/limit_normals.h"
 #include "rgb/loop_geometry.h"
+#include "rgb/mesh_uvs.h"
+#include "rgb/uv_evaluator.h"
+#include "rgb/vertex_channel.h"
 
 namespace rgbio {
 
@@ -18,21 +21,37 @@ bool is_gltf_path(const std::string& path) {
 
 GltfMesh gltf_mesh(const rgb::Mesh& mesh, const SaveOptions& options) {
     GltfMesh out;
+    const bool limit = options.positions == SavedPositions::Limit;
+    const BaseAttributes* attributes = options.attributes.get();
+    // Colours by the position rules, at the positions' level, as the OBJ writer writes them.
+    const std::vector<glm::dvec3> colours =
+        attributes && !attributes->colours.empty()
+            ? rgb::vertex_channel_values(mesh, attributes->colours, limit ? rgb::ChannelLevel::Limit : rgb::ChannelLevel::Displayed)
+            : std::vector<glm::dvec3>();
     std::vector<std::uint32_t> index(mesh.vertex_capacity(), kNoIndex);
     const std::vector<glm::dvec3> normals = rgb::limit_normals(mesh);
     for (rgb::VertexId v : mesh.vertices()) {
         index[v.idx] = static_cast<std::uint32_t>(out.positions.size());
-        out.positions.push_back(options.positions == SavedPositions::Limit ? rgb::limit_position_uncached(mesh, v)
-                                                                           : rgb::displayed_position(mesh, v));
+        out.positions.push_back(limit ? rgb::limit_position_uncached(mesh, v) : rgb::displayed_position(mesh, v));
         out.normals.push_back(normals[v.idx]);
+        if (!colours.empty()) out.colours.push_back(colours[v.idx]);
     }
-    const BaseAttributes* attributes = options.attributes.get();
-    const bool texcoords = attributes && is_base_mesh(mesh) && !attributes->triangle_texcoords.empty();
+    // The exact UV channel gives every corner's UV at every level (the OBJ writer's vt); without it,
+    // the level-0 texture coordinates serve while the mesh is its base mesh.
+    rgb::MeshUvs uvs;
+    if (options.uvs) {
+        rgb::UvEvaluator evaluator(mesh.base(), *options.uvs);
+        uvs = rgb::mesh_uvs(mesh, evaluator, limit);
+        out.texcoords = uvs.values;
+    }
+    static_assert(rgb::MeshUvs::kNone == kNoIndex, "a corner without a UV is kNoIndex in both");
+    const bool texcoords = !options.uvs && attributes && is_base_mesh(mesh) && !attributes->triangle_texcoords.empty();
     FaceLabels materials;  // per written triangle, for material_indices
     if (attributes && !attributes->labels.materials.empty()) materials.names = attributes->labels.materials.names;
     for (rgb::FaceId f : mesh.faces()) {
         const auto& v = mesh.face_vertices(f);
         out.triangles.push_back({index[v[0].idx], index[v[1].idx], index[v[2].idx]});
+        if (options.uvs) out.triangle_texcoords.push_back(uvs.corners[f.idx]);
         if (texcoords)
             out.triangle_texcoords.push_back({base_corner_texcoord(mesh, *attributes, f, 0), base_corner_texcoord(mesh, *attributes, f, 1),
                                               base_corner_texcoord(mesh, *attributes, f, 2)});

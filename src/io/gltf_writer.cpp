@@ -181,6 +181,11 @@ std::string format_gltf(const GltfMesh& mesh, GltfContainer container, const std
         }
         base.attributes["NORMAL"] = builder.add_floats<3>(normals, TINYGLTF_TYPE_VEC3, false);
     }
+    if (!mesh.colours.empty()) {
+        std::vector<glm::dvec3> colours;
+        for (std::uint32_t v : vertices.position) colours.push_back(mesh.colours[v]);
+        base.attributes["COLOR_0"] = builder.add_floats<3>(colours, TINYGLTF_TYPE_VEC3, false);
+    }
     if (!mesh.triangle_texcoords.empty()) {
         std::vector<glm::dvec2> texcoords;
         for (std::uint32_t uv : vertices.texcoord)

@@ -1,13 +1,13 @@
 #pragma once
 // glTF 2.0 export (through tinygltf) for pipelines that want a standard mesh: positions, normals,
-// texture coordinates, one primitive per material, and materials with a base colour or a base
+// vertex colours, texture coordinates, one primitive per material, and materials with a base colour or a base
 // colour texture (the .mtl's map_Kd image, referenced by a path relative to the output). Written as
 // `.glb` (binary container) or `.gltf` (JSON with the buffer embedded as a data URI), atomically.
 //
 // glTF keeps attributes per vertex, so each (vertex, texture coordinate) pair of a corner becomes one
 // glTF vertex, numbered in order of first use by the triangles; glTF's texture origin is the top
-// left, so v is written as 1 - v. Positions and normals are written as 32-bit floats (glTF allows
-// no doubles for them).
+// left, so v is written as 1 - v. Positions, normals, colours and texture coordinates are written as
+// 32-bit floats (glTF allows no doubles for them).
 #include <array>
 #include <cstdint>
 #include <string>
@@ -23,6 +23,7 @@ namespace rgbio {
 struct GltfMesh {
     std::vector<glm::dvec3> positions;
     std::vector<glm::dvec3> normals;  // empty, or one per position (normalized when written)
+    std::vector<glm::dvec3> colours;  // empty, or one per position: COLOR_0 (RGB, as floats)
     std::vector<rgb::Triangle> triangles;
     // As in LoadedMesh: a table, and per triangle corner an index into it or kNoIndex (written as 0, 0).
     std::vector<glm::dvec2> texcoords;

@@ -77,6 +77,9 @@ struct LoadedMesh {
     // Vertex colours (`v x y z r g b`), values as written: empty, or one per position. Kept only
     // when every vertex used by a face has one; otherwise all are dropped with a warning.
     std::vector<glm::dvec3> colours;
+    // With `adaptive`: the base vertices' colours from the state's base-colours section (one per base
+    // vertex), if it has one and the v lines carry the colours it gives.
+    std::vector<glm::dvec3> base_colours;
 
     // Texture coordinates, face-varying: the `vt` table (u, v; used entries only, in file order)
     // and, per triangle, the table index of each corner or kNoIndex (a corner written without vt).

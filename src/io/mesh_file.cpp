@@ -137,7 +137,8 @@ void write_obj(const rgb::Mesh& mesh, const SaveOptions& options, const std::str
     append_tag_lines(mesh, obj_index, out);
     if (options.state)
         write_state(mesh, options.positions == SavedPositions::Limit, out, [&] { output.flush_if_full(); }, order.faces,
-                    attributes ? attributes->labels : BaseFaceLabels{}, options.uvs ? &options.uvs->channel() : nullptr);
+                    attributes ? attributes->labels : BaseFaceLabels{}, options.uvs ? &options.uvs->channel() : nullptr,
+                    attributes ? std::span<const glm::dvec3>(attributes->colours) : std::span<const glm::dvec3>());
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "io/obj_reader.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -9,6 +10,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "io/base_colour_state.h"
 #include "io/crease_tags.h"
 #include "io/face_label_state.h"
 #include "io/material_library.h"
@@ -90,6 +92,15 @@ std::shared_ptr<rgb::Mesh> adaptive_mesh(SavedState& saved, const ObjRecords& re
                  " vertex positions differ from the ones it gives";
         return nullptr;
     }
+    // Colours removed elsewhere stay removed; colours changed elsewhere win over the state, as positions do.
+    const bool body_colours =
+        !records.colours.empty() && std::find(records.has_colour.begin(), records.has_colour.end(), 0) == records.has_colour.end();
+    if (!body_colours) saved.colours.clear();
+    if (!saved.colours.empty())
+        if (std::optional<std::string> mismatch = colour_mismatch(*mesh, saved.colours, records, saved.limit_positions)) {
+            reason = std::move(*mismatch);
+            return nullptr;
+        }
     // Saved without labels, the body's (added elsewhere) become the base faces'.
     if (saved.labels.empty()) saved.labels = body_labels(*mesh, records);
     if (const std::optional<std::string> mismatch = label_mismatch(*mesh, saved.labels, records)) {
@@ -117,6 +128,7 @@ LoadedMesh read_records(const ObjRecords& records, const std::string& name, cons
                 LoadedMesh loaded = saved_mesh_content(records, std::move(saved->mesh.faces));
                 loaded.adaptive = std::move(mesh);
                 loaded.base_uvs = std::move(saved->uvs);
+                loaded.base_colours = std::move(saved->colours);
                 loaded.adaptive_labels = std::move(saved->labels);
                 return loaded;
             }

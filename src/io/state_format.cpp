@@ -3,14 +3,14 @@
 #include <algorithm>
 #include <array>
 #include <charconv>
-#include <cmath>
 #include <cstring>
-#include <limits>
 
+#include "io/base_colour_state.h"
 #include "io/crease_tags.h"
 #include "io/face_label_state.h"
 #include "io/number_format.h"
 #include "io/obj_error.h"
+#include "io/state_line_reader.h"
 #include "rgb/loop_geometry.h"
 #include "rgb/mesh.h"
 
@@ -26,62 +26,6 @@ void append_number(std::string& out, std::uint64_t x) {
     out += ' ';
     out.append(buffer, end);
 }
-
-// Reads the tokens of one "#rgb" line, reporting problems with its line number.
-class StateLineReader {
-public:
-    StateLineReader(const ObjStateLine& line, const std::string& file) : rest_(line.text), line_(line.line), file_(file) {}
-
-    std::string_view word() {
-        skip_blanks();
-        std::size_t e = 0;
-        while (e < rest_.size() && !is_blank(rest_[e])) ++e;
-        const std::string_view w = rest_.substr(0, e);
-        rest_.remove_prefix(e);
-        return w;
-    }
-    bool at_end() {
-        skip_blanks();
-        return rest_.empty();
-    }
-    template <class T>
-    T number(T max = std::numeric_limits<T>::max()) {
-        const std::string_view w = word();
-        if (w.empty()) fail("the line ends too early (is the file truncated?)");
-        T value{};
-        const auto [end, ec] = std::from_chars(w.data(), w.data() + w.size(), value);
-        if constexpr (std::is_floating_point_v<T>) {
-            if (ec == std::errc::result_out_of_range || (ec == std::errc() && std::abs(value) > kMaxCoordinate))
-                fail("coordinate '" + std::string(w.substr(0, 40)) + "' exceeds the supported magnitude 1e12");
-        }
-        if (ec != std::errc() || end != w.data() + w.size()) fail("expected a number, found '" + std::string(w.substr(0, 40)) + "'");
-        if constexpr (std::is_floating_point_v<T>) {
-            if (!std::isfinite(value)) fail("non-finite value");
-        } else if (value > max) {
-            fail("value " + std::string(w) + " is out of range (at most " + std::to_string(max) + ")");
-        }
-        return value;
-    }
-    void expect_end() {
-        if (!at_end()) fail("unexpected trailing values");
-    }
-    [[noreturn]] void fail(const std::string& reason) const {
-        throw ObjError(ObjProblem::BadState, file_, line_, "rgbsub state: " + reason);
-    }
-
-private:
-    // Tested directly rather than searched for in a set: a saved file has millions of state numbers.
-    static bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
-    void skip_blanks() {
-        std::size_t b = 0;
-        while (b < rest_.size() && is_blank(rest_[b])) ++b;
-        rest_.remove_prefix(b);
-    }
-
-    std::string_view rest_;
-    std::size_t line_;
-    const std::string& file_;
-};
 
 constexpr std::size_t kNoLine = static_cast<std::size_t>(-1);
 
@@ -189,7 +133,8 @@ rgb::UvChannel parse_uv_section(std::span<const ObjStateLine> records, std::size
 }  // namespace
 
 void write_state(const rgb::Mesh& mesh, bool limit_positions, std::string& out, const std::function<void()>& flush_if_full,
-                 std::span<const rgb::FaceId> face_lines, const BaseFaceLabels& labels, const rgb::UvChannel* uvs) {
+                 std::span<const rgb::FaceId> face_lines, const BaseFaceLabels& labels, const rgb::UvChannel* uvs,
+                 std::span<const glm::dvec3> base_colours) {
     const rgb::BaseMesh& base = mesh.base();
     const std::size_t n0 = base.num_vertices();
     out += "# rgbsub adaptive state: the #rgb lines restore the exact RGB mesh; other readers ignore them\n";
@@ -264,6 +209,7 @@ void write_state(const rgb::Mesh& mesh, bool limit_positions, std::string& out, 
     }
     if (on_line > 0) out += '\n';
     if (uvs) append_uv_section(*uvs, out, flush_if_full);
+    append_colour_section(base_colours, out, flush_if_full);
     out += tag_records;
     append_face_label_section(labels, triangles.size(), out);
     out += "#rgb end\n";
@@ -283,11 +229,12 @@ std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const
 
     SavedState saved;
     rgb::MeshState& state = saved.mesh;
-    enum class Section { None, BaseVertices, BaseFaces, Addresses, BaseUvs } section = Section::None;
-    std::size_t expected[5] = {0, 0, 0, 0, 0};
-    bool seen[5] = {false, false, false, false, false};
-    std::vector<ObjStateLine> uv_records;
+    enum class Section { None, BaseVertices, BaseFaces, Addresses, BaseUvs, BaseColours } section = Section::None;
+    std::size_t expected[6] = {0, 0, 0, 0, 0, 0};
+    bool seen[6] = {false, false, false, false, false, false};
+    std::vector<ObjStateLine> uv_records, colour_records;
     const ObjStateLine* uv_section_line = nullptr;
+    const ObjStateLine* colour_section_line = nullptr;
     std::vector<rgb::SurfacePoint> addresses;
     std::vector<ObjStateLine> tag_records;  // version 4
     FaceLabelSectionReader face_labels(file);
@@ -308,11 +255,13 @@ std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const
             else if (name == "base-faces") section = Section::BaseFaces;
             else if (name == "addresses") section = Section::Addresses;
             else if (name == "base-uvs") section = Section::BaseUvs;
+            else if (name == "base-colours") section = Section::BaseColours;
             else r.fail("unknown section '" + std::string(name.substr(0, 40)) + "' (written by a newer rgbsub?)");
             const auto s = static_cast<int>(section);
             if (seen[s]) r.fail("section '" + std::string(name) + "' appears twice");
             seen[s] = true;
             if (section == Section::BaseUvs) uv_section_line = &line;
+            if (section == Section::BaseColours) colour_section_line = &line;
             // Counts are bounded by what the lines can hold, so a forged count cannot exhaust memory.
             expected[s] = r.number<std::size_t>(kPerLine * lines.size() + std::max(body_vertices, body_faces));
             r.expect_end();
@@ -360,6 +309,9 @@ std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const
         } else if (kind == "uv-interpolation" || kind == "uv" || kind == "uv-faces" || kind == "uv-untextured") {
             if (section != Section::BaseUvs) r.fail("texture coordinates outside their section");
             uv_records.push_back(line);
+        } else if (kind == kColourRecord) {
+            if (section != Section::BaseColours) r.fail("vertex colours outside their section");
+            colour_records.push_back(line);
         } else if (version == kTaggedStateFormatVersion && is_state_tag_record(kind)) {
             tag_records.push_back(line);
         } else if (kind == "end") {
@@ -388,6 +340,9 @@ std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const
     if (uv_section_line)
         saved.uvs = parse_uv_section(uv_records, expected[static_cast<int>(Section::BaseUvs)], state.base_triangles.size(),
                                      *uv_section_line, file);
+    if (colour_section_line)
+        saved.colours = parse_colour_section(colour_records, expected[static_cast<int>(Section::BaseColours)], state.base_positions.size(),
+                                             *colour_section_line, file);
     saved.labels = face_labels.finish(state.base_triangles.size(), lines.back());
     return saved;
 }

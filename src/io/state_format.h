@@ -27,6 +27,7 @@
 //                                        #rgb uv U V [U V ...]       the N values in order
 //                                        #rgb uv-faces A B C [...]   per base face in order, its corners' values
 //                                        #rgb uv-untextured F [...]  base faces the input gave no UVs (sorted)
+//   #rgb section base-colours N        optional: the base vertices' colours (base_colour_state.h)
 //   #rgb section face-labels N         optional: the base faces' usemtl/g/o/s labels (face_label_state.h)
 //   #rgb end
 // The -as- records keep a lightly refined file from repeating its base mesh (a base vertex shown at
@@ -37,8 +38,8 @@
 // '#rgb end'; it is written only for a base mesh with tags, so untagged files stay version 3 and
 // readable by older rgbsub, which refuse a version-4 file naming its version.
 // A later version adds sections; a reader refuses a section it does not know, naming it. Optional
-// sections (face-labels, base-uvs) are written only when there is something to say, so a mesh without
-// them stays readable by an rgbsub that does not know them.
+// sections (face-labels, base-uvs, base-colours) are written only when there is something to say, so
+// a mesh without them stays readable by an rgbsub that does not know them.
 #include <functional>
 #include <optional>
 #include <span>
@@ -69,6 +70,7 @@ struct SavedState {
     };
     std::vector<Run> vertices_as_v, faces_as_f;
     std::optional<rgb::UvChannel> uvs;  // the base-uvs section, if any
+    std::vector<glm::dvec3> colours;    // the base-colours section: empty, or one per base vertex
     BaseFaceLabels labels;  // empty without a face-labels section
 };
 
@@ -76,10 +78,11 @@ struct SavedState {
 // written) to `out`, calling flush_if_full() between lines so that a file writer can empty the buffer
 // (the state of a large mesh is tens of megabytes). `face_lines`: the live faces in the order of the
 // file's f lines (which t-as-f records refer to), or empty for slot order. `labels` (per base face)
-// become the optional face-labels section. `uvs`: the base mesh's UV channel, if any.
+// become the optional face-labels section. `uvs`: the base mesh's UV channel, if any. `base_colours`:
+// empty, or one colour per base vertex (the base-colours section).
 void write_state(const rgb::Mesh& mesh, bool limit_positions, std::string& out, const std::function<void()>& flush_if_full,
                  std::span<const rgb::FaceId> face_lines = {}, const BaseFaceLabels& labels = {},
-                 const rgb::UvChannel* uvs = nullptr);
+                 const rgb::UvChannel* uvs = nullptr, std::span<const glm::dvec3> base_colours = {});
 
 // The #rgb lines of a file, or nothing when they are not an rgbsub state at all (no `#rgb state`
 // header first: some other program's comments). Throws ObjError(BadState) naming the offending line,

@@ -1,6 +1,7 @@
 #include "rgb/uv_layout.h"
 
 #include <algorithm>
+#include <span>
 #include <stdexcept>
 #include <string>
 
@@ -16,10 +17,38 @@ struct FanSpan {
     std::size_t start = 0, size = 0;  // fan faces start .. start + size - 1, cyclically
     bool infinite_edge = false;       // an infinitely sharp edge between two of its faces
     int semi_sharpness = 0;           // the largest finite sharpness of such an edge
-    bool pinned = false;              // a seam inside it, or its value in another span too
+    bool pinned = false;              // a seam inside it, or its Far sibling in another span too
 };
 
 constexpr const char* kOptionNames[] = {"none", "corners", "boundaries", "all"};
+
+// Far's sibling (its value slot at the vertex) of each fan face, as vtr/fvarLevel.cpp's
+// completeTopologyFromFaceValues assigns them, for fan faces `value` in fan order and Far's first
+// face `start` (docs/loop-face-varying.md §5): walking the faces from there, a face with its
+// predecessor's value shares its sibling; a new value gets a new sibling unless an earlier sibling
+// has it, except that while there are exactly two siblings Far compares with the first only, so the
+// second value's return after the first's (A B A B) becomes a sibling of its own.
+std::vector<std::uint32_t> far_siblings(std::span<const std::uint32_t> value, std::size_t start) {
+    const std::size_t m = value.size();
+    std::vector<std::uint32_t> sibling(m), unique{value[start]};
+    sibling[start] = 0;
+    for (std::size_t k = 1; k < m; ++k) {
+        const std::size_t i = (start + k) % m, previous = (start + k - 1) % m;
+        if (value[i] == value[previous]) {
+            sibling[i] = sibling[previous];
+            continue;
+        }
+        const auto searched_end = unique.size() == 2 ? unique.begin() + 1 : unique.end();
+        const auto found = std::find(unique.begin(), searched_end, value[i]);
+        if (found != searched_end) {
+            sibling[i] = static_cast<std::uint32_t>(found - unique.begin());
+        } else {
+            sibling[i] = static_cast<std::uint32_t>(unique.size());
+            unique.push_back(value[i]);
+        }
+    }
+    return sibling;
+}
 
 }  // namespace
 
@@ -103,9 +132,16 @@ void UvLayout::classify_vertex(const BaseMesh& base, std::uint32_t v) {
         }
         ++spans.back().size;
     }
+    // A Far sibling with two separate spans (a UV bow-tie) is a corner. Far starts at the boundary,
+    // or around an interior vertex at its lowest-numbered face.
+    std::vector<std::uint32_t> fan_values(m);
+    for (std::size_t j = 0; j < m; ++j) fan_values[j] = value_in(j);
+    const std::size_t far_start =
+        boundary ? 0 : static_cast<std::size_t>(std::min_element(out.begin(), out.end()) - out.begin());
+    const std::vector<std::uint32_t> sibling = far_siblings(fan_values, far_start);
     for (FanSpan& a : spans)
         for (const FanSpan& b : spans)
-            if (&a != &b && a.value == b.value) a.pinned = true;
+            if (&a != &b && sibling[a.start] == sibling[b.start]) a.pinned = true;
 
     const int sigma = base.corner_sharpness(v);
     for (const FanSpan& s : spans) {

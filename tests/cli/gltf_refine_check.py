@@ -7,7 +7,8 @@ tests/io/gltf_export_check.py, no glTF library), against what the input says:
   keeps the flat grid's lines straight away from its corners); every normal is +z; the positions are
   those of the OBJ refine writes for the same request (float32);
 - the same grid at level 0 with texture coordinates: each glTF vertex is an input corner (position, u,
-  1 - v); refined, the export has no texture coordinates and rgbsub warns that it leaves them out.
+  1 - v); refined, each glTF triangle has the corners (position, exact texture coordinate) of the OBJ
+  refine writes for the same request (tests/io/gltf_levels_check.py), and rgbsub warns of nothing.
 
 usage: gltf_refine_check.py PATH/TO/rgbsub
 """
@@ -18,6 +19,7 @@ import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "io"))
 from gltf_export_check import expect, f32, load_glb, load_gltf, read_accessor  # noqa: E402
+from gltf_levels_check import gltf_triangles, obj_triangles, same_triangles  # noqa: E402
 
 CELLS = 4
 
@@ -103,10 +105,13 @@ def main():
         run(rgbsub, "refine", path("textured.obj"), "--level", "0", "-o", path("level0.glb"))
         check_level0(*load_glb(path("level0.glb")))
         print("level0.glb ok")
+        run(rgbsub, "refine", path("textured.obj"), "--level", "1", "-o", path("level1.obj"), "--plain")
+        wanted, _, pairs = obj_triangles(path("level1.obj"))
         warned = run(rgbsub, "refine", path("textured.obj"), "--level", "1", "-o", path("level1.glb")).stderr
-        expect("warning", "the texture coordinates (vt) are not written: the mesh is refined" in warned, True)
-        doc, _ = load_glb(path("level1.glb"))
-        expect("refined: no texture coordinates", "TEXCOORD_0" in doc["meshes"][0]["primitives"][0]["attributes"], False)
+        expect("warnings", warned, "")
+        got, vertices = gltf_triangles(*load_glb(path("level1.glb")), False)
+        expect("vertices (one per (v, vt) pair)", vertices, pairs)
+        same_triangles("level1.glb", got, wanted)
         print("level1.glb ok")
 
 

@@ -115,7 +115,7 @@ TEST_F(TexturedMesh, ARefinedSaveWritesEachVertexsColourByThePositionRules) {
     }
 }
 
-TEST_F(TexturedMesh, TextureCoordinatesOfARefinedFileAreIgnoredWithAWarning) {
+TEST_F(TexturedMesh, TextureCoordinatesOfARefinedFileWithoutABaseUvsSectionAreIgnoredWithAWarning) {
     write("in.obj", kTextured);
     LoadedAsset asset = load_asset(path("in.obj"));
     rgb::set_level(asset.mesh, 1);
@@ -132,7 +132,8 @@ TEST_F(TexturedMesh, TextureCoordinatesOfARefinedFileAreIgnoredWithAWarning) {
     const LoadedAsset resumed = load_asset(path("refined.obj"), &warnings);
     EXPECT_EQ(resumed.mesh.num_faces(), asset.mesh.num_faces());  // the state still fits the faces
     EXPECT_TRUE(resumed.attributes->triangle_texcoords.empty());
-    EXPECT_TRUE(test::has_warning(warnings, "ignored the file's texture coordinates and vertex colours: they belong to a refined mesh"));
+    EXPECT_TRUE(test::has_warning(warnings, "texture coordinates dropped: the file is a refined mesh whose rgbsub state has no "
+                                            "base-uvs section"));
 }
 
 }  // namespace

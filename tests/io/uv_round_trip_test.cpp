@@ -20,36 +20,12 @@
 #include "rgb/refine.h"
 #include "rgb/requests.h"
 #include "rgb/uv_evaluator.h"
+#include "textured_grid.h"
 
 namespace rgbio {
 namespace {
 
-// A 4 x 3 grid cut by a UV seam along x = 2, with UVs that need 17 digits.
-std::string textured_grid() {
-    std::string text;
-    for (int y = 0; y <= 3; ++y)
-        for (int x = 0; x <= 4; ++x) text += "v " + std::to_string(x) + " " + std::to_string(y) + " " + std::to_string((x * y) % 3) + "\n";
-    auto vt = [&](int x, int y, int island) {
-        text += "vt";
-        append_double(text, std::sqrt(2.0) * x / 7.0 + 0.5 * island);
-        append_double(text, std::log(3.0 + y) / 5.0);
-        text += '\n';
-    };
-    for (int island = 0; island < 2; ++island)
-        for (int y = 0; y <= 3; ++y)
-            for (int x = 0; x <= 4; ++x) vt(x, y, island);
-    auto corner = [](int x, int y, int island) {
-        const int v = y * 5 + x + 1;
-        return std::to_string(v) + "/" + std::to_string(island * 20 + v);
-    };
-    for (int y = 0; y < 3; ++y)
-        for (int x = 0; x < 4; ++x) {
-            const int i = x < 2 ? 0 : 1;
-            text += "f " + corner(x, y, i) + " " + corner(x + 1, y, i) + " " + corner(x + 1, y + 1, i) + "\n";
-            text += "f " + corner(x, y, i) + " " + corner(x + 1, y + 1, i) + " " + corner(x, y + 1, i) + "\n";
-        }
-    return text;
-}
+using test::textured_grid;
 
 struct TexturedMesh {
     LoadedMesh loaded;

@@ -1,7 +1,9 @@
 #include "uv_meshes.h"
 
+#include <cmath>
 #include <functional>
 #include <map>
+#include <numbers>
 #include <random>
 
 #include "support/test_meshes.h"
@@ -117,6 +119,48 @@ std::vector<UvCase> uv_cases() {
     cases.push_back({"equator_seam", caps});
     for (int i = 0; i < 6; ++i) caps.creases.push_back({i, (i + 1) % 6, infinite_sharpness});
     cases.push_back({"equator_seam_on_crease", caps});
+    return cases;
+}
+
+std::vector<UvCase> uv_bow_tie_cases() {
+    std::vector<UvCase> cases;
+    // UV bow-ties: one UV value used by two separate groups of triangles around a vertex. Around grid
+    // (2, 1) the triangles, counter-clockwise from the lower right, have centroids (times 3) (7, 2),
+    // (8, 4), (7, 5), (5, 4), (4, 2), (5, 1). Two one-triangle islands there, (8, 4) and (5, 4), leave
+    // the surrounding value with the spans {(7, 5)} and {(4, 2), (5, 1), (7, 2)}.
+    cases.push_back(grid_case("bow_tie_between_two_islands", [](const std::array<int, 3>& t) {
+        const int x = centroid_x3(t), y = centroid_y3(t);
+        return x == 8 && y == 4 ? 1 : (x == 5 && y == 4 ? 2 : 0);
+    }));
+    // A checkerboard of two values cut at column 2 and row 1: both values at (2, 1) have two spans.
+    // Far gives the value of its first face there one sibling (a corner) and each span of the other
+    // value a sibling of its own (under none a crease each): treating both values as corners misses
+    // Far's UVs by 0.059 at level 1.
+    UvCase checkerboard = grid_case("bow_tie_checkerboard", [](const std::array<int, 3>& t) {
+        return (centroid_x3(t) > 6) != (centroid_y3(t) > 3) ? 1 : 0;
+    });
+    cases.push_back(checkerboard);
+    // The same with row 1 of sharpness 2: the bow-tie values' spans hold semi-sharp edges.
+    sharpen_row(checkerboard.input, 1, 2.0);
+    checkerboard.name = "bow_tie_checkerboard_semi_sharp_row";
+    cases.push_back(checkerboard);
+    // On the boundary at (2, 0): the middle one of its three triangles, (7, 2), is an island touching
+    // the boundary at that vertex only, so the outer two share a value across it.
+    cases.push_back(grid_case("bow_tie_on_boundary", [](const std::array<int, 3>& t) {
+        return centroid_x3(t) == 7 && centroid_y3(t) == 2 ? 1 : 0;
+    }));
+    // A half disc of four triangles around a boundary vertex with alternating values A B A B: Far
+    // walks from one end of the boundary, so which value is split tells whether the walk starts at
+    // the same end as the core's.
+    FarInput fan;
+    fan.positions.push_back({0.0, 0.0, 0.1});
+    for (int k = 0; k <= 4; ++k) {
+        const double angle = 0.25 * std::numbers::pi * k;
+        fan.positions.push_back({std::cos(angle), std::sin(angle) * (1.0 + 0.1 * k), 0.05 * k});
+    }
+    for (int k = 0; k < 4; ++k) fan.triangles.push_back({0, k + 1, k + 2});
+    fan.uv = islands(fan, [](int t) { return t % 2; }, never);
+    cases.push_back({"bow_ties_alternating_on_boundary", fan});
     return cases;
 }
 

@@ -21,4 +21,10 @@ inline void PrintTo(const UvCase& c, std::ostream* os) { *os << c.name; }
 
 std::vector<UvCase> uv_cases();
 
+// UV bow-ties: a UV value used by two separate groups of triangles around a vertex, where Far's
+// sibling assignment decides which groups share a value (docs/loop-face-varying.md §5). The closed
+// form tests' model of the UV topology (uv_topology.h) does not follow that assignment, so these are
+// checked only against Far's refinement (uv_refinement_test.cpp).
+std::vector<UvCase> uv_bow_tie_cases();
+
 }  // namespace osdoracle

@@ -1,7 +1,7 @@
 // The core's face-varying UVs (issue 12, rgb/uv_evaluator.h) against OpenSubdiv Far, corner by corner,
 // on the UV meshes of uv_meshes.cpp (seams across a grid and ending inside it, three and four seams
 // meeting, one-triangle islands, seams crossing sharp and semi-sharp rows, a closed mesh cut along a
-// crease, both boundary options) under the four options the core offers: uniform levels 1-4 equal
+// crease, both boundary options, UV bow-ties inside and on the boundary) under the four options the core offers: uniform levels 1-4 equal
 // Far's levels, every corner of random adaptive meshes equals Far's UV at its vertex's display level,
 // requests stay order independent and level 0 gives the input's UVs back bit for bit.
 #include <algorithm>
@@ -38,8 +38,9 @@ std::vector<UvCase> cases_and_options() {
                                                                {UvInterpolation::corners_only, "corners"},
                                                                {UvInterpolation::boundaries, "boundaries"},
                                                                {UvInterpolation::all, "all"}};
-    std::vector<UvCase> all;
-    for (const UvCase& c : uv_cases())
+    std::vector<UvCase> all, cases = uv_cases(), bow_ties = uv_bow_tie_cases();
+    cases.insert(cases.end(), bow_ties.begin(), bow_ties.end());
+    for (const UvCase& c : cases)
         for (const auto& [option, name] : options) {
             UvCase with_option = c;
             with_option.name += std::string("_") + name;
