@@ -116,7 +116,7 @@ void LodDriver::start_refining() {
             const HalfedgeId o = mesh_.opposite(h);
             if (o.valid() && o < h) continue;  // each edge once
             const VertexId a = mesh_.from_vertex(h), b = mesh_.to_vertex(h);
-            if (const std::uint64_t key = edge_key(a, b, 0)) push({key, a, b, 0});
+            if (const std::uint64_t key = edge_key(a, b, 0)) push({key, a, b});
         }
     band_ = bands_.size() - 1;
     while (band_ > 0 && bands_[band_].empty()) --band_;
@@ -145,7 +145,7 @@ void LodDriver::push_new_edges() {
             const EdgeType t = mesh_.edge_type(h);
             if (t.colour != Colour::Green) continue;
             const VertexId a = mesh_.from_vertex(h), b = mesh_.to_vertex(h);
-            if (const std::uint64_t key = edge_key(a, b, t.level)) push({key, a, b, t.level});
+            if (const std::uint64_t key = edge_key(a, b, t.level)) push({key, a, b});
         }
     }
 }
@@ -156,7 +156,7 @@ bool LodDriver::split(const Candidate& c) {
     const HalfedgeId h = mesh_.find_edge(c.a, c.b);
     if (!h.valid()) return false;
     const EdgeType t = mesh_.edge_type(h);
-    if (t.colour != Colour::Green || t.level != c.level) return false;
+    if (t.colour != Colour::Green) return false;  // its level is the one it was queued with (Candidate)
     // The split ends the uniform neighbourhoods of the corners of the edge's two triangles, where
     // their limits (which later keys and splits need) cost least: take them now.
     for (HalfedgeId side : {h, mesh_.opposite(h)}) {

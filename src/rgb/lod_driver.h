@@ -72,10 +72,11 @@ public:
     std::size_t pending() const;
 
 private:
+    // 16 bytes: the edge's level is not stored, as it is the finer endpoint's (an edge of Σk, k > 0,
+    // halves an edge of Σk-1 or joins two of its midpoints, so it has an end of level k).
     struct Candidate {
         std::uint64_t key;
         VertexId a, b;
-        int level;
     };
     struct Lower {
         const LodDriver* driver;
