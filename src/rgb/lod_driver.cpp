@@ -8,6 +8,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "rgb/completed_ring.h"
 #include "rgb/loop_geometry.h"
 #include "rgb/operators.h"
 #include "rgb/refine.h"
@@ -62,6 +63,7 @@ LodDriver::LodDriver(Mesh& mesh, LodSettings settings)
     vertex_key_.assign(mesh_.vertex_capacity(), 0);
     std::fill(vertex_key_.begin(), vertex_key_.begin() + base.num_vertices(), kBaseKey);
     base_space_.resize(mesh_.vertex_capacity());
+    limit_known_.assign(mesh_.vertex_capacity(), 0);
     for (std::uint32_t v = 0; v < base.num_vertices(); ++v) base_space_[v] = base.position(v);
     mesh_.add_observer(this);
 }
@@ -80,6 +82,8 @@ bool LodDriver::outranks(const Candidate& x, const Candidate& y) const {
 std::uint64_t LodDriver::edge_key(VertexId a, VertexId b, int level) {
     const std::uint64_t inherited = std::min(key_of(a), key_of(b));
     if (inherited == 0) return 0;
+    prepare_limit(a, level);
+    prepare_limit(b, level);
     const double value = settings_.value(mesh_, a, b, level);
     if (!(value > settings_.threshold)) return 0;
     if (level >= settings_.max_level) {
@@ -92,18 +96,44 @@ std::uint64_t LodDriver::edge_key(VertexId a, VertexId b, int level) {
     return std::min((band(value) << 48) | morton, inherited);
 }
 
+// A value at `level` needs the limit of an endpoint coarser than that. Most such limits the mesh
+// has; of the others, most belong to a vertex with some red halves of coarser triangles still
+// around it (the driver split one of its edges before the others), whose ring completes cheaply
+// from the mesh (completed_ring.h); the rest take the general way inside the value.
+void LodDriver::prepare_limit(VertexId v, int level) {
+    if (mesh_.level(v) >= level || limit_known_[v.idx]) return;
+    limit_known_[v.idx] = 1;
+    if (mesh_.cached_limit(v)) return;
+    if (const auto limit = limit_from_completed_ring(mesh_, v)) mesh_.cache_limit(v, *limit);
+}
+
 void LodDriver::vertex_added(const Mesh&, VertexId v, VertexId a, VertexId b) {
     ++report_.splits;
     added_vertices_.push_back(v);
     if (v.idx >= vertex_key_.size()) {
         vertex_key_.resize(std::max<std::size_t>(v.idx + 1, 2 * vertex_key_.size()), 0);
         base_space_.resize(vertex_key_.size());
+        limit_known_.resize(vertex_key_.size());
     }
+    limit_known_[v.idx] = 0;  // a slot the removals freed holds a new vertex
     base_space_[v.idx] = 0.5 * (base_space_[a.idx] + base_space_[b.idx]);
-    const bool wanted = splitting_ && ((splitting_->a == a && splitting_->b == b) || (splitting_->a == b && splitting_->b == a));
-    std::uint64_t key = wanted ? splitting_->key : edge_key(a, b, mesh_.level(v) - 1);
-    if (key == 0 && settings_.split_past_dependencies && splitting_) key = std::min({key_of(a), key_of(b), splitting_->key});
-    vertex_key_[v.idx] = key;
+    unkeyed_.push_back({v, a, b});
+    // Within a split the keys wait until it is complete (key_new_vertices), when the mesh around the
+    // endpoints can be walked again.
+    if (!splitting_) key_new_vertices();
+}
+
+// In the order the vertices came, so that each endpoint has its key before its edge's vertex.
+void LodDriver::key_new_vertices() {
+    for (const Unkeyed& n : unkeyed_) {
+        const bool wanted =
+            splitting_ && ((splitting_->a == n.a && splitting_->b == n.b) || (splitting_->a == n.b && splitting_->b == n.a));
+        std::uint64_t key = wanted ? splitting_->key : edge_key(n.a, n.b, mesh_.level(n.v) - 1);
+        if (key == 0 && settings_.split_past_dependencies && splitting_)
+            key = std::min({key_of(n.a), key_of(n.b), splitting_->key});
+        vertex_key_[n.v.idx] = key;
+    }
+    unkeyed_.clear();
 }
 
 void LodDriver::start_refining() {
@@ -116,7 +146,7 @@ void LodDriver::start_refining() {
             const HalfedgeId o = mesh_.opposite(h);
             if (o.valid() && o < h) continue;  // each edge once
             const VertexId a = mesh_.from_vertex(h), b = mesh_.to_vertex(h);
-            if (const std::uint64_t key = edge_key(a, b, 0)) push({key, a, b, 0});
+            if (const std::uint64_t key = edge_key(a, b, 0)) push({key, a, b});
         }
     band_ = bands_.size() - 1;
     while (band_ > 0 && bands_[band_].empty()) --band_;
@@ -145,7 +175,7 @@ void LodDriver::push_new_edges() {
             const EdgeType t = mesh_.edge_type(h);
             if (t.colour != Colour::Green) continue;
             const VertexId a = mesh_.from_vertex(h), b = mesh_.to_vertex(h);
-            if (const std::uint64_t key = edge_key(a, b, t.level)) push({key, a, b, t.level});
+            if (const std::uint64_t key = edge_key(a, b, t.level)) push({key, a, b});
         }
     }
 }
@@ -156,7 +186,7 @@ bool LodDriver::split(const Candidate& c) {
     const HalfedgeId h = mesh_.find_edge(c.a, c.b);
     if (!h.valid()) return false;
     const EdgeType t = mesh_.edge_type(h);
-    if (t.colour != Colour::Green || t.level != c.level) return false;
+    if (t.colour != Colour::Green) return false;  // its level is the one it was queued with (Candidate)
     // The split ends the uniform neighbourhoods of the corners of the edge's two triangles, where
     // their limits (which later keys and splits need) cost least: take them now.
     for (HalfedgeId side : {h, mesh_.opposite(h)}) {
@@ -168,6 +198,7 @@ bool LodDriver::split(const Candidate& c) {
     added_vertices_.clear();
     splitting_ = &c;
     refine_edge(mesh_, h);
+    key_new_vertices();
     splitting_ = nullptr;
     push_new_edges();
     return true;

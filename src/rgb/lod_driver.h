@@ -72,10 +72,11 @@ public:
     std::size_t pending() const;
 
 private:
+    // 16 bytes: the edge's level is not stored, as it is the finer endpoint's (an edge of Σk, k > 0,
+    // halves an edge of Σk-1 or joins two of its midpoints, so it has an end of level k).
     struct Candidate {
         std::uint64_t key;
         VertexId a, b;
-        int level;
     };
     struct Lower {
         const LodDriver* driver;
@@ -88,6 +89,8 @@ private:
     bool outranks(const Candidate& x, const Candidate& y) const;
     std::uint64_t edge_key(VertexId a, VertexId b, int level);
     std::uint64_t key_of(VertexId v) const { return v.idx < vertex_key_.size() ? vertex_key_[v.idx] : 0; }
+    void prepare_limit(VertexId v, int level);
+    void key_new_vertices();
     void push(const Candidate& c);
     void push_new_edges();
     void start_refining();
@@ -104,6 +107,9 @@ private:
     // Base-space positions by midpoint recursion from the base (a canonical value, cheaper than
     // evaluating each vertex's address), for Morton codes and ties.
     std::vector<glm::dvec3> base_space_;
+    // Per vertex slot: whether its limit is known to be cached (prepare_limit), so that the check
+    // costs a byte rather than a probe of the mesh's limit table.
+    std::vector<std::uint8_t> limit_known_;
     // Candidates by band (the key's top 16 bits), worked off band by band in key order: a band's list
     // is sorted once when its turn comes (sequential, cheap), and the few candidates a split adds to
     // the band being worked off wait in a small heap merged with that list. So every split comes in
@@ -115,6 +121,10 @@ private:
     const Candidate* splitting_ = nullptr;
     std::vector<FaceId> added_faces_;
     std::vector<VertexId> added_vertices_;
+    struct Unkeyed {
+        VertexId v, a, b;  // a new vertex and its parent edge
+    };
+    std::vector<Unkeyed> unkeyed_;
     LodReport report_;
     std::size_t steps_ = 0;
     bool refining_ = false, done_ = false;

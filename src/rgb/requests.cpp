@@ -252,18 +252,22 @@ public:
     // The region all bands lie in (dilated as asked).
     const RegionTest& outer() const { return outer_; }
     int coarsest() const { return *std::min_element(levels_.begin(), levels_.end()); }
-    // The finest (refine) or coarsest (coarsen) level the bands that meet the triangle ask for; the
-    // triangle is computed only if a band needs an exact test.
+    // The finest (refine) or coarsest (coarsen) level the bands that meet the triangle ask for, kNone
+    // if none does (a plain int: this runs for every face a request visits); the triangle is computed
+    // only if a band needs an exact test.
+    static constexpr int kNone = -1;
     template <class Triangle>
-    std::optional<int> level(std::uint32_t base_face, Triangle&& triangle, bool finest) const {
+    int level(std::uint32_t base_face, Triangle&& triangle, bool finest) const {
         std::optional<std::array<SurfacePoint, 3>> computed;
         auto exact = [&]() -> const std::array<SurfacePoint, 3>& {
             if (!computed) computed = triangle();
             return *computed;
         };
-        std::optional<int> best;
+        // One ball (no taper), the common case: its level or none, without the search for the finest.
+        if (tests_.size() == 1) return tests_[0].meets(base_face, exact) ? levels_[0] : kNone;
+        int best = kNone;
         for (std::size_t i = 0; i < tests_.size(); ++i)
-            if ((!best || (finest ? levels_[i] > *best : levels_[i] < *best)) && tests_[i].meets(base_face, exact))
+            if ((best == kNone || (finest ? levels_[i] > best : levels_[i] < best)) && tests_[i].meets(base_face, exact))
                 best = levels_[i];
         return best;
     }
@@ -279,6 +283,17 @@ private:
     std::vector<RegionTest> tests_;
 };
 
+// Room for what the request may add at once (estimated_triangles, an upper estimate), so that a large
+// request does not regrow the arrays on the way; at least double the slots, so that small requests
+// after one another keep the amortised growth of doubling instead of copying the mesh each time.
+void reserve_for(Mesh& mesh, const LevelRequest& request) {
+    const double estimate = estimated_triangles(mesh, request);
+    if (!(estimate > static_cast<double>(mesh.face_capacity()))) return;
+    const std::size_t added = static_cast<std::size_t>(estimate) - mesh.num_faces();
+    mesh.reserve(std::max(mesh.num_faces() + added, 2 * mesh.face_capacity()),
+                 std::max(mesh.num_vertices() + added / 2, 2 * mesh.vertex_capacity()));
+}
+
 // Level by level, like uniform refinement: a request for level N is the requests for levels 1..N in
 // turn (each holds the last's vertices), and this way every split finds the limits of its coarser
 // stencil points already known, computed cheaply while their rings were their neighbours. The region
@@ -291,8 +306,14 @@ void refine_region(Mesh& mesh, const LevelRequest& request, RequestLog& log, std
     for (const LevelBand& band : request.taper) finest = std::max(finest, band.level);
     std::vector<FaceId> pending =
         known ? std::move(*known) : region_faces(mesh, bands.outer(), starting_faces(mesh, bands.outer(), request));
+    reserve_for(mesh, request);
     std::vector<FaceId> stack, next;
     for (int pass = 1; pass <= finest && !pending.empty(); ++pass) {
+        // In slot order (the stack pops from the back), as uniform refinement sweeps: a split's new
+        // faces take the old faces' slots, so neighbours in slot order are neighbours on the surface,
+        // and the pass (its limits first) walks memory forward rather than in the order the last pass
+        // deferred faces (a tenth of the general path's time on a 6k torus to level 4, net of the sort).
+        std::sort(pending.begin(), pending.end(), [](FaceId x, FaceId y) { return x.idx > y.idx; });
         if (pass < finest) {
             vertex_marks.start(mesh.vertex_capacity());
             for (FaceId f : pending)
@@ -306,13 +327,16 @@ void refine_region(Mesh& mesh, const LevelRequest& request, RequestLog& log, std
             const FaceId f = stack.back();
             stack.pop_back();
             if (!mesh.is_live(f) || !face_marks.mark(f.idx)) continue;
-            const std::uint32_t b = base_face_of(mesh, f);
-            const auto target = bands.level(b, [&] { return parent_triangle(mesh, f, b); }, true);
-            if (!target || *target <= mesh.level(f)) continue;
-            if (mesh.level(f) >= pass) {
-                next.push_back(f);
+            // A face this pass cannot refine is judged in the pass that can (if any is left), so that
+            // each face's region test runs once.
+            const int level = mesh.level(f);
+            if (level >= pass) {
+                if (level < finest) next.push_back(f);
                 continue;
             }
+            const std::uint32_t b = base_face_of(mesh, f);
+            const int target = bands.level(b, [&] { return parent_triangle(mesh, f, b); }, true);
+            if (target <= level) continue;  // kNone included
             log.added.clear();
             refine_edge(mesh, edge_refining_face(mesh, f));
             // New faces may reuse slots visited before: they are new faces, so they get visited.
@@ -330,8 +354,8 @@ void refine_region(Mesh& mesh, const LevelRequest& request, RequestLog& log, std
 bool above_its_level(const Mesh& mesh, const Bands& bands, VertexId v) {
     const PointStencil s = parent_stencil(mesh.base(), mesh.address(v));
     for (const SurfacePoint& o : s.opposite) {
-        const auto level = bands.level(o.face, [&] { return std::array<SurfacePoint, 3>{s.ends[0], s.ends[1], o}; }, false);
-        if (level && mesh.level(v) > *level) return true;
+        const int level = bands.level(o.face, [&] { return std::array<SurfacePoint, 3>{s.ends[0], s.ends[1], o}; }, false);
+        if (level != Bands::kNone && mesh.level(v) > level) return true;
     }
     return false;
 }
