@@ -53,16 +53,8 @@ public:
         for (std::size_t b = 0; b < blocks_; ++b) evaluators_.emplace_back(base);
     }
 
-    HierarchyPositions run(std::span<const std::uint8_t> want_limit) {
-        for (std::uint32_t v = 0; v < base_.num_vertices(); ++v) insertion_[v] = base_.position(v);
-        const std::vector<std::uint32_t> order = level_then_face_order(points_, base_.num_faces());
-        for (std::size_t begin = 0, end; begin < order.size(); begin = end) {
-            end = begin;
-            while (end < order.size() && points_[order[end]].level == points_[order[begin]].level) ++end;
-            if (points_[order[begin]].level > 0)
-                in_parallel(std::span<const std::uint32_t>(order).subspan(begin, end - begin),
-                            [&](std::uint32_t v, std::size_t block) { insertion_[v] = insertion_position(points_[v], block); });
-        }
+    HierarchyPositions positions(std::span<const std::uint8_t> want_limit) {
+        const std::vector<std::uint32_t> order = insert_all();
         in_parallel(order, [&](std::uint32_t v, std::size_t block) {
             if (want_limit[v]) limit(v, block);
         });
@@ -73,8 +65,31 @@ public:
         return result;
     }
 
+    std::vector<glm::dvec3> values(std::span<const std::uint8_t> levels) {
+        const std::vector<std::uint32_t> order = insert_all();
+        std::vector<glm::dvec3> result(points_.size());
+        in_parallel(order, [&](std::uint32_t v, std::size_t block) {
+            result[v] = levels[v] == kLimitLevel ? limit(v, block) : control_point(v, levels[v], block);
+        });
+        return result;
+    }
+
 private:
     static constexpr std::uint8_t kClaimed = 1, kKnown = 2;
+
+    // Every vertex's insertion value, coarsest level first; gives the order used.
+    std::vector<std::uint32_t> insert_all() {
+        for (std::uint32_t v = 0; v < base_.num_vertices(); ++v) insertion_[v] = base_.position(v);
+        std::vector<std::uint32_t> order = level_then_face_order(points_, base_.num_faces());
+        for (std::size_t begin = 0, end; begin < order.size(); begin = end) {
+            end = begin;
+            while (end < order.size() && points_[order[end]].level == points_[order[begin]].level) ++end;
+            if (points_[order[begin]].level > 0)
+                in_parallel(std::span<const std::uint32_t>(order).subspan(begin, end - begin),
+                            [&](std::uint32_t v, std::size_t block) { insertion_[v] = insertion_position(points_[v], block); });
+        }
+        return order;
+    }
 
     // f(vertex, block) for each vertex, in blocks_ parallel blocks.
     template <class F>
@@ -175,7 +190,12 @@ private:
 
 HierarchyPositions hierarchy_positions(const BaseMesh& base, std::span<const SurfacePoint> points, const AddressIndex& index,
                                        std::span<const std::uint8_t> want_limit) {
-    return Evaluation(base, points, index).run(want_limit);
+    return Evaluation(base, points, index).positions(want_limit);
+}
+
+std::vector<glm::dvec3> hierarchy_values(const BaseMesh& base, std::span<const SurfacePoint> points, const AddressIndex& index,
+                                         std::span<const std::uint8_t> levels) {
+    return Evaluation(base, points, index).values(levels);
 }
 
 }  // namespace rgb

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "rgb/hierarchy_evaluator.h"
 #include "rgb/loop_geometry.h"
 #include "rgb/mesh.h"
 #include "rgb/operators.h"
@@ -47,15 +48,14 @@ std::vector<glm::dvec3> random_colours(std::size_t n, std::uint32_t seed) {
 
 class VertexChannel : public ::testing::TestWithParam<ChannelCase> {};
 
-TEST_P(VertexChannel, ValuesAreThePositionsOfTheMeshOverTheChannelsBase) {
-    const ChannelCase& c = GetParam();
-    const std::vector<glm::dvec3> colours = random_colours(c.mesh.positions.size(), 7);
-    rgb::Mesh mesh(std::make_shared<const rgb::BaseMesh>(c.mesh.positions, c.mesh.triangles, c.features));
-    rgb::Mesh over_colours(std::make_shared<const rgb::BaseMesh>(colours, c.mesh.triangles, c.features));
+// Uniform refinement to `start_level`, then 300 random splits and removals, the same by slot on
+// `mesh` and `over_colours`; check(step) every 50 steps.
+template <class Check>
+void random_edits(rgb::Mesh& mesh, rgb::Mesh& over_colours, int start_level, const Check& check) {
+    rgb::refine_uniform(mesh, start_level);
+    rgb::refine_uniform(over_colours, start_level);
     std::mt19937 rng(11);
-    std::size_t checks = 0;
     for (int step = 0; step < 300; ++step) {
-        // The same random operator on both, by slot.
         std::vector<rgb::FaceId> faces;
         for (rgb::FaceId f : mesh.faces()) faces.push_back(f);
         const rgb::FaceId f = faces[rng() % faces.size()];
@@ -69,7 +69,17 @@ TEST_P(VertexChannel, ValuesAreThePositionsOfTheMeshOverTheChannelsBase) {
             rgb::remove_vertex(over_colours, v);
         }
         ASSERT_EQ(mesh.num_vertices(), over_colours.num_vertices());
-        if (step % 50 != 49) continue;
+        if (step % 50 == 49) check(step);
+    }
+}
+
+TEST_P(VertexChannel, ValuesAreThePositionsOfTheMeshOverTheChannelsBase) {
+    const ChannelCase& c = GetParam();
+    const std::vector<glm::dvec3> colours = random_colours(c.mesh.positions.size(), 7);
+    rgb::Mesh mesh(std::make_shared<const rgb::BaseMesh>(c.mesh.positions, c.mesh.triangles, c.features));
+    rgb::Mesh over_colours(std::make_shared<const rgb::BaseMesh>(colours, c.mesh.triangles, c.features));
+    std::size_t checks = 0;
+    random_edits(mesh, over_colours, 0, [&](int step) {
         const std::vector<glm::dvec3> displayed = rgb::vertex_channel_values(mesh, colours, rgb::ChannelLevel::Displayed);
         const std::vector<glm::dvec3> limit = rgb::vertex_channel_values(mesh, colours, rgb::ChannelLevel::Limit);
         for (rgb::VertexId w : mesh.vertices()) {
@@ -78,8 +88,33 @@ TEST_P(VertexChannel, ValuesAreThePositionsOfTheMeshOverTheChannelsBase) {
             ASSERT_EQ(limit[w.idx], rgb::limit_position_uncached(over_colours, w)) << "vertex " << w.idx << " step " << step;
             ++checks;
         }
-    }
+    });
     EXPECT_GT(checks, 100u);
+}
+
+// The channel's values come from one linear pass over the vertex set (hierarchy_positions.h); the
+// hierarchy evaluator computes each vertex alone from the base mesh, by the rules of each regime.
+TEST_P(VertexChannel, ValuesAreTheHierarchyEvaluatorsOverTheChannelsBase) {
+    const ChannelCase& c = GetParam();
+    const std::vector<glm::dvec3> colours = random_colours(c.mesh.positions.size(), 5);
+    rgb::Mesh mesh(std::make_shared<const rgb::BaseMesh>(c.mesh.positions, c.mesh.triangles, c.features));
+    rgb::Mesh over_colours(std::make_shared<const rgb::BaseMesh>(colours, c.mesh.triangles, c.features));
+    std::size_t checks = 0, above_own_level = 0;
+    // From level 2: most vertices are then displayed above their own level, by the closed form of §4.2.
+    random_edits(mesh, over_colours, 2, [&](int step) {
+        const std::vector<glm::dvec3> displayed = rgb::vertex_channel_values(mesh, colours, rgb::ChannelLevel::Displayed);
+        const std::vector<glm::dvec3> limit = rgb::vertex_channel_values(mesh, colours, rgb::ChannelLevel::Limit);
+        rgb::HierarchyEvaluator evaluator(over_colours.base());
+        for (rgb::VertexId w : mesh.vertices()) {
+            const int k = rgb::display_level(mesh, w);
+            ASSERT_EQ(displayed[w.idx], evaluator.control_point(mesh.address(w), k)) << "vertex " << w.idx << " step " << step;
+            ASSERT_EQ(limit[w.idx], evaluator.limit_position(mesh.address(w))) << "vertex " << w.idx << " step " << step;
+            above_own_level += k > mesh.level(w);
+            ++checks;
+        }
+    });
+    EXPECT_GT(checks, 100u);
+    EXPECT_GT(above_own_level, 50u);
 }
 
 TEST_P(VertexChannel, PositionsAsAChannelGiveThePositions) {
