@@ -43,4 +43,11 @@ inline constexpr std::uint8_t kLimitLevel = 255;
 std::vector<glm::dvec3> hierarchy_values(const BaseMesh& base, std::span<const SurfacePoint> points, const AddressIndex& index,
                                          std::span<const std::uint8_t> levels);
 
+// Both at once, in one pass (a restored mesh with a vertex channel): hierarchy_positions over `base`,
+// and channel_values = hierarchy_values over `channel` (base's faces and tags, other positions).
+// The neighbours are looked up once for both, so the channel costs its arithmetic only.
+HierarchyPositions hierarchy_positions(const BaseMesh& base, std::span<const SurfacePoint> points, const AddressIndex& index,
+                                       std::span<const std::uint8_t> want_limit, const BaseMesh& channel,
+                                       std::span<const std::uint8_t> channel_levels, std::vector<glm::dvec3>& channel_values);
+
 }  // namespace rgb
