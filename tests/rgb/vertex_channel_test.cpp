@@ -13,6 +13,7 @@
 #include "rgb/mesh.h"
 #include "rgb/operators.h"
 #include "rgb/refine.h"
+#include "rgb/state.h"
 #include "rgb/vertex_channel.h"
 #include "support/test_meshes.h"
 
@@ -115,6 +116,34 @@ TEST_P(VertexChannel, ValuesAreTheHierarchyEvaluatorsOverTheChannelsBase) {
     });
     EXPECT_GT(checks, 100u);
     EXPECT_GT(above_own_level, 50u);
+}
+
+// A saved mesh restored with its channel (rgb::RestoredChannel) gets the channel's values from the
+// restore's own pass; restored vertex i is the i-th live slot (state.h).
+TEST_P(VertexChannel, RestoringWithTheChannelGivesThePositionsOfTheMeshOverTheChannelsBase) {
+    const ChannelCase& c = GetParam();
+    const std::vector<glm::dvec3> colours = random_colours(c.mesh.positions.size(), 3);
+    rgb::Mesh mesh(std::make_shared<const rgb::BaseMesh>(c.mesh.positions, c.mesh.triangles, c.features));
+    rgb::Mesh over_colours(std::make_shared<const rgb::BaseMesh>(colours, c.mesh.triangles, c.features));
+    std::size_t checks = 0;
+    random_edits(mesh, over_colours, 1, [&](int step) {
+        const rgb::MeshState state = rgb::capture_state(mesh);
+        rgb::RestoredChannel displayed{colours, rgb::ChannelLevel::Displayed, {}}, limit{colours, rgb::ChannelLevel::Limit, {}};
+        const rgb::Mesh restored = rgb::restore_state(state, &displayed);
+        rgb::restore_state(state, &limit);
+        ASSERT_EQ(displayed.values.size(), mesh.num_vertices());
+        ASSERT_EQ(limit.values.size(), mesh.num_vertices());
+        std::size_t i = 0;
+        for (rgb::VertexId w : mesh.vertices()) {
+            ASSERT_EQ(displayed.values[i], rgb::displayed_position(over_colours, w)) << "vertex " << w.idx << " step " << step;
+            ASSERT_EQ(limit.values[i], rgb::limit_position_uncached(over_colours, w)) << "vertex " << w.idx << " step " << step;
+            // The positions are the restore's own, whatever channel goes along.
+            ASSERT_EQ(rgb::displayed_position(restored, rgb::VertexId(static_cast<std::uint32_t>(i))), rgb::displayed_position(mesh, w));
+            ++i;
+            ++checks;
+        }
+    });
+    EXPECT_GT(checks, 100u);
 }
 
 TEST_P(VertexChannel, PositionsAsAChannelGiveThePositions) {
