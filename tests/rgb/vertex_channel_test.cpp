@@ -49,10 +49,21 @@ std::vector<glm::dvec3> random_colours(std::size_t n, std::uint32_t seed) {
 
 class VertexChannel : public ::testing::TestWithParam<ChannelCase> {};
 
+// A case's mesh, random colours for its base vertices, and the mesh over a base whose positions are them.
+struct ChannelMeshes {
+    ChannelMeshes(const ChannelCase& c, std::uint32_t seed)
+        : colours(random_colours(c.mesh.positions.size(), seed)),
+          mesh(std::make_shared<const rgb::BaseMesh>(c.mesh.positions, c.mesh.triangles, c.features)),
+          over_colours(std::make_shared<const rgb::BaseMesh>(colours, c.mesh.triangles, c.features)) {}
+    std::vector<glm::dvec3> colours;
+    rgb::Mesh mesh, over_colours;
+};
+
 // Uniform refinement to `start_level`, then 300 random splits and removals, the same by slot on
 // `mesh` and `over_colours`; check(step) every 50 steps.
 template <class Check>
-void random_edits(rgb::Mesh& mesh, rgb::Mesh& over_colours, int start_level, const Check& check) {
+void random_edits(ChannelMeshes& meshes, int start_level, const Check& check) {
+    rgb::Mesh &mesh = meshes.mesh, &over_colours = meshes.over_colours;
     rgb::refine_uniform(mesh, start_level);
     rgb::refine_uniform(over_colours, start_level);
     std::mt19937 rng(11);
@@ -75,12 +86,10 @@ void random_edits(rgb::Mesh& mesh, rgb::Mesh& over_colours, int start_level, con
 }
 
 TEST_P(VertexChannel, ValuesAreThePositionsOfTheMeshOverTheChannelsBase) {
-    const ChannelCase& c = GetParam();
-    const std::vector<glm::dvec3> colours = random_colours(c.mesh.positions.size(), 7);
-    rgb::Mesh mesh(std::make_shared<const rgb::BaseMesh>(c.mesh.positions, c.mesh.triangles, c.features));
-    rgb::Mesh over_colours(std::make_shared<const rgb::BaseMesh>(colours, c.mesh.triangles, c.features));
+    ChannelMeshes meshes(GetParam(), 7);
+    const auto& [colours, mesh, over_colours] = meshes;
     std::size_t checks = 0;
-    random_edits(mesh, over_colours, 0, [&](int step) {
+    random_edits(meshes, 0, [&](int step) {
         const std::vector<glm::dvec3> displayed = rgb::vertex_channel_values(mesh, colours, rgb::ChannelLevel::Displayed);
         const std::vector<glm::dvec3> limit = rgb::vertex_channel_values(mesh, colours, rgb::ChannelLevel::Limit);
         for (rgb::VertexId w : mesh.vertices()) {
@@ -96,13 +105,11 @@ TEST_P(VertexChannel, ValuesAreThePositionsOfTheMeshOverTheChannelsBase) {
 // The channel's values come from one linear pass over the vertex set (hierarchy_positions.h); the
 // hierarchy evaluator computes each vertex alone from the base mesh, by the rules of each regime.
 TEST_P(VertexChannel, ValuesAreTheHierarchyEvaluatorsOverTheChannelsBase) {
-    const ChannelCase& c = GetParam();
-    const std::vector<glm::dvec3> colours = random_colours(c.mesh.positions.size(), 5);
-    rgb::Mesh mesh(std::make_shared<const rgb::BaseMesh>(c.mesh.positions, c.mesh.triangles, c.features));
-    rgb::Mesh over_colours(std::make_shared<const rgb::BaseMesh>(colours, c.mesh.triangles, c.features));
+    ChannelMeshes meshes(GetParam(), 5);
+    const auto& [colours, mesh, over_colours] = meshes;
     std::size_t checks = 0, above_own_level = 0;
     // From level 2: most vertices are then displayed above their own level, by the closed form of §4.2.
-    random_edits(mesh, over_colours, 2, [&](int step) {
+    random_edits(meshes, 2, [&](int step) {
         const std::vector<glm::dvec3> displayed = rgb::vertex_channel_values(mesh, colours, rgb::ChannelLevel::Displayed);
         const std::vector<glm::dvec3> limit = rgb::vertex_channel_values(mesh, colours, rgb::ChannelLevel::Limit);
         rgb::HierarchyEvaluator evaluator(over_colours.base());
@@ -121,12 +128,10 @@ TEST_P(VertexChannel, ValuesAreTheHierarchyEvaluatorsOverTheChannelsBase) {
 // A saved mesh restored with its channel (rgb::RestoredChannel) gets the channel's values from the
 // restore's own pass; restored vertex i is the i-th live slot (state.h).
 TEST_P(VertexChannel, RestoringWithTheChannelGivesThePositionsOfTheMeshOverTheChannelsBase) {
-    const ChannelCase& c = GetParam();
-    const std::vector<glm::dvec3> colours = random_colours(c.mesh.positions.size(), 3);
-    rgb::Mesh mesh(std::make_shared<const rgb::BaseMesh>(c.mesh.positions, c.mesh.triangles, c.features));
-    rgb::Mesh over_colours(std::make_shared<const rgb::BaseMesh>(colours, c.mesh.triangles, c.features));
+    ChannelMeshes meshes(GetParam(), 3);
+    const auto& [colours, mesh, over_colours] = meshes;
     std::size_t checks = 0;
-    random_edits(mesh, over_colours, 1, [&](int step) {
+    random_edits(meshes, 1, [&](int step) {
         const rgb::MeshState state = rgb::capture_state(mesh);
         rgb::RestoredChannel displayed{colours, rgb::ChannelLevel::Displayed, {}}, limit{colours, rgb::ChannelLevel::Limit, {}};
         const rgb::Mesh restored = rgb::restore_state(state, &displayed);
