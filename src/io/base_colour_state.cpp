@@ -4,7 +4,6 @@
 
 #include "io/number_format.h"
 #include "io/state_line_reader.h"
-#include "rgb/vertex_channel.h"
 
 namespace rgbio {
 
@@ -50,17 +49,13 @@ std::vector<glm::dvec3> parse_colour_section(std::span<const ObjStateLine> recor
     return colours;
 }
 
-std::optional<std::string> colour_mismatch(const rgb::Mesh& mesh, std::span<const glm::dvec3> base_colours, const ObjRecords& records,
-                                           bool limit_positions) {
-    const std::vector<glm::dvec3> colours =
-        rgb::vertex_channel_values(mesh, base_colours, limit_positions ? rgb::ChannelLevel::Limit : rgb::ChannelLevel::Displayed);
-    std::size_t line = 0, differing = 0, first = 0;
-    for (rgb::VertexId v : mesh.vertices()) {
-        if (line < records.colours.size() && records.colours[line] != colours[v.idx] && differing++ == 0) first = line;
-        ++line;
-    }
+std::optional<std::string> colour_mismatch(std::span<const glm::dvec3> colours, const ObjRecords& records) {
+    const std::size_t lines = std::min(colours.size(), records.colours.size());
+    std::size_t differing = 0, first = 0;
+    for (std::size_t line = 0; line < lines; ++line)
+        if (records.colours[line] != colours[line] && differing++ == 0) first = line;
     if (differing == 0) return std::nullopt;
-    return std::to_string(differing) + " of " + std::to_string(line) + " vertex colours differ from the ones its base-colours section "
+    return std::to_string(differing) + " of " + std::to_string(colours.size()) + " vertex colours differ from the ones its base-colours section "
            "gives (the first on line " + std::to_string(records.position_lines[first]) + ")";
 }
 

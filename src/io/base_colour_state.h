@@ -18,7 +18,6 @@
 #include <glm/vec3.hpp>
 
 #include "io/obj_parser.h"
-#include "rgb/mesh.h"
 
 namespace rgbio {
 
@@ -32,10 +31,9 @@ void append_colour_section(std::span<const glm::dvec3> colours, std::string& out
 std::vector<glm::dvec3> parse_colour_section(std::span<const ObjStateLine> records, std::size_t announced, std::size_t base_vertices,
                                              const ObjStateLine& section_line, const std::string& file);
 
-// Why the body's vertex colours (records.colours, one per v line: vertex slot i of the restored
-// mesh) differ from those the base colours give at the saved positions' level, or nothing when all
-// agree bit for bit.
-std::optional<std::string> colour_mismatch(const rgb::Mesh& mesh, std::span<const glm::dvec3> base_colours, const ObjRecords& records,
-                                           bool limit_positions);
+// Why the body's vertex colours (records.colours, one per v line) differ from `colours` (one per
+// vertex of the restored mesh, as its base-colours section gives them: rgb::RestoredChannel), or
+// nothing when all agree bit for bit.
+std::optional<std::string> colour_mismatch(std::span<const glm::dvec3> colours, const ObjRecords& records);
 
 }  // namespace rgbio

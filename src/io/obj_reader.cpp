@@ -78,9 +78,15 @@ std::shared_ptr<rgb::Mesh> adaptive_mesh(SavedState& saved, const ObjRecords& re
     // All triangles: their corners are the faces, three by three.
     saved.mesh.faces.resize(records.polygons.size());
     std::memcpy(saved.mesh.faces.data(), corners.data(), corners.size_bytes());
+    // Colours removed elsewhere stay removed; colours changed elsewhere win over the state, as positions do.
+    const bool body_colours =
+        !records.colours.empty() && std::find(records.has_colour.begin(), records.has_colour.end(), 0) == records.has_colour.end();
+    if (!body_colours) saved.colours.clear();
+    // The saved colours are at the positions' level; restored in the positions' pass, for speed.
+    rgb::RestoredChannel colours{saved.colours, saved.limit_positions ? rgb::ChannelLevel::Limit : rgb::ChannelLevel::Displayed, {}};
     std::shared_ptr<rgb::Mesh> mesh;
     try {
-        mesh = std::make_shared<rgb::Mesh>(rgb::restore_state(saved.mesh));
+        mesh = std::make_shared<rgb::Mesh>(rgb::restore_state(saved.mesh, saved.colours.empty() ? nullptr : &colours));
     } catch (const std::invalid_argument& e) {
         reason = std::string("it does not fit the file's faces (") + e.what() + ")";
         return nullptr;
@@ -92,12 +98,8 @@ std::shared_ptr<rgb::Mesh> adaptive_mesh(SavedState& saved, const ObjRecords& re
                  " vertex positions differ from the ones it gives";
         return nullptr;
     }
-    // Colours removed elsewhere stay removed; colours changed elsewhere win over the state, as positions do.
-    const bool body_colours =
-        !records.colours.empty() && std::find(records.has_colour.begin(), records.has_colour.end(), 0) == records.has_colour.end();
-    if (!body_colours) saved.colours.clear();
     if (!saved.colours.empty())
-        if (std::optional<std::string> mismatch = colour_mismatch(*mesh, saved.colours, records, saved.limit_positions)) {
+        if (std::optional<std::string> mismatch = colour_mismatch(colours.values, records)) {
             reason = std::move(*mismatch);
             return nullptr;
         }

@@ -38,24 +38,32 @@ std::vector<std::uint32_t> level_then_face_order(std::span<const SurfacePoint> p
 // Vertices of one level need only coarser values, so each level is computed in parallel. A limit is
 // computed by whichever thread needs it first; one that finds it unclaimed stores it (claim with an
 // atomic flag, publish with a second state), others compute their own copy, which has the same bits.
+// C sets of values at once (bases[c]'s positions; all have the same faces and tags): the lookups of
+// stencils and rings, the costly part, are shared, each value has the bits it has alone.
+template <std::size_t C>
 class Evaluation {
 public:
-    Evaluation(const BaseMesh& base, std::span<const SurfacePoint> points, const AddressIndex& index)
-        : base_(base), points_(points), index_(index), limit_(points.size()),
+    using Values = std::array<glm::dvec3, C>;
+
+    Evaluation(std::array<const BaseMesh*, C> bases, std::span<const SurfacePoint> points, const AddressIndex& index)
+        : bases_(bases), base_(*bases[0]), points_(points), index_(index), limit_(points.size()),
           limit_state_(new std::atomic<std::uint8_t>[points.size()]()), blocks_(parallel_blocks(points.size(), 1 << 14)) {
         insertion_.resize(points.size());
-        if (base.has_sharp_features()) {
+        if (base_.has_sharp_features()) {
             tagged_.resize(points.size());
-            for (std::size_t v = 0; v < points.size(); ++v) tagged_[v] = !follows_untagged_rules(base, points[v]);
+            for (std::size_t v = 0; v < points.size(); ++v) tagged_[v] = !follows_untagged_rules(base_, points[v]);
         }
-        base_gamma_.resize(base.num_vertices());
-        for (std::uint32_t v = 0; v < base.num_vertices(); ++v) base_gamma_[v] = loop_gamma(base.valence(v), base.is_boundary_vertex(v));
-        for (std::size_t b = 0; b < blocks_; ++b) evaluators_.emplace_back(base);
+        base_gamma_.resize(base_.num_vertices());
+        for (std::uint32_t v = 0; v < base_.num_vertices(); ++v) base_gamma_[v] = loop_gamma(base_.valence(v), base_.is_boundary_vertex(v));
+        for (std::size_t b = 0; b < blocks_; ++b)
+            for (std::size_t c = 0; c < C; ++c) evaluators_.emplace_back(*bases[c]);
     }
 
-    HierarchyPositions run(std::span<const std::uint8_t> want_limit) {
-        for (std::uint32_t v = 0; v < base_.num_vertices(); ++v) insertion_[v] = base_.position(v);
-        const std::vector<std::uint32_t> order = level_then_face_order(points_, base_.num_faces());
+    // Every vertex's insertion value, coarsest level first; gives the order used.
+    std::vector<std::uint32_t> insert_all() {
+        for (std::uint32_t v = 0; v < base_.num_vertices(); ++v)
+            for (std::size_t c = 0; c < C; ++c) insertion_[v][c] = bases_[c]->position(v);
+        std::vector<std::uint32_t> order = level_then_face_order(points_, base_.num_faces());
         for (std::size_t begin = 0, end; begin < order.size(); begin = end) {
             end = begin;
             while (end < order.size() && points_[order[end]].level == points_[order[begin]].level) ++end;
@@ -63,18 +71,8 @@ public:
                 in_parallel(std::span<const std::uint32_t>(order).subspan(begin, end - begin),
                             [&](std::uint32_t v, std::size_t block) { insertion_[v] = insertion_position(points_[v], block); });
         }
-        in_parallel(order, [&](std::uint32_t v, std::size_t block) {
-            if (want_limit[v]) limit(v, block);
-        });
-        HierarchyPositions result;
-        result.insertion = std::move(insertion_);
-        for (std::uint32_t v = 0; v < points_.size(); ++v)
-            if (limit_state_[v].load(std::memory_order_relaxed) == kKnown) result.limits.push_back({v, limit_[v]});
-        return result;
+        return order;
     }
-
-private:
-    static constexpr std::uint8_t kClaimed = 1, kKnown = 2;
 
     // f(vertex, block) for each vertex, in blocks_ parallel blocks.
     template <class F>
@@ -85,51 +83,43 @@ private:
                             });
     }
 
-    // Spec §4.4: the odd rule on the vertex's stencil in Σ(l-1).
-    glm::dvec3 insertion_position(const SurfacePoint& p, std::size_t block) {
-        const PointStencil st = parent_stencil(base_, p);
-        const int l = p.level - 1;
-        const glm::dvec3 a = control_point(vertex_at(st.ends[0]), l, block), b = control_point(vertex_at(st.ends[1]), l, block);
-        if (st.boundary || (!tagged_.empty() && inserted_at_midpoint(base_, p))) return boundary_edge_point(a, b);
-        return interior_edge_point(a, b, control_point(vertex_at(st.opposite[0]), l, block),
-                                   control_point(vertex_at(st.opposite[1]), l, block));
-    }
-
-    std::uint32_t vertex_at(const SurfacePoint& p) const {
-        const std::uint32_t v = index_.find(canonical(base_, p));
-        if (v == AddressIndex::kAbsent) throw std::invalid_argument("a vertex's parent triangles are not all present");
-        return v;
-    }
-
     // p^k(v), k >= level(v), by the closed form of spec §4.2. A vertex whose rules the tags change
     // takes it from the evaluator, as loop_geometry does: the same bits as the operators' mesh.
-    glm::dvec3 control_point(std::uint32_t v, int k, std::size_t block) {
+    Values control_point(std::uint32_t v, int k, std::size_t block) {
         const int l = points_[v].level;
         if (k <= l) return insertion_[v];
-        if (is_tagged(v)) return evaluators_[block].control_point(points_[v], k);
+        Values result;
+        if (is_tagged(v)) {
+            for (std::size_t c = 0; c < C; ++c) result[c] = evaluator(block, c).control_point(points_[v], k);
+            return result;
+        }
         const double gamma = v < base_gamma_.size() ? base_gamma_[v] : loop_gamma(6, is_boundary(base_, points_[v]));
-        return closed_form(insertion_[v], limit(v, block), gamma, k - l);
+        const Values limits = limit(v, block);
+        for (std::size_t c = 0; c < C; ++c) result[c] = closed_form(insertion_[v][c], limits[c], gamma, k - l);
+        return result;
     }
 
     // p^inf(v) from its ring at its own level (all coarser or as coarse as v, so known by now). A ring
     // vertex the set lacks (at the edge of a refined region) is computed from the base mesh by the
     // evaluator, which gives the same bits.
-    glm::dvec3 limit(std::uint32_t v, std::size_t block) {
+    Values limit(std::uint32_t v, std::size_t block) {
         if (limit_state_[v].load(std::memory_order_acquire) == kKnown) return limit_[v];
         const SurfacePoint& p = points_[v];
-        const glm::dvec3& centre = insertion_[v];
-        glm::dvec3 value;
+        const Values& centre = insertion_[v];
+        Values value;
         if (is_tagged(v)) {
-            value = evaluators_[block].limit_position(p);
+            for (std::size_t c = 0; c < C; ++c) value[c] = evaluator(block, c).limit_position(p);
         } else if (p.level == 0) {
             const std::vector<std::uint32_t> ring = base_.ring(v);
-            if (base_.is_boundary_vertex(v)) {
-                value = boundary_limit(centre, insertion_[ring.front()], insertion_[ring.back()]);
-            } else {
-                std::vector<glm::dvec3> around;
-                around.reserve(ring.size());
-                for (std::uint32_t u : ring) around.push_back(insertion_[u]);
-                value = interior_limit(centre, around);
+            for (std::size_t c = 0; c < C; ++c) {
+                if (base_.is_boundary_vertex(v)) {
+                    value[c] = boundary_limit(centre[c], insertion_[ring.front()][c], insertion_[ring.back()][c]);
+                } else {
+                    std::vector<glm::dvec3> around;
+                    around.reserve(ring.size());
+                    for (std::uint32_t u : ring) around.push_back(insertion_[u][c]);
+                    value[c] = interior_limit(centre[c], around);
+                }
             }
         } else {
             const auto ring = ring_at_own_level(base_, p);
@@ -142,11 +132,15 @@ private:
                 present = members[r] != AddressIndex::kAbsent;
             }
             if (!present) {
-                value = evaluators_[block].limit_position(p);
+                for (std::size_t c = 0; c < C; ++c) value[c] = evaluator(block, c).limit_position(p);
             } else {
-                std::array<glm::dvec3, 6> around;
+                std::array<Values, 6> around;
                 for (std::size_t r = 0; r < used; ++r) around[r] = control_point(members[r], p.level, block);
-                value = boundary ? boundary_limit(centre, around[0], around[1]) : interior_limit(centre, around);
+                for (std::size_t c = 0; c < C; ++c) {
+                    std::array<glm::dvec3, 6> ring_values;
+                    for (std::size_t r = 0; r < used; ++r) ring_values[r] = around[r][c];
+                    value[c] = boundary ? boundary_limit(centre[c], ring_values[0], ring_values[1]) : interior_limit(centre[c], ring_values);
+                }
             }
         }
         std::uint8_t unclaimed = 0;
@@ -157,25 +151,105 @@ private:
         return value;
     }
 
+    // The limits computed so far, of values set c, by increasing vertex.
+    std::vector<HierarchyPositions::Limit> known_limits(std::size_t c) const {
+        std::vector<HierarchyPositions::Limit> limits;
+        for (std::uint32_t v = 0; v < points_.size(); ++v)
+            if (limit_state_[v].load(std::memory_order_relaxed) == kKnown) limits.push_back({v, limit_[v][c]});
+        return limits;
+    }
+
+    // The insertion values of values set c.
+    std::vector<glm::dvec3> insertions(std::size_t c) const {
+        std::vector<glm::dvec3> values(points_.size());
+        for (std::size_t v = 0; v < points_.size(); ++v) values[v] = insertion_[v][c];
+        return values;
+    }
+
+private:
+    static constexpr std::uint8_t kClaimed = 1, kKnown = 2;
+
+    // Spec §4.4: the odd rule on the vertex's stencil in Σ(l-1).
+    Values insertion_position(const SurfacePoint& p, std::size_t block) {
+        const PointStencil st = parent_stencil(base_, p);
+        const int l = p.level - 1;
+        const Values a = control_point(vertex_at(st.ends[0]), l, block), b = control_point(vertex_at(st.ends[1]), l, block);
+        Values result;
+        if (st.boundary || (!tagged_.empty() && inserted_at_midpoint(base_, p))) {
+            for (std::size_t c = 0; c < C; ++c) result[c] = boundary_edge_point(a[c], b[c]);
+            return result;
+        }
+        const Values d0 = control_point(vertex_at(st.opposite[0]), l, block), d1 = control_point(vertex_at(st.opposite[1]), l, block);
+        for (std::size_t c = 0; c < C; ++c) result[c] = interior_edge_point(a[c], b[c], d0[c], d1[c]);
+        return result;
+    }
+
+    std::uint32_t vertex_at(const SurfacePoint& p) const {
+        const std::uint32_t v = index_.find(canonical(base_, p));
+        if (v == AddressIndex::kAbsent) throw std::invalid_argument("a vertex's parent triangles are not all present");
+        return v;
+    }
+
+    HierarchyEvaluator& evaluator(std::size_t block, std::size_t c) { return evaluators_[block * C + c]; }
+
     bool is_tagged(std::uint32_t v) const { return !tagged_.empty() && tagged_[v]; }
 
-    const BaseMesh& base_;
+    std::array<const BaseMesh*, C> bases_;
+    const BaseMesh& base_;  // bases_[0], for the topology all share
     std::span<const SurfacePoint> points_;
-    std::vector<bool> tagged_;  // per vertex, whether the tags change its rules; empty without tags
     const AddressIndex& index_;
+    std::vector<bool> tagged_;  // per vertex, whether the tags change its rules; empty without tags
     std::vector<double> base_gamma_;
-    std::vector<glm::dvec3> insertion_;
-    std::vector<glm::dvec3> limit_;
+    std::vector<Values> insertion_;
+    std::vector<Values> limit_;
     std::unique_ptr<std::atomic<std::uint8_t>[]> limit_state_;
     std::size_t blocks_;
-    std::vector<HierarchyEvaluator> evaluators_;  // one per block: it caches as it goes
+    std::vector<HierarchyEvaluator> evaluators_;  // C per block (block * C + c): each caches as it goes
 };
+
+// Each vertex's value set c at levels[v] (kLimitLevel: its limit).
+template <std::size_t C>
+std::vector<glm::dvec3> values_at(Evaluation<C>& evaluation, std::span<const std::uint32_t> order, std::span<const std::uint8_t> levels,
+                                  std::size_t c) {
+    std::vector<glm::dvec3> result(levels.size());
+    evaluation.in_parallel(order, [&](std::uint32_t v, std::size_t block) {
+        result[v] = (levels[v] == kLimitLevel ? evaluation.limit(v, block) : evaluation.control_point(v, levels[v], block))[c];
+    });
+    return result;
+}
+
+// The positions' part of the pass: insertion values, and the limits wanted (and any computed on the way).
+template <std::size_t C>
+HierarchyPositions positions(Evaluation<C>& evaluation, std::span<const std::uint32_t> order, std::span<const std::uint8_t> want_limit) {
+    evaluation.in_parallel(order, [&](std::uint32_t v, std::size_t block) {
+        if (want_limit[v]) evaluation.limit(v, block);
+    });
+    return {evaluation.insertions(0), evaluation.known_limits(0)};
+}
 
 }  // namespace
 
 HierarchyPositions hierarchy_positions(const BaseMesh& base, std::span<const SurfacePoint> points, const AddressIndex& index,
                                        std::span<const std::uint8_t> want_limit) {
-    return Evaluation(base, points, index).run(want_limit);
+    Evaluation<1> evaluation({&base}, points, index);
+    const std::vector<std::uint32_t> order = evaluation.insert_all();
+    return positions(evaluation, order, want_limit);
+}
+
+std::vector<glm::dvec3> hierarchy_values(const BaseMesh& base, std::span<const SurfacePoint> points, const AddressIndex& index,
+                                         std::span<const std::uint8_t> levels) {
+    Evaluation<1> evaluation({&base}, points, index);
+    const std::vector<std::uint32_t> order = evaluation.insert_all();
+    return values_at(evaluation, order, levels, 0);
+}
+
+HierarchyPositions hierarchy_positions(const BaseMesh& base, std::span<const SurfacePoint> points, const AddressIndex& index,
+                                       std::span<const std::uint8_t> want_limit, const BaseMesh& channel,
+                                       std::span<const std::uint8_t> channel_levels, std::vector<glm::dvec3>& channel_values) {
+    Evaluation<2> evaluation({&base, &channel}, points, index);
+    const std::vector<std::uint32_t> order = evaluation.insert_all();
+    channel_values = values_at(evaluation, order, channel_levels, 1);
+    return positions(evaluation, order, want_limit);
 }
 
 }  // namespace rgb

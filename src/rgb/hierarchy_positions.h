@@ -1,5 +1,5 @@
 #pragma once
-// The Loop values of a whole vertex set at once (restoring a saved mesh): every vertex's insertion
+// The Loop values of a whole vertex set at once (restoring a saved mesh, a vertex channel's values): every vertex's insertion
 // position p^l, and the limit p^inf of every vertex that some insertion position needs or that the
 // caller asks for, from the vertices' addresses alone. Neighbours are found through an AddressIndex, never by walking a mesh, so the
 // work is a few table lookups per vertex. Every value goes through the formulas of loop_rules.h
@@ -32,5 +32,22 @@ struct HierarchyPositions {
 // vertex set is no RGB mesh: every vertex needs the corners of the triangles around its parent edge).
 HierarchyPositions hierarchy_positions(const BaseMesh& base, std::span<const SurfacePoint> points, const AddressIndex& index,
                                        std::span<const std::uint8_t> want_limit);
+
+// hierarchy_values' level that asks for the limit.
+inline constexpr std::uint8_t kLimitLevel = 255;
+
+// Each vertex's value at levels[i] (p^k for k = levels[i] >= its own level) or, where levels[i] is
+// kLimitLevel, its limit p^inf; the same vertices, bits and failure as hierarchy_positions. The values
+// are those of the base mesh's positions: a base mesh whose positions are a vertex channel's base
+// values (vertex_channel.h) gives that channel's values.
+std::vector<glm::dvec3> hierarchy_values(const BaseMesh& base, std::span<const SurfacePoint> points, const AddressIndex& index,
+                                         std::span<const std::uint8_t> levels);
+
+// Both at once, in one pass (a restored mesh with a vertex channel): hierarchy_positions over `base`,
+// and channel_values = hierarchy_values over `channel` (base's faces and tags, other positions).
+// The neighbours are looked up once for both, so the channel costs its arithmetic only.
+HierarchyPositions hierarchy_positions(const BaseMesh& base, std::span<const SurfacePoint> points, const AddressIndex& index,
+                                       std::span<const std::uint8_t> want_limit, const BaseMesh& channel,
+                                       std::span<const std::uint8_t> channel_levels, std::vector<glm::dvec3>& channel_values);
 
 }  // namespace rgb

@@ -227,13 +227,18 @@ Mesh with_sharp_features(const Mesh& mesh, const SharpFeatures& features) {
 // operators made: faces typed by their place in the hierarchy, insertion positions by the split
 // formula level by level. Every pass is linear (a table of addresses, halfedges grouped by vertex),
 // and the per-face ones run in parallel.
-Mesh restore_state(const MeshState& s) {
+Mesh restore_state(const MeshState& s) { return restore_state(s, nullptr); }
+
+Mesh restore_state(const MeshState& s, RestoredChannel* channel) {
     std::shared_ptr<const BaseMesh> base_mesh;
     try {
         base_mesh = std::make_shared<const BaseMesh>(s.base_positions, s.base_triangles, s.sharp_features);
     } catch (const std::invalid_argument& e) {
         fail(std::string("base mesh: ") + e.what());
     }
+    if (channel && channel->base_values.size() != s.base_positions.size())
+        fail("a vertex channel needs one value per base vertex (" + std::to_string(s.base_positions.size()) + "), not " +
+             std::to_string(channel->base_values.size()));
     const BaseMesh& base = *base_mesh;
     Mesh m(base_mesh);
     const std::size_t n0 = base.num_vertices(), nv = s.vertices.size(), nf = s.faces.size();
@@ -286,15 +291,21 @@ Mesh restore_state(const MeshState& s) {
     // Insertion positions, coarsest first, by the split formula on the (present) parent stencil; and
     // the limits of the vertices displayed above their own level, which a viewer (and the loader's
     // check of a file's positions) needs at once.
-    std::vector<std::uint8_t> displayed_above_own_level(nv);
+    // A channel's levels: where its values are wanted (vertex_channel.h).
+    std::vector<std::uint8_t> displayed_above_own_level(nv), channel_levels(channel ? nv : 0);
     parallel_for(nv, 1 << 15, [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i) {
             const VertexId v(static_cast<std::uint32_t>(i));
-            displayed_above_own_level[i] = display_level(m, v) > m.level(v);
+            const int shown = display_level(m, v);
+            displayed_above_own_level[i] = shown > m.level(v);
+            if (channel) channel_levels[i] = channel->level == ChannelLevel::Limit ? kLimitLevel : static_cast<std::uint8_t>(shown);
         }
     });
     try {
-        HierarchyPositions positions = hierarchy_positions(base, points, *index, displayed_above_own_level);
+        HierarchyPositions positions =
+            channel ? hierarchy_positions(base, points, *index, displayed_above_own_level,
+                                          BaseMesh(channel->base_values, base.faces(), base.sharp_features()), channel_levels, channel->values)
+                    : hierarchy_positions(base, points, *index, displayed_above_own_level);
         m.insertion_position_ = std::move(positions.insertion);
         for (const HierarchyPositions::Limit& l : positions.limits) m.cache_limit(VertexId(l.vertex), l.position);
     } catch (const std::invalid_argument& e) {

@@ -5,12 +5,14 @@
 // Loop value from the base mesh (loop_geometry.h), so a restored mesh has the same vertices, faces and
 // positions bit for bit.
 // Slots are compacted: vertex i of the state is the i-th live vertex slot, base vertices first.
+#include <span>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
 #include "rgb/base_mesh.h"
 #include "rgb/surface_point.h"
+#include "rgb/vertex_channel.h"
 
 namespace rgb {
 
@@ -31,6 +33,17 @@ MeshState capture_state(const Mesh& mesh);
 // size of the state, its passes over all vertices or faces on all cores (parallel.h). The restored
 // mesh has the limits cached that its displayed positions need.
 Mesh restore_state(const MeshState& state);
+
+// A vertex channel (vertex_channel.h) restored with a mesh: the pass that computes the positions
+// gives its values too, at the cost of its arithmetic (the neighbours are looked up once).
+struct RestoredChannel {
+    std::span<const glm::dvec3> base_values;  // one per base vertex
+    ChannelLevel level = ChannelLevel::Displayed;
+    std::vector<glm::dvec3> values;  // set by restore_state: one per vertex of the state, as vertex_channel_values gives them
+};
+// restore_state, and channel->values; channel may be null. Also throws std::invalid_argument if the
+// channel does not have one value per base vertex.
+Mesh restore_state(const MeshState& state, RestoredChannel* channel);
 
 // Gives the mesh's base mesh other crease and corner tags (the editor's crease tool, the CLI's
 // --sharp-angle): the vertex set, the faces and every slot stay, every value follows the new rules

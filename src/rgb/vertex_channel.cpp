@@ -1,11 +1,11 @@
 #include "rgb/vertex_channel.h"
 
-#include <memory>
 #include <stdexcept>
 #include <string>
 
+#include "rgb/address_index.h"
 #include "rgb/base_mesh.h"
-#include "rgb/hierarchy_evaluator.h"
+#include "rgb/hierarchy_positions.h"
 #include "rgb/loop_geometry.h"
 #include "rgb/mesh.h"
 #include "rgb/parallel.h"
@@ -19,21 +19,24 @@ std::vector<glm::dvec3> vertex_channel_values(const Mesh& mesh, std::span<const 
                                     "), not " + std::to_string(base_values.size()));
     // The channel's values stand in for the positions: same faces, same tags, so the same rules.
     const BaseMesh channel(base_values, base.faces(), base.sharp_features());
-    std::vector<glm::dvec3> values(mesh.vertex_capacity(), glm::dvec3(0.0));
-    // Blocks of consecutive slots: vertices made together are neighbours and share the values their
-    // formulas need, which each block's evaluator caches.
-    parallel_for(mesh.vertex_capacity(), std::size_t(1) << 14, [&](std::size_t begin, std::size_t end) {
-        // Its values are only a cache: started afresh when large, so memory stays bounded.
-        constexpr std::size_t kMaxValues = std::size_t(1) << 18;
-        std::unique_ptr<HierarchyEvaluator> evaluator;
+    // The live vertices, numbered densely in slot order; base vertices keep their slots 0..n0-1, as
+    // hierarchy_values needs.
+    std::vector<std::uint32_t> slots;
+    slots.reserve(mesh.num_vertices());
+    for (VertexId v : mesh.vertices()) slots.push_back(v.idx);
+    std::vector<SurfacePoint> points(slots.size());
+    std::vector<std::uint8_t> levels(slots.size());
+    parallel_for(slots.size(), std::size_t(1) << 15, [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i) {
-            const VertexId v(static_cast<std::uint32_t>(i));
-            if (!mesh.is_live(v)) continue;
-            if (!evaluator || evaluator->cached_values() > kMaxValues) evaluator = std::make_unique<HierarchyEvaluator>(channel);
-            const SurfacePoint p = mesh.address(v);
-            values[i] = level == ChannelLevel::Limit ? evaluator->limit_position(p) : evaluator->control_point(p, display_level(mesh, v));
+            const VertexId v(slots[i]);
+            points[i] = mesh.address(v);  // canonical, as the mesh stores them
+            levels[i] = level == ChannelLevel::Limit ? kLimitLevel : static_cast<std::uint8_t>(display_level(mesh, v));
         }
     });
+    // A mesh holds the parent triangles of each of its vertices, so no value is missing.
+    const std::vector<glm::dvec3> dense = hierarchy_values(channel, points, AddressIndex(points, base.num_faces()), levels);
+    std::vector<glm::dvec3> values(mesh.vertex_capacity(), glm::dvec3(0.0));
+    for (std::size_t i = 0; i < slots.size(); ++i) values[slots[i]] = dense[i];
     return values;
 }
 
