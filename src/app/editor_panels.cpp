@@ -4,8 +4,6 @@
 
 #include <algorithm>
 #include <cfloat>
-#include <cmath>
-#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -285,12 +283,8 @@ void status_bar(Editor& editor) {
     std::string work;
     float fraction = -1.0f;
     if (const BackgroundTask* task = editor.file_task()) {
-        work = (task->kind() == BackgroundTask::Kind::Open ? "reading " : "saving ") + task->path();
-        // Reading and writing do not say how far they are: the bar sweeps, the time counts.
-        fraction = static_cast<float>(std::fmod(task->seconds(), 1.5) / 1.5);
-        char seconds[32];
-        std::snprintf(seconds, sizeof seconds, " %.1f s", task->seconds());
-        work += seconds;
+        work = task->status();
+        fraction = static_cast<float>(task->fraction());
     } else if (const MeshJob* job = editor.job()) {
         fraction = job->progress();
         work = job->label() + (editor.jobs_waiting() > 0 ? " (+" + std::to_string(editor.jobs_waiting()) + " waiting)" : "") + ", Esc stops";

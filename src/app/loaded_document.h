@@ -10,6 +10,7 @@
 #include "io/base_attributes.h"
 #include "render/surface_geometry.h"
 #include "rgb/mesh.h"
+#include "rgb/progress.h"
 #include "rgb/uv_layout.h"
 
 namespace app {
@@ -24,7 +25,7 @@ struct LoadedDocument {
 };
 
 // Reads `path` (throws rgbio::ObjError) and builds its geometry at `source` positions, with the
-// file's look (file_appearance.h), and its index.
-LoadedDocument load_document(const std::string& path, render::PositionSource source);
+// file's look (file_appearance.h), and its index. `progress` hears how far it is.
+LoadedDocument load_document(const std::string& path, render::PositionSource source, const rgb::ProgressSpan& progress = {});
 
 }  // namespace app

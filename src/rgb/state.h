@@ -10,6 +10,7 @@
 #include <glm/vec3.hpp>
 
 #include "rgb/base_mesh.h"
+#include "rgb/progress.h"
 #include "rgb/surface_point.h"
 
 namespace rgb {
@@ -29,8 +30,8 @@ MeshState capture_state(const Mesh& mesh);
 // of its base mesh in the normal form the core keeps (io turns that into a file error); the first
 // problem in the order vertices, faces, types, positions, invariants is the one named. Linear in the
 // size of the state, its passes over all vertices or faces on all cores (parallel.h). The restored
-// mesh has the limits cached that its displayed positions need.
-Mesh restore_state(const MeshState& state);
+// mesh has the limits cached that its displayed positions need. `progress` hears of each pass done.
+Mesh restore_state(const MeshState& state, const ProgressSpan& progress = {});
 
 // Gives the mesh's base mesh other crease and corner tags (the editor's crease tool, the CLI's
 // --sharp-angle): the vertex set, the faces and every slot stay, every value follows the new rules
