@@ -153,6 +153,7 @@ std::optional<SurfaceHit> Document::pick(const Ray& ray) { return index_.pick(ge
 
 void Document::replace_mesh(rgb::Mesh mesh) {
     mesh_ = std::move(mesh);  // observers stay with the object
+    app::reserve_room(mesh_, geometry_, index_, kRoomFactor * mesh_.num_faces());
     resync();
 }
 

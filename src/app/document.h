@@ -73,6 +73,10 @@ public:
     UndoHistory& history() { return history_; }
     const UndoHistory& history() const { return history_; }
 
+    // Room for `faces` triangles in the mesh, its geometry and its index (reserve_room): a job that
+    // will grow the mesh reserves its estimate as it starts. Throws std::bad_alloc.
+    void reserve_room(std::size_t faces) { app::reserve_room(mesh_, geometry_, index_, faces); }
+
     // The displayed triangles, brought up to date with the mesh. The renderer draws these too.
     const render::SurfaceGeometry& geometry();
     // Which positions the triangles show (and picking finds).

@@ -16,6 +16,7 @@
 #include "io/atomic_file.h"
 #include "io/obj_error.h"
 #include "rgb/mesh.h"
+#include "rgb/requests.h"
 
 namespace app {
 
@@ -303,6 +304,11 @@ void Editor::start_flood_fill(int level) {
         return;
     }
     keep_recovery_copy(true);
+    try {
+        document_.reserve_room(static_cast<std::size_t>(rgb::estimated_triangles(document_.mesh(), everywhere)));
+    } catch (const std::bad_alloc&) {
+        // No room now: the arrays grow as the job goes, and the job stops cleanly if memory runs out.
+    }
     queue(make_flood_fill(document_.mesh(), level));
 }
 

@@ -13,6 +13,14 @@ constexpr double kRead = 0.86, kGeometryBuilt = 0.94;
 
 }  // namespace
 
+void reserve_room(rgb::Mesh& mesh, render::SurfaceGeometry& geometry, SurfaceIndex& index, std::size_t faces) {
+    // Below the capacity each reserve does nothing.
+    const std::size_t vertices = faces / 2 + mesh.base().num_vertices();
+    mesh.reserve(faces, vertices);
+    geometry.reserve(faces, vertices);
+    index.reserve(faces);
+}
+
 LoadedDocument load_document(const std::string& path, render::PositionSource source, const rgb::ProgressSpan& progress) {
     LoadedDocument loaded{rgb::Mesh(), nullptr, render::SurfaceGeometry(source), SurfaceIndex(), {}, std::nullopt};
     rgbio::LoadedAsset asset = rgbio::load_asset(path, &loaded.warnings, {.progress = progress.part(0.0, kRead)});
@@ -20,6 +28,7 @@ LoadedDocument load_document(const std::string& path, render::PositionSource sou
     loaded.attributes = std::move(asset.attributes);
     loaded.uvs = std::move(asset.uvs);
     loaded.geometry.set_appearance(file_appearance(*loaded.attributes, loaded.mesh.base().num_faces()));
+    reserve_room(loaded.mesh, loaded.geometry, loaded.index, kRoomFactor * loaded.mesh.num_faces());
     loaded.geometry.rebuild(loaded.mesh);
     progress.reach(kGeometryBuilt);
     loaded.index.rebuild(loaded.mesh, loaded.geometry);

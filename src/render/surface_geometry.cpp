@@ -86,6 +86,13 @@ void SurfaceGeometry::resize(const rgb::Mesh& mesh) {
     appearance_vertices_.resize(appearance_ ? slots * 3 : 0);
 }
 
+void SurfaceGeometry::reserve(std::size_t face_slots, std::size_t vertex_slots) {
+    positions_.reserve(vertex_slots);
+    normals_.reserve(vertex_slots);
+    vertices_.reserve(3 * face_slots);
+    if (appearance_) appearance_vertices_.reserve(3 * face_slots);
+}
+
 void SurfaceGeometry::update_position(const rgb::Mesh& mesh, rgb::VertexId v) {
     const glm::dvec3 p = source_ == PositionSource::Limit
                              ? rgb::limit_position(mesh, v)

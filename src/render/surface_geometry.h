@@ -66,6 +66,9 @@ public:
 
     // Recomputes every slot from the mesh.
     void rebuild(const rgb::Mesh& mesh);
+    // Room for this many face and vertex slots, so that a growing mesh does not regrow the arrays
+    // (a copy of hundreds of MB at millions of triangles) in whichever frame crosses the capacity.
+    void reserve(std::size_t face_slots, std::size_t vertex_slots);
     // Recomputes the slots `changes` affects and returns them as sorted, coalesced ranges. The result
     // equals rebuild(mesh) bit for bit.
     std::vector<SlotRange> update(const rgb::Mesh& mesh, const MeshChanges& changes);
