@@ -232,7 +232,7 @@ void statistics_panel(Editor& editor, PanelState& state, double dt_s) {
         for (rgb::FaceId f : mesh.faces()) ++state.faces_per_level[mesh.level(f)];
         state.histogram_age_s = 0.0;
     }
-    const render::SurfaceGeometry& geometry = editor.document().geometry();
+    const render::SurfaceGeometry& geometry = editor.document().shown();
     ImGui::Text("V %zu   F %zu", mesh.num_vertices(), mesh.num_faces());
     ImGui::Text("green %zu  red %zu  blue %zu", geometry.triangles_of(rgb::Colour::Green),
                 geometry.triangles_of(rgb::Colour::Red), geometry.triangles_of(rgb::Colour::Blue));
