@@ -225,7 +225,7 @@ Mesh with_sharp_features(const Mesh& mesh, const SharpFeatures& features) {
 
 // Where restore_state is after each of its passes, as fractions of its time (measured at 1M and 6M
 // triangles; the passes are linear, so the shares hold at any size).
-constexpr double kBaseBuilt = 0.01, kMatched = 0.30, kTyped = 0.42, kPositioned = 0.70, kChecked = 0.90;
+constexpr double kBaseBuilt = 0.01, kMatched = 0.26, kTyped = 0.40, kPositioned = 0.88, kChecked = 0.97;
 
 // Rebuilt into the members the operators use, so the restored mesh is indistinguishable from one the
 // operators made: faces typed by their place in the hierarchy, insertion positions by the split
