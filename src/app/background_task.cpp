@@ -1,5 +1,6 @@
 #include "app/background_task.h"
 
+#include <cmath>
 #include <new>
 #include <thread>
 #include <utility>
@@ -9,6 +10,7 @@
 namespace app {
 
 struct BackgroundTask::Shared {
+    rgb::Progress progress;  // reported by the thread, read by the window
     std::atomic<bool> done{false};
     std::optional<std::string> error;
     std::optional<LoadedDocument> document;
@@ -46,7 +48,7 @@ std::unique_ptr<BackgroundTask> BackgroundTask::open(const std::string& path, re
     std::unique_ptr<BackgroundTask> task(new BackgroundTask(Kind::Open, path));
     start_thread([shared = task->shared_, path, source] {
         try {
-            shared->document.emplace(load_document(path, source));
+            shared->document.emplace(load_document(path, source, rgb::ProgressSpan(&shared->progress)));
         } catch (const std::exception& failure) {
             shared->error = describe(failure);
         }
@@ -57,7 +59,9 @@ std::unique_ptr<BackgroundTask> BackgroundTask::open(const std::string& path, re
 
 std::unique_ptr<BackgroundTask> BackgroundTask::save(rgb::Mesh copy, const std::string& path, const rgbio::SaveOptions& options) {
     std::unique_ptr<BackgroundTask> task(new BackgroundTask(Kind::Save, path));
-    start_thread([shared = task->shared_, mesh = std::move(copy), path, options] {
+    rgbio::SaveOptions watched = options;
+    watched.progress = rgb::ProgressSpan(&task->shared_->progress);
+    start_thread([shared = task->shared_, mesh = std::move(copy), path, options = std::move(watched)] {
         try {
             rgbio::save_mesh_file(mesh, path, options);
         } catch (const std::exception& failure) {
@@ -69,6 +73,13 @@ std::unique_ptr<BackgroundTask> BackgroundTask::save(rgb::Mesh copy, const std::
 }
 
 double BackgroundTask::seconds() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
+
+double BackgroundTask::fraction() const { return done() ? 1.0 : shared_->progress.fraction(); }
+
+std::string BackgroundTask::status() const {
+    const int percent = static_cast<int>(std::floor(100.0 * fraction()));
+    return (kind_ == Kind::Open ? "Opening " : "Saving ") + path_ + ": " + std::to_string(percent) + "%";
+}
 
 bool BackgroundTask::done() const { return shared_->done.load(std::memory_order_acquire); }
 

@@ -12,6 +12,7 @@
 
 #include "app/loaded_document.h"
 #include "io/mesh_file.h"
+#include "rgb/progress.h"
 
 namespace app {
 
@@ -33,6 +34,10 @@ public:
     Kind kind() const { return kind_; }
     const std::string& path() const { return path_; }
     double seconds() const;
+    // How far the reading or writing is, in [0, 1], never decreasing; 1 once done.
+    double fraction() const;
+    // "Opening PATH: 43%" or "Saving PATH: 43%", for the status line.
+    std::string status() const;
     bool done() const;
     // Once done: the failure, if it failed ("FILE:LINE: problem" for a file that cannot be read).
     const std::optional<std::string>& error() const;

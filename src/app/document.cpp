@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <span>
 #include <utility>
 
 #include "io/gltf_export.h"
@@ -24,6 +25,7 @@ void Document::adopt(LoadedDocument loaded, std::string path, bool dirty) {
     mesh_ = std::move(loaded.mesh);  // observers stay with the object
     attributes_ = std::move(loaded.attributes);
     changes_->clear();
+    faces_caught_up_ = vertices_caught_up_ = 0;
     geometry_ = std::move(loaded.geometry);
     index_ = std::move(loaded.index);
     uv_channel_ = std::move(loaded.uvs);
@@ -118,14 +120,55 @@ void Document::set_sharp_features(const rgb::SharpFeatures& features, std::strin
 }
 
 const render::SurfaceGeometry& Document::geometry() {
-    if (!changes_->empty()) {
-        const std::vector<render::SlotRange> ranges = geometry_.update(mesh_, *changes_);
-        changes_->clear();
-        index_.update(geometry_, ranges);
-        if (!display_changes_.rebuilt)
-            display_changes_.ranges.insert(display_changes_.ranges.end(), ranges.begin(), ranges.end());
+    while (!catch_up_part()) {
     }
     return geometry_;
+}
+
+bool Document::catch_up_display(std::chrono::microseconds budget) {
+    const auto deadline = std::chrono::steady_clock::now() + budget;
+    while (!catch_up_part())
+        if (std::chrono::steady_clock::now() >= deadline) return false;
+    return true;
+}
+
+namespace {
+
+// Changed face slots a part takes (with the same share of the moved vertices): a few milliseconds.
+constexpr std::size_t kDisplayPartFaces = std::size_t(1) << 13;
+
+}  // namespace
+
+bool Document::display_behind() const {
+    return changes_->everything() || changes_->changed_faces().size() - faces_caught_up_ > kDisplayPartFaces;
+}
+
+bool Document::catch_up_part() {
+    if (changes_->empty()) return true;
+    std::vector<render::SlotRange> ranges;
+    const std::span<const rgb::FaceId> faces = changes_->changed_faces();
+    const std::span<const rgb::VertexId> vertices = changes_->moved_vertices();
+    if (changes_->everything()) {
+        ranges = geometry_.update(mesh_, *changes_);
+        faces_caught_up_ = faces.size();
+        vertices_caught_up_ = vertices.size();
+    } else {
+        // The moved vertices in the same proportion as the faces (each added face lists its three).
+        const std::size_t face_end = std::min(faces.size(), faces_caught_up_ + kDisplayPartFaces);
+        const std::size_t vertex_end =
+            face_end == faces.size() ? vertices.size()
+                                     : std::max(vertices_caught_up_, std::min(vertices.size(), vertices.size() * face_end / faces.size()));
+        ranges = geometry_.update_part(mesh_, faces.subspan(faces_caught_up_, face_end - faces_caught_up_),
+                                  vertices.subspan(vertices_caught_up_, vertex_end - vertices_caught_up_));
+        faces_caught_up_ = face_end;
+        vertices_caught_up_ = vertex_end;
+    }
+    index_.update(geometry_, ranges);
+    if (!display_changes_.rebuilt) display_changes_.ranges.insert(display_changes_.ranges.end(), ranges.begin(), ranges.end());
+    if (faces_caught_up_ < faces.size() || vertices_caught_up_ < vertices.size()) return false;
+    changes_->clear();
+    faces_caught_up_ = vertices_caught_up_ = 0;
+    return true;
 }
 
 void Document::set_position_source(render::PositionSource source) {
@@ -153,11 +196,13 @@ std::optional<SurfaceHit> Document::pick(const Ray& ray) { return index_.pick(ge
 
 void Document::replace_mesh(rgb::Mesh mesh) {
     mesh_ = std::move(mesh);  // observers stay with the object
+    app::reserve_room(mesh_, geometry_, index_, kRoomFactor * mesh_.num_faces());
     resync();
 }
 
 void Document::resync() {
     changes_->clear();
+    faces_caught_up_ = vertices_caught_up_ = 0;
     geometry_.rebuild(mesh_);
     index_.rebuild(mesh_, geometry_);
     display_changes_ = DisplayChanges{{}, true};

@@ -16,6 +16,7 @@
 #include "io/atomic_file.h"
 #include "io/obj_error.h"
 #include "rgb/mesh.h"
+#include "rgb/requests.h"
 
 namespace app {
 
@@ -154,9 +155,10 @@ void Editor::update(std::chrono::microseconds job_slice) {
     }
     timing_.frame_ms = milliseconds_since(start);
     timing_.frame_operations = operations;
-    // The picking geometry and index catch up here rather than in the next pick.
+    // The picking geometry and index catch up here rather than in the next pick, within what is
+    // left of the slice (but a few milliseconds at least, so that they keep up with the work).
     const auto catch_up = std::chrono::steady_clock::now();
-    document_.geometry();
+    document_.catch_up_display(std::max(std::chrono::duration_cast<std::chrono::microseconds>(deadline - catch_up), kMinDisplaySlice));
     timing_.geometry_ms = milliseconds_since(catch_up);
     keep_recovery_copy(false);
 }
@@ -203,7 +205,9 @@ double Editor::brush_world_radius(const glm::dvec3& at) const {
 }
 
 std::optional<SurfaceHit> Editor::cursor_hit() {
-    cursor_hit_ = pick(mouse_);
+    // No brush circle while the display catches up with a large change: picking now would do all of
+    // the catching up in this frame.
+    cursor_hit_ = document_.display_behind() ? std::nullopt : pick(mouse_);
     return cursor_hit_;
 }
 
@@ -303,6 +307,11 @@ void Editor::start_flood_fill(int level) {
         return;
     }
     keep_recovery_copy(true);
+    try {
+        document_.reserve_room(static_cast<std::size_t>(rgb::estimated_triangles(document_.mesh(), everywhere)));
+    } catch (const std::bad_alloc&) {
+        // No room now: the arrays grow as the job goes, and the job stops cleanly if memory runs out.
+    }
     queue(make_flood_fill(document_.mesh(), level));
 }
 

@@ -64,6 +64,10 @@ struct EngineTiming {
     std::size_t dabs = 0;
 };
 
+// The least time a frame gives the display to catch up with the mesh (Document::catch_up_display),
+// so that it keeps up with work that takes the whole slice.
+inline constexpr std::chrono::microseconds kMinDisplaySlice{4000};
+
 // The side panel's width in pixels (editor_panels.cpp), and what it covers of the viewport with its
 // margin: the window and headless frames tell the editor (set_covered_right) so that framing keeps
 // the mesh clear of it.

@@ -4,8 +4,6 @@
 
 #include <algorithm>
 #include <cfloat>
-#include <cmath>
-#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -234,7 +232,7 @@ void statistics_panel(Editor& editor, PanelState& state, double dt_s) {
         for (rgb::FaceId f : mesh.faces()) ++state.faces_per_level[mesh.level(f)];
         state.histogram_age_s = 0.0;
     }
-    const render::SurfaceGeometry& geometry = editor.document().geometry();
+    const render::SurfaceGeometry& geometry = editor.document().shown();
     ImGui::Text("V %zu   F %zu", mesh.num_vertices(), mesh.num_faces());
     ImGui::Text("green %zu  red %zu  blue %zu", geometry.triangles_of(rgb::Colour::Green),
                 geometry.triangles_of(rgb::Colour::Red), geometry.triangles_of(rgb::Colour::Blue));
@@ -285,12 +283,8 @@ void status_bar(Editor& editor) {
     std::string work;
     float fraction = -1.0f;
     if (const BackgroundTask* task = editor.file_task()) {
-        work = (task->kind() == BackgroundTask::Kind::Open ? "reading " : "saving ") + task->path();
-        // Reading and writing do not say how far they are: the bar sweeps, the time counts.
-        fraction = static_cast<float>(std::fmod(task->seconds(), 1.5) / 1.5);
-        char seconds[32];
-        std::snprintf(seconds, sizeof seconds, " %.1f s", task->seconds());
-        work += seconds;
+        work = task->status();
+        fraction = static_cast<float>(task->fraction());
     } else if (const MeshJob* job = editor.job()) {
         fraction = job->progress();
         work = job->label() + (editor.jobs_waiting() > 0 ? " (+" + std::to_string(editor.jobs_waiting()) + " waiting)" : "") + ", Esc stops";

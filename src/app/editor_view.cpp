@@ -10,9 +10,10 @@ void EditorView::draw(Editor& editor, glm::ivec2 framebuffer, double dt_s, bool 
     Document& document = editor.document();
     draw_panels(editor, panels_, options_, dt_s);
     options_.bottom_inset_px = kStatusBarHeight;
-    // The document's displayed triangles, which picking uses too: the renderer uploads what changed.
+    // The document's displayed triangles as far as they have caught up (Editor::update), which
+    // picking uses too: the renderer uploads what changed.
     document.set_position_source(options_.positions);
-    const render::SurfaceGeometry& geometry = document.geometry();
+    const render::SurfaceGeometry& geometry = document.shown();
     const Document::DisplayChanges changes = document.take_display_changes();
     renderer_.show(document.mesh(), geometry, changes.ranges, changes.rebuilt);
 

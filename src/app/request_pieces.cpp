@@ -12,24 +12,6 @@
 namespace app {
 namespace {
 
-// The base faces the request may touch: those its outermost ball meets (every base face without a
-// ball), within its own restriction if it has one. Sorted.
-std::vector<std::uint32_t> base_faces_of(const rgb::Mesh& mesh, const rgb::LevelRequest& request) {
-    std::vector<std::uint32_t> faces;
-    if (request.sphere) {
-        double radius = request.sphere->radius;
-        for (const rgb::LevelBand& band : request.taper) radius = std::max(radius, band.radius);
-        faces = mesh.base().face_index().faces_meeting_sphere(request.sphere->centre, radius);
-    } else {
-        faces.resize(mesh.base().num_faces());
-        for (std::uint32_t f = 0; f < faces.size(); ++f) faces[f] = f;
-    }
-    if (request.base_faces.empty()) return faces;
-    std::vector<std::uint32_t> allowed;
-    std::set_intersection(faces.begin(), faces.end(), request.base_faces.begin(), request.base_faces.end(), std::back_inserter(allowed));
-    return allowed;
-}
-
 // Triangles a refine request may add (rgb::estimated_triangles).
 double added(const rgb::Mesh& mesh, const rgb::LevelRequest& request) {
     return request.kind == rgb::RequestKind::Coarsen ? 0.0 : rgb::estimated_triangles(mesh, request) - static_cast<double>(mesh.num_faces());
@@ -62,7 +44,7 @@ double expected_work(const rgb::Mesh& mesh, const rgb::LevelRequest& request) {
 
 // `request` over consecutive batches of its base faces, each of about `per_piece` expected work.
 void append_batches(const rgb::Mesh& mesh, const rgb::LevelRequest& request, double per_piece, std::vector<rgb::LevelRequest>& out) {
-    const std::vector<std::uint32_t> faces = base_faces_of(mesh, request);
+    const std::vector<std::uint32_t> faces = request_base_faces(mesh, request);
     if (faces.empty()) return;
     const double work = expected_work(mesh, request);
     const auto batches = static_cast<std::size_t>(std::clamp(std::ceil(work / per_piece), 1.0, static_cast<double>(faces.size())));
@@ -110,6 +92,22 @@ std::vector<rgb::LevelRequest> pieces_of(const rgb::Mesh& mesh, const rgb::Level
 }
 
 }  // namespace
+
+std::vector<std::uint32_t> request_base_faces(const rgb::Mesh& mesh, const rgb::LevelRequest& request) {
+    std::vector<std::uint32_t> faces;
+    if (request.sphere) {
+        double radius = request.sphere->radius;
+        for (const rgb::LevelBand& band : request.taper) radius = std::max(radius, band.radius);
+        faces = mesh.base().face_index().faces_meeting_sphere(request.sphere->centre, radius);
+    } else {
+        faces.resize(mesh.base().num_faces());
+        for (std::uint32_t f = 0; f < faces.size(); ++f) faces[f] = f;
+    }
+    if (request.base_faces.empty()) return faces;
+    std::vector<std::uint32_t> allowed;
+    std::set_intersection(faces.begin(), faces.end(), request.base_faces.begin(), request.base_faces.end(), std::back_inserter(allowed));
+    return allowed;
+}
 
 std::vector<rgb::LevelRequest> dab_pieces(const rgb::Mesh& mesh, const rgb::Dab& dab, int from_level, double piece_triangles) {
     // What apply_dab does nothing for.

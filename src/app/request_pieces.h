@@ -7,6 +7,7 @@
 //     the batches together ask all of it;
 //   - a set request is its coarsen part, then its refine part.
 // Pieces of one kind commute, so the pieces in order give the identical mesh to the request whole.
+#include <cstdint>
 #include <vector>
 
 #include "rgb/dab.h"
@@ -26,6 +27,11 @@ inline constexpr double kPieceTriangles = 8192.0;
 // no pieces of their own; that changes the slicing only, never the result.
 std::vector<rgb::LevelRequest> dab_pieces(const rgb::Mesh& mesh, const rgb::Dab& dab, int from_level,
                                           double piece_triangles = kPieceTriangles);
+
+// The base faces a request may touch: those its outermost ball meets (every base face without a
+// ball), within its own restriction if it has one; sorted. The request restricted to any partition
+// of them, piece by piece, gives the mesh of the request whole.
+std::vector<std::uint32_t> request_base_faces(const rgb::Mesh& mesh, const rgb::LevelRequest& request);
 
 // The pieces of "every face to level N", the levels below the mesh's coarsest face skipped.
 std::vector<rgb::LevelRequest> set_all_pieces(const rgb::Mesh& mesh, int level, double piece_triangles = kPieceTriangles);

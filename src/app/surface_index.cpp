@@ -50,6 +50,11 @@ void SurfaceIndex::rebuild(const rgb::Mesh& mesh, const render::SurfaceGeometry&
     for (std::uint32_t slot = 0; slot < geometry.face_slots(); ++slot) place(slot, placement(geometry, slot));
 }
 
+void SurfaceIndex::reserve(std::size_t face_slots) {
+    placements_.reserve(face_slots);
+    refs_.reserve(2 * face_slots);  // a triangle sits in one to four cells, mostly one or two
+}
+
 void SurfaceIndex::update(const render::SurfaceGeometry& geometry, std::span<const render::SlotRange> ranges) {
     const auto slots = static_cast<std::uint32_t>(geometry.face_slots());
     for (auto slot = static_cast<std::uint32_t>(placements_.size()); slot-- > slots;) place(slot, kNowhere);

@@ -31,6 +31,8 @@ public:
     void rebuild(const rgb::Mesh& mesh, const render::SurfaceGeometry& geometry);
     // Re-places the slots in `ranges` (what SurfaceGeometry::update returned).
     void update(const render::SurfaceGeometry& geometry, std::span<const render::SlotRange> ranges);
+    // Room for this many face slots (as SurfaceGeometry::reserve).
+    void reserve(std::size_t face_slots);
 
     // The nearest front-facing triangle along the ray.
     std::optional<SurfaceHit> pick(const render::SurfaceGeometry& geometry, const Ray& ray) const;

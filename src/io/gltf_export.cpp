@@ -70,8 +70,12 @@ void export_gltf(const rgb::Mesh& mesh, const std::string& path, const SaveOptio
 }
 
 void save_mesh_file(const rgb::Mesh& mesh, const std::string& path, const SaveOptions& options) {
-    if (is_gltf_path(path)) export_gltf(mesh, path, options);
-    else save_mesh(mesh, path, options);
+    if (is_gltf_path(path)) {
+        export_gltf(mesh, path, options);
+        options.progress.done();  // glTF is written in one piece: no progress before the end
+    } else {
+        save_mesh(mesh, path, options);
+    }
 }
 
 }  // namespace rgbio

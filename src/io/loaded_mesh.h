@@ -18,14 +18,18 @@
 #include <glm/vec3.hpp>
 
 #include "rgb/mesh.h"
+#include "rgb/progress.h"
 #include "rgb/uv_layout.h"
 
 namespace rgbio {
 
-// How strictly to read a file.
+// How to read a file: how strictly, and who watches.
 struct ReadOptions {
     // Refuse non-manifold edges and vertices (ObjError) instead of cutting them apart.
     bool strict = false;
+    // Told how far the reading is: bytes read and parsed, then the saved state restored (faces
+    // typed, positions computed, checked).
+    rgb::ProgressSpan progress = {};
 };
 
 // "No entry": a corner without a texture coordinate, a face before any usemtl/g/o line.

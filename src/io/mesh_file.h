@@ -13,6 +13,7 @@
 #include "io/base_attributes.h"
 #include "io/loaded_mesh.h"
 #include "rgb/mesh.h"
+#include "rgb/progress.h"
 #include "rgb/uv_layout.h"
 
 namespace rgbio {
@@ -41,6 +42,8 @@ struct SaveOptions {
     // the libraries, and texture coordinates and colours while the mesh is at level 0
     // (dropped_attributes says what a refined mesh leaves out). Null: none.
     std::shared_ptr<const BaseAttributes> attributes = nullptr;
+    // Told how far the writing is: vertices, then faces, then the state's vertices written.
+    rgb::ProgressSpan progress = {};
 };
 
 // The file content. The mesh is not modified (limit positions may be cached, see loop_geometry.h).

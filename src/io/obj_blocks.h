@@ -31,6 +31,8 @@ void append_records(ObjRecords& into, const ObjRecords& block);
 
 // parse_obj's work after its checks of the whole text: the lines read in `count` blocks on as many
 // threads (one block: in one piece). The result and any error are the same for every count.
-ObjRecords parse_obj_in_blocks(std::string_view text, const std::string& file, std::size_t count);
+// `progress` hears of the bytes parsed.
+ObjRecords parse_obj_in_blocks(std::string_view text, const std::string& file, std::size_t count,
+                               const rgb::ProgressSpan& progress = {});
 
 }  // namespace rgbio

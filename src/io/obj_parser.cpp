@@ -351,16 +351,28 @@ void SkippedLines::add(std::size_t line, std::string_view keyword) {
 
 namespace {
 
+// Lines between two reports of the bytes parsed: a report costs about what parsing a line does.
+constexpr std::size_t kLinesPerReport = 4096;
+
 // The lines of `text`, which come after `before`; `room` (if known): what the records are to hold
-// in the end (the whole file's counts), reserved at once.
-ObjRecords parse_lines(std::string_view text, const LinesBefore& before, const std::string& file, const LinesBefore& room = {}) {
+// in the end (the whole file's counts), reserved at once. Each byte parsed is added to `parsed`.
+ObjRecords parse_lines(std::string_view text, const LinesBefore& before, const std::string& file, const LinesBefore& room = {},
+                       rgb::ProgressCounter* parsed = nullptr) {
     ObjRecords records;
     records.positions.reserve(room.positions);
     records.position_lines.reserve(room.positions);
     records.texcoords.reserve(room.texcoords);
     records.polygons.reserve(room.faces, 3 * room.faces);  // exact for triangles
     LineParser parser(file, records, before);
-    for_each_line(text, [&](std::size_t line, std::string_view content) { parser.parse(line, content); });
+    const char* reported = text.data();
+    for_each_line(text, [&](std::size_t line, std::string_view content) {
+        parser.parse(line, content);
+        if (parsed && line % kLinesPerReport == 0) {
+            parsed->add(static_cast<std::uint64_t>(content.data() - reported));
+            reported = content.data();
+        }
+    });
+    if (parsed) parsed->add(static_cast<std::uint64_t>(text.data() + text.size() - reported));
     return records;
 }
 
@@ -385,11 +397,17 @@ LinesBefore summarize_lines(std::string_view text) {
 // Below this many bytes per thread, starting threads costs more than it saves.
 constexpr std::size_t kBlockBytes = std::size_t(4) << 20;
 
+// The share of parsing's time the first pass over the blocks (what each defines) takes.
+constexpr double kSummarized = 0.12;
+
 }  // namespace
 
-ObjRecords parse_obj_in_blocks(std::string_view text, const std::string& file, std::size_t count) {
+ObjRecords parse_obj_in_blocks(std::string_view text, const std::string& file, std::size_t count, const rgb::ProgressSpan& progress) {
     const std::vector<std::string_view> blocks = line_blocks(text, count);
-    if (blocks.size() <= 1) return parse_lines(text, {}, file);
+    if (blocks.size() <= 1) {
+        rgb::ProgressCounter parsed(progress, text.size());
+        return parse_lines(text, {}, file, {}, &parsed);
+    }
     // Each block is parsed knowing what the blocks before it define; that takes a quick pass over
     // them first, itself in parallel. The first block's records, which the others join, are sized
     // for the whole file at once.
@@ -398,11 +416,13 @@ ObjRecords parse_obj_in_blocks(std::string_view text, const std::string& file, s
                              [&](std::size_t b, std::size_t, std::size_t) { summaries[b] = summarize_lines(blocks[b]); });
     std::vector<LinesBefore> before(blocks.size() + 1);
     for (std::size_t b = 1; b <= blocks.size(); ++b) before[b] = before[b - 1].then(summaries[b - 1]);
-    std::vector<ObjRecords> parsed(blocks.size());
+    progress.reach(kSummarized);
+    rgb::ProgressCounter parsed(progress.part(kSummarized, 1.0), text.size());
+    std::vector<ObjRecords> records_of(blocks.size());
     std::vector<std::uint8_t> failed(blocks.size(), 0);
     rgb::parallel_blocks_for(blocks.size(), blocks.size(), [&](std::size_t b, std::size_t, std::size_t) {
         try {
-            parsed[b] = parse_lines(blocks[b], before[b], file, b == 0 ? before.back() : LinesBefore{});
+            records_of[b] = parse_lines(blocks[b], before[b], file, b == 0 ? before.back() : LinesBefore{}, &parsed);
         } catch (const ObjError&) {
             if (b == 0) throw;
             failed[b] = 1;
@@ -411,17 +431,18 @@ ObjRecords parse_obj_in_blocks(std::string_view text, const std::string& file, s
     // A later block's error message may depend on lines before it (the hint about unknown keywords
     // before a bad index): the whole text, read in one piece, says it exactly as usual.
     if (std::find(failed.begin(), failed.end(), 1) != failed.end()) return parse_lines(text, {}, file);
-    ObjRecords records = std::move(parsed[0]);
-    for (std::size_t b = 1; b < blocks.size(); ++b) append_records(records, parsed[b]);
+    ObjRecords records = std::move(records_of[0]);
+    for (std::size_t b = 1; b < blocks.size(); ++b) append_records(records, records_of[b]);
+    progress.done();
     return records;
 }
 
-ObjRecords parse_obj(std::string_view text, const std::string& file) {
+ObjRecords parse_obj(std::string_view text, const std::string& file, const rgb::ProgressSpan& progress) {
     if (text.starts_with("\xef\xbb\xbf")) text.remove_prefix(3);  // UTF-8 byte order mark
     check_encoding(text, file);
     if (text.size() >= std::numeric_limits<std::uint32_t>::max())
         throw ObjError(ObjProblem::Unreadable, file, 0, "the file is larger than 4 GiB");
-    return parse_obj_in_blocks(text, file, rgb::parallel_blocks(text.size(), kBlockBytes));
+    return parse_obj_in_blocks(text, file, rgb::parallel_blocks(text.size(), kBlockBytes), progress);
 }
 
 }  // namespace rgbio

@@ -21,6 +21,7 @@
 #include <glm/vec3.hpp>
 
 #include "io/loaded_mesh.h"
+#include "rgb/progress.h"
 
 namespace rgbio {
 
@@ -131,7 +132,8 @@ struct ObjRecords {
 };
 
 // Throws ObjError (Empty, Binary, Utf16, Syntax, FaceIndexZero, FaceIndexOutOfRange,
-// NonFiniteCoordinate, AbsurdCoordinate). `file` is only used in messages.
-ObjRecords parse_obj(std::string_view text, const std::string& file);
+// NonFiniteCoordinate, AbsurdCoordinate). `file` is only used in messages; `progress` hears of the
+// bytes parsed.
+ObjRecords parse_obj(std::string_view text, const std::string& file, const rgb::ProgressSpan& progress = {});
 
 }  // namespace rgbio

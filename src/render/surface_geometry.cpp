@@ -86,6 +86,13 @@ void SurfaceGeometry::resize(const rgb::Mesh& mesh) {
     appearance_vertices_.resize(appearance_ ? slots * 3 : 0);
 }
 
+void SurfaceGeometry::reserve(std::size_t face_slots, std::size_t vertex_slots) {
+    positions_.reserve(vertex_slots);
+    normals_.reserve(vertex_slots);
+    vertices_.reserve(3 * face_slots);
+    if (appearance_) appearance_vertices_.reserve(3 * face_slots);
+}
+
 void SurfaceGeometry::update_position(const rgb::Mesh& mesh, rgb::VertexId v) {
     const glm::dvec3 p = source_ == PositionSource::Limit
                              ? rgb::limit_position(mesh, v)
@@ -176,10 +183,20 @@ std::vector<SlotRange> SurfaceGeometry::update(const rgb::Mesh& mesh, const Mesh
         rebuild(mesh);
         return {SlotRange{0, static_cast<std::uint32_t>(face_slots())}};
     }
+    return update_lists(mesh, changes.changed_faces(), changes.moved_vertices(), false);
+}
+
+std::vector<SlotRange> SurfaceGeometry::update_part(const rgb::Mesh& mesh, std::span<const rgb::FaceId> changed_faces,
+                                                    std::span<const rgb::VertexId> moved_vertices) {
+    return update_lists(mesh, changed_faces, moved_vertices, true);
+}
+
+std::vector<SlotRange> SurfaceGeometry::update_lists(const rgb::Mesh& mesh, std::span<const rgb::FaceId> changed_faces,
+                                                     std::span<const rgb::VertexId> moved_vertices, bool part) {
     resize(mesh);
     vertex_marks_.start();
     std::vector<rgb::VertexId> moved;
-    for (rgb::VertexId v : changes.moved_vertices())
+    for (rgb::VertexId v : moved_vertices)
         if (mesh.is_live(v) && vertex_marks_.mark(v.idx)) moved.push_back(v);
     for (rgb::VertexId v : moved) update_position(mesh, v);
 
@@ -200,9 +217,17 @@ std::vector<SlotRange> SurfaceGeometry::update(const rgb::Mesh& mesh, const Mesh
     auto add_dirty = [&](rgb::FaceId f) {
         if (f.idx < mesh.face_capacity() && face_marks_.mark(f.idx)) dirty.push_back(f);
     };
-    for (rgb::FaceId f : changes.changed_faces()) add_dirty(f);
+    for (rgb::FaceId f : changed_faces) add_dirty(f);
     for (rgb::VertexId v : renormal) for_each_face_around(mesh, v, add_dirty);
     std::sort(dirty.begin(), dirty.end());
+    if (part) {
+        vertex_marks_.start();
+        for (rgb::VertexId v : moved) vertex_marks_.mark(v.idx);
+        for (rgb::FaceId f : dirty)
+            if (mesh.is_live(f))
+                for (rgb::VertexId u : mesh.face_vertices(f))
+                    if (vertex_marks_.mark(u.idx)) update_position(mesh, u);
+    }
     for (rgb::FaceId f : dirty) write_slot(mesh, f);
     return coalesce(dirty);
 }

@@ -66,9 +66,19 @@ public:
 
     // Recomputes every slot from the mesh.
     void rebuild(const rgb::Mesh& mesh);
+    // Room for this many face and vertex slots, so that a growing mesh does not regrow the arrays
+    // (a copy of hundreds of MB at millions of triangles) in whichever frame crosses the capacity.
+    void reserve(std::size_t face_slots, std::size_t vertex_slots);
     // Recomputes the slots `changes` affects and returns them as sorted, coalesced ranges. The result
     // equals rebuild(mesh) bit for bit.
     std::vector<SlotRange> update(const rgb::Mesh& mesh, const MeshChanges& changes);
+    // The same for a part of the lists of a MeshChanges that is not everything(): the lists cut
+    // anywhere and the parts applied in turn leave the slots as update(mesh, changes) does, since a
+    // slot that a later part affects is written again then. Meanwhile every slot written has its
+    // corners where the mesh has them now (a new vertex whose part has not come yet would otherwise
+    // sit at the origin, and thousands of such triangles in one cell make picking quadratic).
+    std::vector<SlotRange> update_part(const rgb::Mesh& mesh, std::span<const rgb::FaceId> changed_faces,
+                                       std::span<const rgb::VertexId> moved_vertices);
 
     std::span<const SurfaceVertex> vertices() const { return vertices_; }
     // One per vertex of vertices() with an appearance, else empty.
@@ -90,6 +100,9 @@ public:
 
 private:
     void resize(const rgb::Mesh& mesh);
+    // update and update_part; `part`: position every corner of the slots written.
+    std::vector<SlotRange> update_lists(const rgb::Mesh& mesh, std::span<const rgb::FaceId> changed_faces,
+                                        std::span<const rgb::VertexId> moved_vertices, bool part);
     void update_position(const rgb::Mesh& mesh, rgb::VertexId v);
     void update_normal(const rgb::Mesh& mesh, rgb::VertexId v);
     // Corner i of f's normal: its vertex's, except at an infinitely sharp crease (rgb/sharp_features.h),

@@ -224,7 +224,7 @@ public:
 
 private:
     friend struct MeshState capture_state(const Mesh& mesh);
-    friend Mesh restore_state(const struct MeshState& state, struct RestoredChannel* channel);
+    friend Mesh restore_state(const struct MeshState& state, const class ProgressSpan& progress, struct RestoredChannel* channel);
     friend void set_sharp_features(Mesh& mesh, const SharpFeatures& features);
 
     static constexpr std::uint8_t kDead = 0xff;

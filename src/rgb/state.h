@@ -11,6 +11,7 @@
 #include <glm/vec3.hpp>
 
 #include "rgb/base_mesh.h"
+#include "rgb/progress.h"
 #include "rgb/surface_point.h"
 #include "rgb/vertex_channel.h"
 
@@ -27,23 +28,23 @@ struct MeshState {
 };
 
 MeshState capture_state(const Mesh& mesh);
-// Throws std::invalid_argument with a readable reason if the state is not a valid RGB triangulation
-// of its base mesh in the normal form the core keeps (io turns that into a file error); the first
-// problem in the order vertices, faces, types, positions, invariants is the one named. Linear in the
-// size of the state, its passes over all vertices or faces on all cores (parallel.h). The restored
-// mesh has the limits cached that its displayed positions need.
-Mesh restore_state(const MeshState& state);
 
-// A vertex channel (vertex_channel.h) restored with a mesh: the pass that computes the positions
-// gives its values too, at the cost of its arithmetic (the neighbours are looked up once).
+// A vertex channel (vertex_channel.h) restored with a mesh: the positions' pass gives its values
+// too, at the cost of its arithmetic (the neighbours are looked up once).
 struct RestoredChannel {
     std::span<const glm::dvec3> base_values;  // one per base vertex
     ChannelLevel level = ChannelLevel::Displayed;
     std::vector<glm::dvec3> values;  // set by restore_state: one per vertex of the state, as vertex_channel_values gives them
 };
-// restore_state, and channel->values; channel may be null. Also throws std::invalid_argument if the
-// channel does not have one value per base vertex.
-Mesh restore_state(const MeshState& state, RestoredChannel* channel);
+
+// Throws std::invalid_argument with a readable reason if the state is not a valid RGB triangulation
+// of its base mesh in the normal form the core keeps (io turns that into a file error); the first
+// problem in the order vertices, faces, types, positions, invariants is the one named. Linear in the
+// size of the state, its passes over all vertices or faces on all cores (parallel.h). The restored
+// mesh has the limits cached that its displayed positions need. `progress` hears of each pass done.
+// A non-null `channel` gets its values from the pass that computes the positions; it must have one
+// value per base vertex, or std::invalid_argument is thrown.
+Mesh restore_state(const MeshState& state, const ProgressSpan& progress = {}, RestoredChannel* channel = nullptr);
 
 // Gives the mesh's base mesh other crease and corner tags (the editor's crease tool, the CLI's
 // --sharp-angle): the vertex set, the faces and every slot stay, every value follows the new rules

@@ -2,10 +2,12 @@
 // on a copy while editing goes on, quitting waits for a save, unsaved work survives a session that
 // did not exit cleanly (simulated by a session named after a process that has ended), files dropped
 // on the window open like any other, and the recent-files list.
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <sys/wait.h>
@@ -13,10 +15,12 @@
 
 #include <gtest/gtest.h>
 
+#include "app/background_task.h"
 #include "app/editor.h"
 #include "io/base_uvs.h"
 #include "editor_fixture.h"
 #include "io/mesh_file.h"
+#include "rgb/refine.h"
 #include "support/same_mesh.h"
 
 namespace app {
@@ -119,6 +123,45 @@ TEST(EditorFiles, AFileReadWhileAStrokeIsAppliedWaitsForItAndAsks) {
     EXPECT_EQ(editor.pending(), Pending::DiscardForOpen);
     editor.answer_pending(true);
     EXPECT_EQ(editor.document().mesh().num_faces(), original);
+}
+
+// The percentage in a status line "Opening PATH: N%" (or Saving), after checking the rest of it.
+int status_percent(const std::string& status, const std::string& verb, const std::string& path) {
+    const std::string prefix = verb + " " + path + ": ";
+    EXPECT_EQ(status.substr(0, prefix.size()), prefix);
+    EXPECT_EQ(status.back(), '%') << status;
+    return std::stoi(status.substr(prefix.size()));
+}
+
+// Watches a task until it is done: its fraction and status line only grow, and end at 1 and 100%.
+void expect_progress_to_the_end(const BackgroundTask& task, const std::string& verb) {
+    double fraction = 0.0;
+    int percent = 0;
+    while (!task.done()) {
+        const double now = task.fraction();
+        const int shown = status_percent(task.status(), verb, task.path());
+        EXPECT_GE(now, fraction);
+        EXPECT_GE(shown, percent);
+        EXPECT_LE(shown, 100);
+        fraction = now;
+        percent = shown;
+        std::this_thread::sleep_for(std::chrono::microseconds(200));
+    }
+    EXPECT_EQ(task.fraction(), 1.0);
+    EXPECT_EQ(status_percent(task.status(), verb, task.path()), 100);
+}
+
+TEST(EditorFiles, OpeningAndSavingShowHowFarTheyAreInTheStatusLine) {
+    rgb::Mesh mesh = rgbio::load_mesh(bunny_path());
+    rgb::refine_uniform(mesh, 2);
+    const std::string file = (fresh_folder("progress") / "bunny2.obj").string();
+    const std::unique_ptr<BackgroundTask> saving = BackgroundTask::save(mesh, file, {});
+    expect_progress_to_the_end(*saving, "Saving");
+    ASSERT_FALSE(saving->error());
+    const std::unique_ptr<BackgroundTask> opening = BackgroundTask::open(file, render::PositionSource::Displayed);
+    expect_progress_to_the_end(*opening, "Opening");
+    ASSERT_FALSE(opening->error());
+    EXPECT_TRUE(rgbtest::same_mesh(opening->take_document().mesh, mesh));
 }
 
 TEST(EditorFiles, EscStopsOpeningAFile) {

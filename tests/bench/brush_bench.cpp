@@ -2,7 +2,8 @@
 // 5 px, one editor frame per sample) through the editor's input layer on the bunny refined
 // uniformly, and reports what the editor costs at that size:
 //   - engine ms per frame (the queued stroke work done in Editor::update, at the slice JobPacer
-//     gives frames that draw in 4 ms), p50 / p95 / max,
+//     gives frames that draw in 4 ms), p50 / p95 / max; the picking geometry and index catching up
+//     after it; and both together, the frame's work,
 //   - pick ms per dab (the picking index, plus mapping the hit to base space), p50 / p95,
 //   - pick ms for rays through random pixels (the index alone),
 //   - the press that starts a stroke,
@@ -46,8 +47,12 @@ std::vector<glm::vec2> recorded_path() {
 }
 
 struct StrokeResult {
-    std::vector<double> engine_ms, geometry_ms, pick_ms;
+    std::vector<double> engine_ms, geometry_ms, frame_ms, pick_ms;
     double press_ms = 0.0, undo_ms = 0.0, redo_ms = 0.0, undo_display_ms = 0.0, redo_display_ms = 0.0;
+    // The frames after the undo, each with its slice, until the display has caught up: their count
+    // and the longest display work of one.
+    std::size_t undo_display_frames = 0;
+    double undo_display_frame_max_ms = 0.0;
     std::size_t splits = 0;
     std::size_t frames = 0, faces_before = 0, faces_after = 0;
 };
@@ -68,6 +73,7 @@ StrokeResult replay(app::Editor& editor, app::Modifiers mods, double fraction = 
         editor.update(kFrameSlice);
         r.engine_ms.push_back(editor.timing().frame_ms);
         r.geometry_ms.push_back(editor.timing().geometry_ms);
+        r.frame_ms.push_back(editor.timing().frame_ms + editor.timing().geometry_ms);
     };
     frame();
     for (const glm::vec2& p : path) {
@@ -95,6 +101,15 @@ StrokeResult replay(app::Editor& editor, app::Modifiers mods, double fraction = 
     start = Clock::now();
     editor.document().geometry();
     r.redo_display_ms = ms_since(start);
+    // The undo again, followed as the window follows it: a frame at a time, Editor::update catching
+    // the display up within the slice.
+    editor.undo();
+    for (; editor.document().display_behind(); ++r.undo_display_frames) {
+        editor.update(kFrameSlice);
+        r.undo_display_frame_max_ms = std::max(r.undo_display_frame_max_ms, editor.timing().geometry_ms);
+    }
+    editor.redo();
+    editor.document().geometry();
     return r;
 }
 
@@ -103,10 +118,14 @@ void report(const char* what, const StrokeResult& r) {
     std::printf("    engine per frame p50 %6.2f ms  p95 %6.2f ms  max %6.2f ms | pick per dab p50 %5.3f ms  p95 %5.3f ms\n",
                 percentile(r.engine_ms, 0.5), percentile(r.engine_ms, 0.95), percentile(r.engine_ms, 1.0),
                 percentile(r.pick_ms, 0.5), percentile(r.pick_ms, 0.95));
-    std::printf("    picking geometry and index per frame p50 %5.2f ms  p95 %5.2f ms\n", percentile(r.geometry_ms, 0.5),
-                percentile(r.geometry_ms, 0.95));
+    std::printf("    picking geometry and index per frame p50 %5.2f ms  p95 %5.2f ms  max %6.2f ms\n", percentile(r.geometry_ms, 0.5),
+                percentile(r.geometry_ms, 0.95), percentile(r.geometry_ms, 1.0));
+    std::printf("    both (the frame's work) p50 %6.2f ms  p95 %6.2f ms  max %6.2f ms\n", percentile(r.frame_ms, 0.5),
+                percentile(r.frame_ms, 0.95), percentile(r.frame_ms, 1.0));
     std::printf("    stroke start %.3f ms | undo of %zu vertices %.1f ms (+%.1f ms display) | redo %.1f ms (+%.1f ms display)\n",
                 r.press_ms, r.splits, r.undo_ms, r.undo_display_ms, r.redo_ms, r.redo_display_ms);
+    std::printf("    after the undo, frame by frame: the display catches up over %zu frames, at most %.1f ms in one\n",
+                r.undo_display_frames, r.undo_display_frame_max_ms);
 }
 
 void pick_rays(app::Editor& editor) {

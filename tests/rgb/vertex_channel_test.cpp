@@ -134,8 +134,8 @@ TEST_P(VertexChannel, RestoringWithTheChannelGivesThePositionsOfTheMeshOverTheCh
     random_edits(meshes, 1, [&](int step) {
         const rgb::MeshState state = rgb::capture_state(mesh);
         rgb::RestoredChannel displayed{colours, rgb::ChannelLevel::Displayed, {}}, limit{colours, rgb::ChannelLevel::Limit, {}};
-        const rgb::Mesh restored = rgb::restore_state(state, &displayed);
-        rgb::restore_state(state, &limit);
+        const rgb::Mesh restored = rgb::restore_state(state, {}, &displayed);
+        rgb::restore_state(state, {}, &limit);
         ASSERT_EQ(displayed.values.size(), mesh.num_vertices());
         ASSERT_EQ(limit.values.size(), mesh.num_vertices());
         std::size_t i = 0;

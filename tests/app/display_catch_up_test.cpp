@@ -1,0 +1,42 @@
+// After a large change (the undo of a whole-mesh action), the displayed triangles and the picking
+// index catch up a part per frame instead of all in one frame, and end bit for bit as a rebuild.
+#include <algorithm>
+#include <chrono>
+
+#include <gtest/gtest.h>
+
+#include "app/editor.h"
+#include "editor_fixture.h"
+#include "render/surface_geometry.h"
+
+namespace app {
+namespace {
+
+using test::kViewport;
+
+TEST(DisplayCatchUp, TheUndoOfALargeEditIsShownOverSeveralFramesAndEndsAsARebuild) {
+    Editor editor(kViewport);
+    ASSERT_TRUE(editor.open(test::asset_path("bunny.obj")));
+    editor.start_flood_fill(3);  // 3674 -> 235,136 triangles
+    editor.finish_work();
+    ASSERT_EQ(editor.document().mesh().num_faces(), 235136u);
+    ASSERT_TRUE(editor.undo());
+    ASSERT_EQ(editor.document().mesh().num_faces(), 3674u);
+    EXPECT_TRUE(editor.document().display_behind()) << "235k face slots changed: more than one part";
+    editor.mouse_moved({0.5f * kViewport.x, 0.5f * kViewport.y});
+    EXPECT_FALSE(editor.cursor_hit()) << "hovering does not catch up all at once";
+    int frames = 0;
+    for (; editor.document().display_behind() && frames < 10000; ++frames) editor.update(std::chrono::microseconds(1));
+    EXPECT_GT(frames, 1) << "a frame of a few milliseconds catches up a part, not everything";
+    EXPECT_TRUE(editor.cursor_hit()) << "the bunny is under the centre of the view";
+
+    render::SurfaceGeometry rebuilt(editor.document().geometry().source());
+    rebuilt.rebuild(editor.document().mesh());
+    const render::SurfaceGeometry& shown = editor.document().geometry();
+    ASSERT_EQ(shown.vertices().size(), rebuilt.vertices().size());
+    EXPECT_TRUE(std::ranges::equal(shown.vertices(), rebuilt.vertices()));
+    EXPECT_EQ(shown.triangles_of(rgb::Colour::Green), 3674u);
+}
+
+}  // namespace
+}  // namespace app
