@@ -11,7 +11,7 @@ LoadedDocument load_document(const std::string& path, render::PositionSource sou
     loaded.mesh = std::move(asset.mesh);
     loaded.attributes = std::move(asset.attributes);
     loaded.uvs = std::move(asset.uvs);
-    loaded.geometry.set_appearance(file_appearance(*loaded.attributes, loaded.mesh.base().num_faces()));
+    loaded.geometry.set_appearance(file_appearance(*loaded.attributes, loaded.uvs, loaded.mesh.base().num_faces(), loaded.warnings));
     loaded.geometry.rebuild(loaded.mesh);
     loaded.index.rebuild(loaded.mesh, loaded.geometry);
     return loaded;
