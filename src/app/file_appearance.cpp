@@ -26,25 +26,29 @@ public:
             images_.push_back(render::read_image(material.diffuse_texture));
             layer = static_cast<std::uint32_t>(images_.size() - 1);
         } catch (const std::exception& e) {
-            if (unreadable_++ == 0)
-                first_problem_ = rgbio::quoted_file_text(material.diffuse_texture, 200) + " of material " +
-                                 rgbio::quoted_file_text(material.name) + ": " + e.what();
+            if (unreadable_++ == 0) {
+                first_texture_ = rgbio::quoted_file_text(material.diffuse_texture, 200) + " of material " + rgbio::quoted_file_text(material.name);
+                first_reason_ = e.what();
+            }
         }
         layers_.emplace(material.diffuse_texture, layer);
         return layer;
     }
     const std::vector<render::Image>& images() const { return images_; }
     void warn(std::vector<std::string>& warnings) const {
-        if (unreadable_ > 0)
-            warnings.push_back(std::to_string(unreadable_) + " diffuse textures (map_Kd) cannot be shown (the first " + first_problem_ +
-                               "); their faces show the texture checker");
+        if (unreadable_ == 1)
+            warnings.push_back("diffuse texture (map_Kd) " + first_texture_ + " cannot be shown (" + first_reason_ +
+                               "); its faces show the texture checker");
+        if (unreadable_ > 1)
+            warnings.push_back(std::to_string(unreadable_) + " diffuse textures (map_Kd) cannot be shown, the first " + first_texture_ + " (" +
+                               first_reason_ + "); their faces show the texture checker");
     }
 
 private:
     std::map<std::string, std::uint32_t> layers_;
     std::vector<render::Image> images_;
     std::size_t unreadable_ = 0;
-    std::string first_problem_;
+    std::string first_texture_, first_reason_;
 };
 
 }  // namespace
