@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -82,8 +83,20 @@ public:
     // slot; empty without vertex colours); `limit`: limit texture coordinates instead of displayed ones.
     std::array<AppearanceVertex, 3> corners(const rgb::Mesh& mesh, rgb::FaceId f, const std::vector<std::uint32_t>& vertex_rgba,
                                             bool limit);
+    // The same for every face slot into `out` (three per slot, dead slots AppearanceVertex{}), in
+    // parallel: what a rebuild needs.
+    void all_corners(const rgb::Mesh& mesh, const std::vector<std::uint32_t>& vertex_rgba, bool limit,
+                     std::span<AppearanceVertex> out) const;
 
 private:
+    // corners() with texture coordinates from `uvs` (over layout_; null without texture coordinates),
+    // or from `known` (by vertex slot, NaN where not known) where it has them.
+    std::array<AppearanceVertex, 3> corners_from(const rgb::Mesh& mesh, rgb::FaceId f, const std::vector<std::uint32_t>& vertex_rgba,
+                                                 bool limit, rgb::UvEvaluator* uvs, std::span<const glm::vec2> known = {}) const;
+    // By vertex slot, the one UV of each vertex inside a base face (NaN for the others, whose UV
+    // depends on the face), in parallel.
+    std::vector<glm::vec2> inner_uvs(const rgb::Mesh& mesh, bool limit) const;
+
     std::shared_ptr<const rgb::BaseMesh> base_;
     const SurfaceAppearance& appearance_;
     std::unique_ptr<rgb::VertexChannel> colours_;

@@ -139,10 +139,10 @@ void SurfaceGeometry::count(std::uint32_t code, int delta) {
     level_counts_[(code >> kCodeLevelShift) & 0xffu] += static_cast<std::size_t>(delta);
 }
 
-void SurfaceGeometry::write_slot(const rgb::Mesh& mesh, rgb::FaceId f) {
+void SurfaceGeometry::write_slot(const rgb::Mesh& mesh, rgb::FaceId f, bool with_look) {
     SurfaceVertex* slot = &vertices_[3 * static_cast<std::size_t>(f.idx)];
     count(slot[0].code, -1);
-    AppearanceVertex* look = channels_ ? &appearance_vertices_[3 * static_cast<std::size_t>(f.idx)] : nullptr;
+    AppearanceVertex* look = channels_ && with_look ? &appearance_vertices_[3 * static_cast<std::size_t>(f.idx)] : nullptr;
     if (!mesh.is_live(f)) {
         std::fill(slot, slot + 3, SurfaceVertex{});
         if (look) std::fill(look, look + 3, AppearanceVertex{});
@@ -167,7 +167,8 @@ void SurfaceGeometry::rebuild(const rgb::Mesh& mesh) {
     resize(mesh);
     for (rgb::VertexId v : mesh.vertices()) update_position(mesh, v);
     for (rgb::VertexId v : mesh.vertices()) update_normal(mesh, v);
-    for (std::uint32_t f = 0; f < mesh.face_capacity(); ++f) write_slot(mesh, rgb::FaceId(f));
+    for (std::uint32_t f = 0; f < mesh.face_capacity(); ++f) write_slot(mesh, rgb::FaceId(f), false);
+    if (channels_) channels_->all_corners(mesh, vertex_rgba_, source_ == PositionSource::Limit, appearance_vertices_);
 }
 
 // Marks over slots for one update, so that each vertex and face is handled once (the change lists

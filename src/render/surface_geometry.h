@@ -101,7 +101,8 @@ private:
     // Corner i of f's normal: its vertex's, except at an infinitely sharp crease (rgb/sharp_features.h),
     // where only the faces on f's side of the creases count, so that the shading breaks along it.
     glm::vec3 corner_normal(const rgb::Mesh& mesh, rgb::FaceId f, int i) const;
-    void write_slot(const rgb::Mesh& mesh, rgb::FaceId f);
+    // `with_look`: the appearance's corners too (a rebuild writes them all at once, in parallel).
+    void write_slot(const rgb::Mesh& mesh, rgb::FaceId f, bool with_look = true);
     void count(std::uint32_t code, int delta);
 
     struct Marks {

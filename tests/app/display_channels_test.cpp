@@ -1,7 +1,8 @@
 // What the editor displays of a file's vertex colours and texture coordinates is what it saves: after
 // adaptive edits, each displayed corner's colour and UV equal those of the same corner in the OBJ the
 // document writes (rgb/vertex_channel.h, rgb/mesh_uvs.h), read back by the OBJ reader. The display
-// follows the edits slot by slot (Document::geometry), so this also checks its incremental updates.
+// follows the edits slot by slot (Document::geometry), so this checks its incremental updates, and
+// then its rebuild.
 #include <array>
 #include <cmath>
 #include <filesystem>
@@ -123,6 +124,13 @@ TEST_P(DisplayChannels, DisplayedColoursAndUvsAreTheSavedFilesAfterAdaptiveEdits
         document.save(out.string(), options);
         expect_display_is_file(document, rgbio::read_obj_file(out.string()));
     }
+    // A rebuild of the display (after switching positions there and back) computes every corner at
+    // once, in parallel: the same values.
+    const render::PositionSource other =
+        GetParam() == render::PositionSource::Limit ? render::PositionSource::Displayed : render::PositionSource::Limit;
+    document.set_position_source(other);
+    document.set_position_source(GetParam());
+    expect_display_is_file(document, rgbio::read_obj_file(out.string()));
 }
 
 INSTANTIATE_TEST_SUITE_P(Positions, DisplayChannels, ::testing::Values(render::PositionSource::Displayed, render::PositionSource::Limit),
