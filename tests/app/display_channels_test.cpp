@@ -131,6 +131,12 @@ TEST_P(DisplayChannels, DisplayedColoursAndUvsAreTheSavedFilesAfterAdaptiveEdits
     document.set_position_source(other);
     document.set_position_source(GetParam());
     expect_display_is_file(document, rgbio::read_obj_file(out.string()));
+    // Another face-varying option moves the UVs along the boundary and the seam: shown as saved.
+    document.set_uv_interpolation(rgb::UvInterpolation::None);
+    rgbio::SaveOptions options;
+    options.positions = saved_positions;
+    document.save(out.string(), options);
+    expect_display_is_file(document, rgbio::read_obj_file(out.string()));
 }
 
 INSTANTIATE_TEST_SUITE_P(Positions, DisplayChannels, ::testing::Values(render::PositionSource::Displayed, render::PositionSource::Limit),
