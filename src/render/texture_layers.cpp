@@ -27,11 +27,16 @@ void append_layer(const Image& image, int width, int height, std::vector<std::ui
 
 }  // namespace
 
-TextureLayers texture_layers(const std::vector<Image>& images) {
+TextureLayers texture_layers(const std::vector<Image>& images, std::size_t max_bytes) {
     TextureLayers layers;
     for (const Image& image : images) {
         layers.width = std::max(layers.width, std::min(image.width, kMaxTextureSide));
         layers.height = std::max(layers.height, std::min(image.height, kMaxTextureSide));
+    }
+    while (layers.width > 1 && layers.height > 1 &&
+           4 * std::size_t(layers.width) * std::size_t(layers.height) * images.size() > max_bytes) {
+        layers.width /= 2;
+        layers.height /= 2;
     }
     layers.rgba.reserve(4 * std::size_t(layers.width) * std::size_t(layers.height) * images.size());
     for (const Image& image : images) append_layer(image, layers.width, layers.height, layers.rgba);

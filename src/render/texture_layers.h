@@ -13,6 +13,9 @@ namespace render {
 // Layers larger than this on a side are scaled down (GL 3.3 guarantees 1024; every driver we meet
 // has at least 8192): memory for a preview stays bounded.
 inline constexpr int kMaxTextureSide = 4096;
+// All layers together are scaled down (halving their sides) until they fit this, so that a file
+// with many large textures cannot exhaust memory for its preview.
+inline constexpr std::size_t kMaxTextureBytes = std::size_t(256) << 20;
 
 struct TextureLayers {
     int width = 0;
@@ -25,7 +28,7 @@ struct TextureLayers {
 };
 
 // The images, in order, each scaled to the largest width and the largest height among them (at most
-// kMaxTextureSide) and flipped to bottom-up rows.
-TextureLayers texture_layers(const std::vector<Image>& images);
+// kMaxTextureSide, and `max_bytes` in all) and flipped to bottom-up rows.
+TextureLayers texture_layers(const std::vector<Image>& images, std::size_t max_bytes = kMaxTextureBytes);
 
 }  // namespace render

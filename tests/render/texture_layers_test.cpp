@@ -29,6 +29,15 @@ TEST(TextureLayers, RowsBottomUpAndEveryLayerAtTheLargestSize) {
     for (int i = 0; i < 8; ++i) EXPECT_EQ(layers.rgba[32 + 4 * i + 1], 255) << "layer 1, texel " << i;
 }
 
+// 5 layers of 64 x 32 take 40 KiB; within 8 KiB they are halved twice (32 x 16: 10 KiB), to 16 x 8.
+TEST(TextureLayers, ManyLargeTexturesAreScaledDownToFitTheMemoryBound) {
+    const render::Image large = filled(64, 32, {10, 20, 30, 255});
+    const render::TextureLayers layers = render::texture_layers({large, large, large, large, large}, 8 << 10);
+    EXPECT_EQ(layers.width, 16);
+    EXPECT_EQ(layers.height, 8);
+    EXPECT_EQ(layers.count(), 5u);
+}
+
 TEST(TextureLayers, NoImagesNoLayers) { EXPECT_EQ(render::texture_layers({}).count(), 0u); }
 
 }  // namespace
