@@ -8,6 +8,10 @@ const int kColourLevel = 2;
 const int kColourMaterial = 3;
 const int kColourVertex = 4;
 const int kColourChecker = 5;
+const int kColourTexture = 6;
+// render/surface_appearance.h
+const uint kNoTexture = 0xffffffffu;
+const uint kUnreadableTexture = 0xfffffffeu;
 
 in vec3 v_position;  // like u_eye and the brush, scaled by u_shading_scale (surface.vert)
 in vec3 v_normal;
@@ -16,6 +20,7 @@ flat in uint v_code;
 flat in vec4 v_material_colour;  // alpha 0: no material
 in vec4 v_vertex_colour;         // alpha 0: no vertex colours
 in vec2 v_texcoord;
+flat in uint v_texture;
 
 uniform vec3 u_eye;
 uniform bool u_flat;
@@ -25,6 +30,7 @@ uniform vec3 u_rgb_colours[3];
 uniform vec3 u_level_colours[kMaxLevelColours];
 uniform vec3 u_checker_colours[2];
 uniform float u_checker_cells;  // per unit of texture coordinate
+uniform sampler2DArray u_textures;  // the materials' diffuse textures, one layer each
 uniform bool u_wire;
 uniform float u_wire_width;  // pixels
 uniform vec3 u_wire_colour;
@@ -37,14 +43,22 @@ uniform vec3 u_brush_colour;
 
 out vec4 frag_colour;
 
-vec3 base_colour() {
+vec3 checker() {
+    ivec2 cell = ivec2(floor(v_texcoord * u_checker_cells));
+    return u_checker_colours[(cell.x + cell.y) & 1];
+}
+
+// `texel`: the face's texture at this fragment (sampled in uniform control flow, where the
+// derivatives that pick its mipmap level are defined).
+vec3 base_colour(vec3 texel) {
     if (u_colouring == kColourRgb) return u_rgb_colours[min(v_code & 3u, 2u)];
     if (u_colouring == kColourLevel) return u_level_colours[min(int((v_code >> 8) & 255u), kMaxLevelColours - 1)];
     if (u_colouring == kColourMaterial && v_material_colour.a > 0.0) return v_material_colour.rgb;
     if (u_colouring == kColourVertex && v_vertex_colour.a > 0.0) return v_vertex_colour.rgb;
-    if (u_colouring == kColourChecker) {
-        ivec2 cell = ivec2(floor(v_texcoord * u_checker_cells));
-        return u_checker_colours[(cell.x + cell.y) & 1];
+    if (u_colouring == kColourChecker || (u_colouring == kColourTexture && v_texture == kUnreadableTexture)) return checker();
+    if (u_colouring == kColourTexture) {
+        if (v_texture != kNoTexture) return texel;
+        if (v_material_colour.a > 0.0) return v_material_colour.rgb;
     }
     return u_plain_colour;
 }
@@ -55,13 +69,14 @@ float line_coverage(float distance_in_pixels, float width) {
 }
 
 void main() {
+    vec3 texel = texture(u_textures, vec3(v_texcoord, float(v_texture))).rgb;
     vec3 normal = u_flat ? cross(dFdx(v_position), dFdy(v_position)) : v_normal;
     vec3 to_eye = normalize(u_eye - v_position);
     // Headlight, lit from both sides so open meshes show their back faces.
     float diffuse = abs(dot(normalize(normal), to_eye));
     // Back faces (inside an open mesh, seen through a hole) in a colour of their own, so that holes
     // look open.
-    vec3 colour = (gl_FrontFacing ? base_colour() : u_back_colour) * (0.3 + 0.7 * diffuse);
+    vec3 colour = (gl_FrontFacing ? base_colour(texel) : u_back_colour) * (0.3 + 0.7 * diffuse);
 
     if (u_wire) {
         vec3 per_pixel = max(fwidth(v_barycentric), vec3(1e-6));

@@ -8,6 +8,7 @@ layout(location = 2) in uint a_code;  // bits 0-1: RGB colour, bits 8-15: face l
 layout(location = 3) in vec4 a_material_colour;
 layout(location = 4) in vec4 a_vertex_colour;
 layout(location = 5) in vec2 a_texcoord;
+layout(location = 6) in uint a_texture;  // a layer of u_textures, or kNoTexture / kUnreadableTexture
 
 uniform mat4 u_view_projection;
 uniform float u_shading_scale;  // a power of two that brings the scene near unit size (renderer.cpp)
@@ -19,6 +20,7 @@ flat out uint v_code;
 flat out vec4 v_material_colour;
 out vec4 v_vertex_colour;
 out vec2 v_texcoord;
+flat out uint v_texture;
 
 void main() {
     int corner = gl_VertexID % 3;
@@ -29,5 +31,6 @@ void main() {
     v_material_colour = a_material_colour;
     v_vertex_colour = a_vertex_colour;
     v_texcoord = a_texcoord;
+    v_texture = a_texture;
     gl_Position = u_view_projection * vec4(a_position, 1.0);
 }

@@ -75,6 +75,13 @@ void Document::set_uv_interpolation(rgb::UvInterpolation interpolation) {
     uv_layout_.reset();
     dirty_ = true;
     ++changes_count_;
+    // The display shows the UVs the option gives.
+    if (const auto& shown = geometry_.appearance(); shown && shown->uvs) {
+        auto look = std::make_shared<render::SurfaceAppearance>(*shown);
+        look->uvs->interpolation = interpolation;
+        geometry_.set_appearance(std::move(look));
+        resync();
+    }
 }
 
 rgbio::SaveOptions Document::with_attributes(rgbio::SaveOptions options) {

@@ -35,6 +35,7 @@ constexpr DisplayMode kDisplayModes[] = {
     {"material colours", render::Shading::Smooth, render::Colouring::Material},
     {"vertex colours", render::Shading::Smooth, render::Colouring::VertexColour},
     {"texture checker", render::Shading::Smooth, render::Colouring::Checker},
+    {"diffuse texture", render::Shading::Smooth, render::Colouring::Texture},
 };
 
 void tooltip(const char* text) {

@@ -27,7 +27,7 @@ LoadedDocument load_document(const std::string& path, render::PositionSource sou
     loaded.mesh = std::move(asset.mesh);
     loaded.attributes = std::move(asset.attributes);
     loaded.uvs = std::move(asset.uvs);
-    loaded.geometry.set_appearance(file_appearance(*loaded.attributes, loaded.mesh.base().num_faces()));
+    loaded.geometry.set_appearance(file_appearance(*loaded.attributes, loaded.uvs, loaded.mesh.base().num_faces(), loaded.warnings));
     reserve_room(loaded.mesh, loaded.geometry, loaded.index, kRoomFactor * loaded.mesh.num_faces());
     loaded.geometry.rebuild(loaded.mesh);
     progress.reach(kGeometryBuilt);

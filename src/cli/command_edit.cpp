@@ -30,8 +30,10 @@ int write_screenshot(const std::string& file, const std::string& output, const s
         frame.colouring = render::Colouring::VertexColour;
     } else if (mode == "checker") {
         frame.colouring = render::Colouring::Checker;
+    } else if (mode == "texture") {
+        frame.colouring = render::Colouring::Texture;
     } else if (mode != "shaded") {
-        throw UsageError("--mode must be shaded, wire, rgb, level, material, colours or checker, got '" + mode + "'");
+        throw UsageError("--mode must be shaded, wire, rgb, level, material, colours, checker or texture, got '" + mode + "'");
     }
     rgbio::write_file_atomically(output, render::encode_png(app::render_editor_frame(file, frame)));
     return exit_ok;
@@ -49,7 +51,8 @@ int run_edit(std::span<const std::string> args) {
                      "  --screenshot PATH   write one editor frame, panels included, as a PNG and exit\n"
                      "                      (headless through OSMesa: no display needed)\n"
                      "  --mode MODE         for the screenshot: shaded, wire, rgb, level, or the file's look:\n"
-                     "                      material (Kd), colours (vertex colours), checker (over the UVs)\n"
+                     "                      material (Kd), colours (vertex colours), checker (over the UVs),\n"
+                     "                      texture (map_Kd over the UVs; Kd without one)\n"
                   << kStrictHelp;
         return exit_ok;
     }

@@ -31,8 +31,11 @@ inline void create_buffers(GLsizei n, GLuint* ids) { glGenBuffers(n, ids); }
 inline void delete_buffers(GLsizei n, const GLuint* ids) { glDeleteBuffers(n, ids); }
 inline void create_vertex_arrays(GLsizei n, GLuint* ids) { glGenVertexArrays(n, ids); }
 inline void delete_vertex_arrays(GLsizei n, const GLuint* ids) { glDeleteVertexArrays(n, ids); }
+inline void create_textures(GLsizei n, GLuint* ids) { glGenTextures(n, ids); }
+inline void delete_textures(GLsizei n, const GLuint* ids) { glDeleteTextures(n, ids); }
 
 using GlBuffer = GlName<create_buffers, delete_buffers>;
+using GlTexture = GlName<create_textures, delete_textures>;
 using GlVertexArray = GlName<create_vertex_arrays, delete_vertex_arrays>;
 
 }  // namespace render

@@ -17,7 +17,7 @@ extern "C" void append_to_string(void* context, void* data, int size) {
 
 Image to_image(stbi_uc* decoded, int width, int height, const std::string& source) {
     const std::unique_ptr<stbi_uc, decltype(&stbi_image_free)> pixels(decoded, &stbi_image_free);
-    if (!pixels) throw std::runtime_error(source + ": cannot read PNG: " + stbi_failure_reason());
+    if (!pixels) throw std::runtime_error(source + ": cannot read the image: " + stbi_failure_reason());
     Image image{width, height, {}};
     image.rgba.assign(pixels.get(), pixels.get() + static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
     return image;
@@ -39,7 +39,7 @@ Image decode_png(const std::string& png) {
     return to_image(decoded, width, height, "PNG data");
 }
 
-Image read_png(const std::filesystem::path& path) {
+Image read_image(const std::filesystem::path& path) {
     int width = 0, height = 0, channels = 0;
     stbi_uc* decoded = stbi_load(path.c_str(), &width, &height, &channels, 4);
     return to_image(decoded, width, height, path.string());

@@ -1,5 +1,5 @@
 #pragma once
-// An RGBA8 image, rows top to bottom, and its PNG form.
+// An RGBA8 image, rows top to bottom, its PNG form, and image files read with stb_image.
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -25,6 +25,7 @@ struct Image {
 std::string encode_png(const Image& image);
 // Throw std::runtime_error naming the source and stb's reason.
 Image decode_png(const std::string& png);
-Image read_png(const std::filesystem::path& path);
+// Any format stb_image reads (PNG, JPEG, TGA, BMP, ...), converted to RGBA8.
+Image read_image(const std::filesystem::path& path);
 
 }  // namespace render

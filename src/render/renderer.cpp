@@ -59,6 +59,36 @@ private:
     GLsizei count_ = 0;
 };
 
+// The appearance's textures as the 2D array texture the surface shader samples (unit 0).
+class TextureArray {
+public:
+    // Uploads `appearance`'s textures unless they are up already.
+    void show(const std::shared_ptr<const SurfaceAppearance>& appearance) {
+        if (appearance == shown_) return;
+        shown_ = appearance;
+        const TextureLayers empty;
+        const TextureLayers& layers = appearance ? appearance->textures : empty;
+        glBindTexture(GL_TEXTURE_2D_ARRAY, texture_.get());
+        glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA8, layers.width, layers.height, static_cast<GLsizei>(layers.count()), 0, GL_RGBA,
+                     GL_UNSIGNED_BYTE, layers.count() > 0 ? layers.rgba.data() : nullptr);
+        glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_REPEAT);
+        glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_REPEAT);
+        glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        if (layers.count() > 0) glGenerateMipmap(GL_TEXTURE_2D_ARRAY);
+        glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+    }
+    void bind() const {
+        glActiveTexture(GL_TEXTURE0);
+        glBindTexture(GL_TEXTURE_2D_ARRAY, texture_.get());
+    }
+
+private:
+    GlTexture texture_;
+    // Held, so that a new appearance can never reuse the address of the one uploaded.
+    std::shared_ptr<const SurfaceAppearance> shown_;
+};
+
 }  // namespace
 
 struct Renderer::State {
@@ -69,6 +99,7 @@ struct Renderer::State {
     SimpleVertices base_lines;
     SimpleVertices sharp_lines;  // follows the surface: rebuilt whenever it changes
     SimpleVertices overlay;
+    TextureArray textures;
     SurfaceGeometry geometry;
     rgb::Mesh* mesh = nullptr;
     std::unique_ptr<MeshChanges> changes;
@@ -201,6 +232,9 @@ void Renderer::draw(const OrbitCamera& camera, const RenderOptions& options, glm
     const glm::vec3 checker_colours[2] = {checker_colour(0), checker_colour(1)};
     surface.set_array("u_checker_colours", checker_colours, 2);
     surface.set("u_checker_cells", kCheckerCells);
+    s.textures.show(s.drawn().appearance());
+    s.textures.bind();
+    surface.set("u_textures", 0);
     surface.set("u_wire", options.wireframe);
     surface.set("u_wire_width", options.wire_width_px);
     surface.set("u_wire_colour", kWireColour);
@@ -232,6 +266,7 @@ void Renderer::draw(const OrbitCamera& camera, const RenderOptions& options, glm
         s.overlay.draw(GL_TRIANGLES);
         glEnable(GL_DEPTH_TEST);
     }
+    glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
     glUseProgram(0);
 }
 

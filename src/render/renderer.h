@@ -23,10 +23,12 @@ class Mesh;
 namespace render {
 
 enum class Shading { Smooth, Flat };
-// Material, VertexColour and Checker (a checker pattern over the texture coordinates) show the
-// geometry's SurfaceAppearance; faces the file gives no such data have the plain colour (Checker: the
-// cell of (0, 0)).
-enum class Colouring { Plain, RgbType, Level, Material, VertexColour, Checker };
+// Material, VertexColour, Checker (a checker pattern over the texture coordinates) and Texture (each
+// material's diffuse texture over the texture coordinates) show the geometry's SurfaceAppearance;
+// faces the file gives no such data have the plain colour (Checker: the cell of (0, 0)). Texture shows
+// a material without a texture (or a face without texture coordinates) in its diffuse colour, and one
+// whose texture could not be read as the checker.
+enum class Colouring { Plain, RgbType, Level, Material, VertexColour, Checker, Texture };
 
 // A circle on the surface: where a sphere around `centre` cuts it.
 struct BrushCursor {

@@ -10,7 +10,7 @@ namespace {
 constexpr double kGrowthFactor = 1.5;
 
 // The appearance's attribute locations (shaders/surface.vert).
-constexpr GLuint kMaterialColour = 3, kVertexColour = 4, kTexcoord = 5;
+constexpr GLuint kMaterialColour = 3, kVertexColour = 4, kTexcoord = 5, kTexture = 6;
 
 const void* offset(std::size_t bytes) { return reinterpret_cast<const void*>(bytes); }
 
@@ -38,13 +38,14 @@ SurfaceBuffer::SurfaceBuffer() {
     glVertexAttribPointer(kMaterialColour, 4, GL_UNSIGNED_BYTE, GL_TRUE, look, offset(offsetof(AppearanceVertex, material_rgba)));
     glVertexAttribPointer(kVertexColour, 4, GL_UNSIGNED_BYTE, GL_TRUE, look, offset(offsetof(AppearanceVertex, vertex_rgba)));
     glVertexAttribPointer(kTexcoord, 2, GL_FLOAT, GL_FALSE, look, offset(offsetof(AppearanceVertex, texcoord)));
+    glVertexAttribIPointer(kTexture, 1, GL_UNSIGNED_INT, look, offset(offsetof(AppearanceVertex, texture)));
     glBindVertexArray(0);
 }
 
 void SurfaceBuffer::use_appearance(bool on) {
     with_appearance_ = on;
     glBindVertexArray(vertex_array_.get());
-    for (GLuint index : {kMaterialColour, kVertexColour, kTexcoord}) {
+    for (GLuint index : {kMaterialColour, kVertexColour, kTexcoord, kTexture}) {
         if (on) glEnableVertexAttribArray(index);
         else glDisableVertexAttribArray(index);
     }
@@ -92,8 +93,10 @@ void SurfaceBuffer::draw() const {
     if (count_ == 0) return;
     // Without an appearance the attributes read the context's current values (shared by every
     // vertex array, default alpha 1): zero says "the file gives none".
-    if (!with_appearance_)
+    if (!with_appearance_) {
         for (GLuint index : {kMaterialColour, kVertexColour, kTexcoord}) glVertexAttrib4f(index, 0.0f, 0.0f, 0.0f, 0.0f);
+        glVertexAttribI4ui(kTexture, kNoTexture, 0, 0, 0);
+    }
     glBindVertexArray(vertex_array_.get());
     glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(count_));
     glBindVertexArray(0);

@@ -64,6 +64,16 @@ std::uint32_t face_code(const rgb::Mesh& mesh, rgb::FaceId f) {
 
 }  // namespace
 
+SurfaceGeometry::SurfaceGeometry(SurfaceGeometry&&) noexcept = default;
+SurfaceGeometry& SurfaceGeometry::operator=(SurfaceGeometry&&) noexcept = default;
+SurfaceGeometry::~SurfaceGeometry() = default;
+
+void SurfaceGeometry::set_appearance(std::shared_ptr<const SurfaceAppearance> appearance) {
+    channels_.reset();
+    vertex_rgba_.clear();
+    appearance_ = std::move(appearance);
+}
+
 int SurfaceGeometry::max_face_level() const {
     for (int level = static_cast<int>(level_counts_.size()) - 1; level > 0; --level)
         if (level_counts_[static_cast<std::size_t>(level)] > 0) return level;
@@ -80,10 +90,11 @@ std::vector<glm::vec3> SurfaceGeometry::live_positions(const rgb::Mesh& mesh) co
 void SurfaceGeometry::resize(const rgb::Mesh& mesh) {
     positions_.resize(mesh.vertex_capacity());
     normals_.resize(mesh.vertex_capacity());
+    if (channels_ && channels_->has_vertex_colours()) vertex_rgba_.resize(mesh.vertex_capacity());
     const std::size_t slots = mesh.face_capacity();
     for (std::size_t i = slots * 3; i < vertices_.size(); i += 3) count(vertices_[i].code, -1);
     vertices_.resize(slots * 3);
-    appearance_vertices_.resize(appearance_ ? slots * 3 : 0);
+    appearance_vertices_.resize(channels_ ? slots * 3 : 0);
 }
 
 void SurfaceGeometry::reserve(std::size_t face_slots, std::size_t vertex_slots) {
@@ -135,10 +146,10 @@ void SurfaceGeometry::count(std::uint32_t code, int delta) {
     level_counts_[(code >> kCodeLevelShift) & 0xffu] += static_cast<std::size_t>(delta);
 }
 
-void SurfaceGeometry::write_slot(const rgb::Mesh& mesh, rgb::FaceId f) {
+void SurfaceGeometry::write_slot(const rgb::Mesh& mesh, rgb::FaceId f, bool with_look) {
     SurfaceVertex* slot = &vertices_[3 * static_cast<std::size_t>(f.idx)];
     count(slot[0].code, -1);
-    AppearanceVertex* look = appearance_ ? &appearance_vertices_[3 * static_cast<std::size_t>(f.idx)] : nullptr;
+    AppearanceVertex* look = channels_ && with_look ? &appearance_vertices_[3 * static_cast<std::size_t>(f.idx)] : nullptr;
     if (!mesh.is_live(f)) {
         std::fill(slot, slot + 3, SurfaceVertex{});
         if (look) std::fill(look, look + 3, AppearanceVertex{});
@@ -147,7 +158,7 @@ void SurfaceGeometry::write_slot(const rgb::Mesh& mesh, rgb::FaceId f) {
     const std::uint32_t code = face_code(mesh, f);
     const auto& corners = mesh.face_vertices(f);
     for (int i = 0; i < 3; ++i) slot[i] = {positions_[corners[i].idx], corner_normal(mesh, f, i), code};
-    if (look) std::ranges::copy(appearance_of_face(mesh, *appearance_, f), look);
+    if (look) std::ranges::copy(channels_->corners(mesh, f, vertex_rgba_, source_ == PositionSource::Limit), look);
     count(code, +1);
 }
 
@@ -156,10 +167,15 @@ void SurfaceGeometry::rebuild(const rgb::Mesh& mesh) {
     appearance_vertices_.clear();
     colour_counts_ = {};
     level_counts_ = {};
+    // The base mesh may be another one (a retag): the channels start afresh over it.
+    channels_ = appearance_ ? std::make_unique<AppearanceChannels>(mesh.shared_base(), *appearance_) : nullptr;
+    // All colours at once, in parallel (the values update() gives single vertices).
+    vertex_rgba_ = channels_ ? channels_->vertex_colours(mesh, source_ == PositionSource::Limit) : std::vector<std::uint32_t>();
     resize(mesh);
     for (rgb::VertexId v : mesh.vertices()) update_position(mesh, v);
     for (rgb::VertexId v : mesh.vertices()) update_normal(mesh, v);
-    for (std::uint32_t f = 0; f < mesh.face_capacity(); ++f) write_slot(mesh, rgb::FaceId(f));
+    for (std::uint32_t f = 0; f < mesh.face_capacity(); ++f) write_slot(mesh, rgb::FaceId(f), false);
+    if (channels_) channels_->all_corners(mesh, vertex_rgba_, source_ == PositionSource::Limit, appearance_vertices_);
 }
 
 // Marks over slots for one update, so that each vertex and face is handled once (the change lists
@@ -199,6 +215,9 @@ std::vector<SlotRange> SurfaceGeometry::update_lists(const rgb::Mesh& mesh, std:
     for (rgb::VertexId v : moved_vertices)
         if (mesh.is_live(v) && vertex_marks_.mark(v.idx)) moved.push_back(v);
     for (rgb::VertexId v : moved) update_position(mesh, v);
+    // A colour is at its vertex's display level, as the position.
+    if (channels_ && channels_->has_vertex_colours())
+        for (rgb::VertexId v : moved) vertex_rgba_[v.idx] = channels_->vertex_colour(mesh, v, source_ == PositionSource::Limit);
 
     // A vertex's normal depends on its one-ring's positions.
     vertex_marks_.start();

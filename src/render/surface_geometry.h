@@ -4,8 +4,10 @@
 // three-vertex range and the GPU buffer mirrors the core's slot arrays; dead slots are degenerate
 // triangles that rasterise to nothing. Smooth normals are area-weighted averages of the incident
 // face normals (split along infinitely sharp creases), so moving a vertex dirties the faces around
-// its one-ring. With a SurfaceAppearance, a second array beside it holds each corner's colours and
-// texture coordinate, slot for slot.
+// its one-ring. With a SurfaceAppearance, a second array beside it holds each corner's colours,
+// texture coordinate and texture, slot for slot; its colours and texture coordinates are the exact
+// channels at the positions' level (surface_appearance.h), updated with the positions: a vertex
+// whose position may have changed gets its colour again, a face rewritten its corners' UVs.
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -60,9 +62,13 @@ public:
 
     PositionSource source() const { return source_; }
     void set_source(PositionSource source) { source_ = source; }
+    SurfaceGeometry(SurfaceGeometry&&) noexcept;
+    SurfaceGeometry& operator=(SurfaceGeometry&&) noexcept;
+    ~SurfaceGeometry();
+
     // What the faces look like (null: nothing but geometry); takes effect at the next rebuild.
     const std::shared_ptr<const SurfaceAppearance>& appearance() const { return appearance_; }
-    void set_appearance(std::shared_ptr<const SurfaceAppearance> appearance) { appearance_ = std::move(appearance); }
+    void set_appearance(std::shared_ptr<const SurfaceAppearance> appearance);
 
     // Recomputes every slot from the mesh.
     void rebuild(const rgb::Mesh& mesh);
@@ -81,7 +87,7 @@ public:
                                        std::span<const rgb::VertexId> moved_vertices);
 
     std::span<const SurfaceVertex> vertices() const { return vertices_; }
-    // One per vertex of vertices() with an appearance, else empty.
+    // One per vertex of vertices() with an appearance (since the last rebuild), else empty.
     std::span<const AppearanceVertex> appearance_vertices() const { return appearance_vertices_; }
     // The three positions of face slot f.
     std::array<glm::dvec3, 3> corners(rgb::FaceId f) const {
@@ -108,7 +114,8 @@ private:
     // Corner i of f's normal: its vertex's, except at an infinitely sharp crease (rgb/sharp_features.h),
     // where only the faces on f's side of the creases count, so that the shading breaks along it.
     glm::vec3 corner_normal(const rgb::Mesh& mesh, rgb::FaceId f, int i) const;
-    void write_slot(const rgb::Mesh& mesh, rgb::FaceId f);
+    // `with_look`: the appearance's corners too (a rebuild writes them all at once, in parallel).
+    void write_slot(const rgb::Mesh& mesh, rgb::FaceId f, bool with_look = true);
     void count(std::uint32_t code, int delta);
 
     struct Marks {
@@ -121,6 +128,8 @@ private:
 
     PositionSource source_;
     std::shared_ptr<const SurfaceAppearance> appearance_;
+    std::unique_ptr<AppearanceChannels> channels_;  // over the base mesh of the last rebuild
+    std::vector<std::uint32_t> vertex_rgba_;         // by vertex slot, with vertex colours
     Marks vertex_marks_, face_marks_;
     std::vector<glm::vec3> positions_;  // by vertex slot
     std::vector<glm::vec3> normals_;    // by vertex slot

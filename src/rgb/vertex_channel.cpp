@@ -1,10 +1,12 @@
 #include "rgb/vertex_channel.h"
 
+#include <memory>
 #include <stdexcept>
 #include <string>
 
 #include "rgb/address_index.h"
 #include "rgb/base_mesh.h"
+#include "rgb/hierarchy_evaluator.h"
 #include "rgb/hierarchy_positions.h"
 #include "rgb/loop_geometry.h"
 #include "rgb/mesh.h"
@@ -12,13 +14,35 @@
 
 namespace rgb {
 
-std::vector<glm::dvec3> vertex_channel_values(const Mesh& mesh, std::span<const glm::dvec3> base_values, ChannelLevel level) {
-    const BaseMesh& base = mesh.base();
+namespace {
+
+// The evaluator's values are only a cache: started afresh when large, so memory stays bounded.
+constexpr std::size_t kMaxCachedValues = std::size_t(1) << 18;
+
+// The channel's values stand in for the positions: same faces, same tags, so the same rules.
+BaseMesh channel_mesh(const BaseMesh& base, std::span<const glm::dvec3> base_values) {
     if (base_values.size() != base.num_vertices())
         throw std::invalid_argument("a vertex channel needs one value per base vertex (" + std::to_string(base.num_vertices()) +
                                     "), not " + std::to_string(base_values.size()));
-    // The channel's values stand in for the positions: same faces, same tags, so the same rules.
-    const BaseMesh channel(base_values, base.faces(), base.sharp_features());
+    return BaseMesh(base_values, base.faces(), base.sharp_features());
+}
+
+}  // namespace
+
+VertexChannel::VertexChannel(const BaseMesh& base, std::span<const glm::dvec3> base_values)
+    : channel_(channel_mesh(base, base_values)) {}
+
+VertexChannel::~VertexChannel() = default;
+
+glm::dvec3 VertexChannel::value(const Mesh& mesh, VertexId v, ChannelLevel level) {
+    if (!evaluator_ || evaluator_->cached_values() > kMaxCachedValues) evaluator_ = std::make_unique<HierarchyEvaluator>(channel_);
+    const SurfacePoint p = mesh.address(v);
+    return level == ChannelLevel::Limit ? evaluator_->limit_position(p) : evaluator_->control_point(p, display_level(mesh, v));
+}
+
+std::vector<glm::dvec3> vertex_channel_values(const Mesh& mesh, std::span<const glm::dvec3> base_values, ChannelLevel level) {
+    const BaseMesh& base = mesh.base();
+    const BaseMesh channel = channel_mesh(base, base_values);
     // The live vertices, numbered densely in slot order; base vertices keep their slots 0..n0-1, as
     // hierarchy_values needs.
     std::vector<std::uint32_t> slots;

@@ -56,7 +56,8 @@ TEST(EditorAssets, OpeningShowsTheFilesLookAndSavingKeepsItsLabels) {
     const std::shared_ptr<const render::SurfaceAppearance>& look = editor.document().appearance();
     ASSERT_NE(look, nullptr);
     ASSERT_EQ(look->face_colours.size(), 2u * kCells * kCells);
-    ASSERT_EQ(look->corner_texcoords.size(), 2u * kCells * kCells);
+    ASSERT_TRUE(look->uvs.has_value());
+    ASSERT_EQ(look->uvs->corners.size(), 2u * kCells * kCells);
     ASSERT_EQ(look->vertex_colours.size(), std::size_t{(kCells + 1) * (kCells + 1)});
     const rgb::BaseMesh& base = editor.document().mesh().base();
     for (std::uint32_t f = 0; f < base.num_faces(); ++f) {
@@ -64,7 +65,7 @@ TEST(EditorAssets, OpeningShowsTheFilesLookAndSavingKeepsItsLabels) {
         for (int c = 0; c < 3; ++c) {
             const glm::dvec3& p = base.position(base.face(f)[c]);
             centroid += p / 3.0;
-            EXPECT_EQ((*look->corner_texcoords[f])[c], glm::vec2(p.x / kCells, p.y / kCells));
+            EXPECT_EQ(look->uvs->values[look->uvs->corners[f][c]], glm::dvec2(p.x / kCells, p.y / kCells));
         }
         EXPECT_EQ(*look->face_colours[f], centroid.x < kCells / 2 ? glm::vec3(1, 0, 0) : glm::vec3(0, 0, 1)) << "face " << f;
     }

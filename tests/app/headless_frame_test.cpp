@@ -11,6 +11,8 @@
 
 #include "app/editor.h"
 #include "app/headless_frame.h"
+#include "gl_test_support.h"
+#include "textured_quad.h"
 
 namespace app {
 namespace {
@@ -89,6 +91,58 @@ TEST_F(HeadlessFrameImage, DrawsTheBrushRingAroundTheRestingMouse) {
     EXPECT_GT(orange, 100u) << "a ring of about 2 pi 40 pixels";
     EXPECT_GT(nearest, 20.0) << "hollow";
     EXPECT_LT(furthest, 60.0);
+}
+
+// `rgbsub edit --screenshot --mode texture` on textured_quad.h's square: the mesh's pixels (in the
+// free part, away from the brush ring) by colour class, and the mean column of each class.
+struct TexturedFrame {
+    std::size_t red = 0, blue = 0, neutral = 0, green = 0;
+    double red_x = 0.0, blue_x = 0.0;
+
+    explicit TexturedFrame(const std::string& texture) {
+        const std::filesystem::path folder = std::filesystem::path(::testing::TempDir()) / "frame_texture";
+        HeadlessFrame frame;
+        frame.size = {800, 600};
+        frame.colouring = render::Colouring::Texture;
+        const render::Image image = render_editor_frame(test::write_textured_quad(folder, texture).string(), frame);
+        const glm::vec2 cursor = frame.cursor * glm::vec2(frame.size);
+        const int free_width = 800 - static_cast<int>(kPanelCover);
+        for (int y = 0; y < 560; ++y)  // above the status bar
+            for (int x = 0; x < free_width; ++x) {
+                if (glm::distance(glm::vec2(x, y), cursor) < 60.0f) continue;
+                switch (render_test::classify(image, x, y)) {
+                    case render_test::PixelClass::Red: ++red, red_x += x; break;
+                    case render_test::PixelClass::Blue: ++blue, blue_x += x; break;
+                    case render_test::PixelClass::Neutral: ++neutral; break;
+                    case render_test::PixelClass::Green: ++green; break;
+                    case render_test::PixelClass::Background: break;
+                }
+            }
+        red_x /= std::max<std::size_t>(red, 1);
+        blue_x /= std::max<std::size_t>(blue, 1);
+    }
+};
+
+// The default view looks at the square's front from the front right (+x to the right on screen):
+// the texture's red half (u < 0.5, x < 0.5) shows left of its blue half, each about half the square
+// (perspective makes the nearer one larger); the material's green is not used.
+TEST(HeadlessFrame, TextureModeShowsTheDiffuseTextureOverTheUvs) {
+    const TexturedFrame frame("halves.png");
+    EXPECT_GT(frame.red, 20000u);
+    EXPECT_GT(frame.blue, 20000u);
+    EXPECT_LT(frame.red_x, frame.blue_x);
+    EXPECT_NEAR(static_cast<double>(frame.red) / static_cast<double>(frame.blue), 1.0, 0.4);
+    EXPECT_LT(frame.neutral + frame.green, (frame.red + frame.blue) / 20) << "only filtering at the edges blends the colours";
+}
+
+// A map_Kd that is not there: the square shows the texture checker, light grey and dark blue cells
+// of equal number (8 x 8 over the square), nothing red.
+TEST(HeadlessFrame, TextureModeShowsTheCheckerForAMissingTexture) {
+    const TexturedFrame frame("gone.png");
+    EXPECT_EQ(frame.red, 0u);
+    EXPECT_EQ(frame.green, 0u);
+    EXPECT_GT(frame.blue, 20000u);
+    EXPECT_NEAR(static_cast<double>(frame.neutral) / static_cast<double>(frame.blue), 1.0, 0.3);
 }
 
 TEST(HeadlessFrame, ALoadErrorIsReported) {

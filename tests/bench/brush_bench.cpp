@@ -9,6 +9,8 @@
 //   - the press that starts a stroke,
 //   - undo and redo of the stroke, with its splits, and of a shorter stroke of about 10k splits.
 // Run on demand: ./brush_bench [levels...]   (default: 4 5, i.e. 940k and 3.8M triangles)
+// RGBSUB_BENCH_MESH=FILE.obj replays the path on that file instead, opened with its look (materials,
+// texture coordinates, colours: the display's exact channels are then timed too).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -20,7 +22,7 @@
 
 #include "app/editor.h"
 #include "app/job_pacer.h"
-#include "io/mesh_file.h"
+#include "app/loaded_document.h"
 #include "rgb/refine.h"
 
 namespace {
@@ -149,15 +151,19 @@ int main(int argc, char** argv) {
     std::vector<int> levels;
     for (int i = 1; i < argc; ++i) levels.push_back(std::atoi(argv[i]));
     if (levels.empty()) levels = {4, 5};
-    const std::string bunny = std::string(RGBSUB_SOURCE_DIR) + "/assets/bunny.obj";
+    const char* file = std::getenv("RGBSUB_BENCH_MESH");
+    const std::string path = file ? file : std::string(RGBSUB_SOURCE_DIR) + "/assets/bunny.obj";
     for (int level : levels) {
-        rgb::Mesh mesh = rgbio::load_mesh(bunny);
-        rgb::refine_uniform(mesh, level);
-        std::printf("bunny at level %d: %zu triangles\n", level, mesh.num_faces());
-        app::Editor editor(kViewport);
+        app::LoadedDocument loaded = app::load_document(path, render::PositionSource::Displayed);
+        rgb::refine_uniform(loaded.mesh, level);
+        std::printf("%s at level %d: %zu triangles\n", path.c_str(), level, loaded.mesh.num_faces());
         auto start = Clock::now();
-        editor.document().adopt(std::move(mesh), "");
-        std::printf("  adopting it (display geometry and picking index) %.0f ms\n", ms_since(start));
+        loaded.geometry.rebuild(loaded.mesh);
+        loaded.index.rebuild(loaded.mesh, loaded.geometry);
+        std::printf("  its display geometry%s and picking index %.0f ms\n", loaded.geometry.appearance() ? " with the file's look" : "",
+                    ms_since(start));
+        app::Editor editor(kViewport);
+        editor.document().adopt(std::move(loaded), path);
         editor.reset_view();
         pick_rays(editor);
         // A brush of about 4000 triangles at this level, one level deeper: about 10k splits a stroke.

@@ -59,6 +59,8 @@ TEST_F(ExitCodes, EveryCommandFollowsTheReadmeTable) {
 
     const std::vector<Case> cases{
         {{"edit", mesh, "--screenshot", png}, "ok"},
+        {{"edit", mesh, "--screenshot", png, "--mode", "texture"}, "ok"},
+        {{"edit", mesh, "--screenshot", png, "--mode", "textures"}, "usage error"},
         {{"edit", "-x"}, "usage error"},
         {{"edit", mesh, "--screenshot", png, "--screenshot", png}, "usage error"},
         {{"edit", broken, "--screenshot", png}, "bad input"},

@@ -27,7 +27,7 @@ protected:
         args.insert(args.end(), options.begin(), options.end());
         const test::CommandRun run = test::run_command(args);
         EXPECT_EQ(run.exit_code, 0) << run.err;
-        return render::read_png(path("out.png"));
+        return render::read_image(path("out.png"));
     }
     // The octahedron refined to level 4 in a sphere of radius 0.6 around its +x corner: five levels
     // and all three colours (`rgbsub info` counts 280 green, 68 red and 12 blue triangles).

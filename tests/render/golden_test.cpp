@@ -92,7 +92,7 @@ TEST_P(Golden, MatchesTheReviewedImage) {
         std::cout << "wrote " << path << '\n';
         return;
     }
-    const Image golden = render::read_png(path);
+    const Image golden = render::read_image(path);
     ASSERT_EQ(golden.width, image.width);
     ASSERT_EQ(golden.height, image.height);
     std::size_t differing = 0;
@@ -116,7 +116,7 @@ constexpr glm::ivec2 kGoldenSize{256, 256};
 
 class GoldenImage : public ::testing::Test {
 protected:
-    static Image load(const std::string& name) { return render::read_png(std::filesystem::path(RGBSUB_GOLDEN_DIR) / (name + ".png")); }
+    static Image load(const std::string& name) { return render::read_image(std::filesystem::path(RGBSUB_GOLDEN_DIR) / (name + ".png")); }
     // The camera render_headless framed `bounds` with (256x256, azimuth 30, elevation 20).
     void frame(const render::BoundingSphere& bounds) {
         camera_ = render::framing_camera(bounds, {kGoldenSize, 30.0f, 20.0f});
