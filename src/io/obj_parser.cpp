@@ -410,7 +410,8 @@ ObjRecords parse_obj_in_blocks(std::string_view text, const std::string& file, s
     }
     // Each block is parsed knowing what the blocks before it define; that takes a quick pass over
     // them first, itself in parallel. The first block's records, which the others join, are sized
-    // for the whole file at once.
+    // for the whole file at once; the others for their own lines (grown by doubling, they would copy
+    // and fault in up to twice their pages, and the slowest block holds up the join).
     std::vector<LinesBefore> summaries(blocks.size());
     rgb::parallel_blocks_for(summaries.size(), summaries.size(),
                              [&](std::size_t b, std::size_t, std::size_t) { summaries[b] = summarize_lines(blocks[b]); });
@@ -422,7 +423,7 @@ ObjRecords parse_obj_in_blocks(std::string_view text, const std::string& file, s
     std::vector<std::uint8_t> failed(blocks.size(), 0);
     rgb::parallel_blocks_for(blocks.size(), blocks.size(), [&](std::size_t b, std::size_t, std::size_t) {
         try {
-            records_of[b] = parse_lines(blocks[b], before[b], file, b == 0 ? before.back() : LinesBefore{}, &parsed);
+            records_of[b] = parse_lines(blocks[b], before[b], file, b == 0 ? before.back() : summaries[b], &parsed);
         } catch (const ObjError&) {
             if (b == 0) throw;
             failed[b] = 1;

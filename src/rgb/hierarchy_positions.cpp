@@ -46,9 +46,9 @@ public:
     using Values = std::array<glm::dvec3, C>;
 
     Evaluation(std::array<const BaseMesh*, C> bases, std::span<const SurfacePoint> points, const AddressIndex& index)
-        : bases_(bases), base_(*bases[0]), points_(points), index_(index), limit_(points.size()),
-          limit_state_(new std::atomic<std::uint8_t>[points.size()]()), blocks_(parallel_blocks(points.size(), 1 << 14)) {
-        insertion_.resize(points.size());
+        : bases_(bases), base_(*bases[0]), points_(points), index_(index), insertion_(new Values[points.size()]),
+          limit_(new Values[points.size()]), limit_state_(new std::atomic<std::uint8_t>[points.size()]()),
+          blocks_(parallel_blocks(points.size(), 1 << 14)) {
         if (base_.has_sharp_features()) {
             tagged_.resize(points.size());
             for (std::size_t v = 0; v < points.size(); ++v) tagged_[v] = !follows_untagged_rules(base_, points[v]);
@@ -161,8 +161,9 @@ public:
 
     // The insertion values of values set c.
     std::vector<glm::dvec3> insertions(std::size_t c) const {
-        std::vector<glm::dvec3> values(points_.size());
-        for (std::size_t v = 0; v < points_.size(); ++v) values[v] = insertion_[v][c];
+        std::vector<glm::dvec3> values;
+        values.reserve(points_.size());
+        for (std::size_t v = 0; v < points_.size(); ++v) values.push_back(insertion_[v][c]);
         return values;
     }
 
@@ -200,8 +201,11 @@ private:
     const AddressIndex& index_;
     std::vector<bool> tagged_;  // per vertex, whether the tags change its rules; empty without tags
     std::vector<double> base_gamma_;
-    std::vector<Values> insertion_;
-    std::vector<Values> limit_;
+    // Per vertex, left uninitialised (no pass zero-fills megabytes that are written anyway): every
+    // insertion value is written before it is read (coarser levels first), and a limit is read only
+    // once its state says known, so most of limit_'s pages are never touched at all.
+    std::unique_ptr<Values[]> insertion_;
+    std::unique_ptr<Values[]> limit_;
     std::unique_ptr<std::atomic<std::uint8_t>[]> limit_state_;
     std::size_t blocks_;
     std::vector<HierarchyEvaluator> evaluators_;  // C per block (block * C + c): each caches as it goes
@@ -221,9 +225,13 @@ std::vector<glm::dvec3> values_at(Evaluation<C>& evaluation, std::span<const std
 // The positions' part of the pass: insertion values, and the limits wanted (and any computed on the way).
 template <std::size_t C>
 HierarchyPositions positions(Evaluation<C>& evaluation, std::span<const std::uint32_t> order, std::span<const std::uint8_t> want_limit) {
-    evaluation.in_parallel(order, [&](std::uint32_t v, std::size_t block) {
-        if (want_limit[v]) evaluation.limit(v, block);
-    });
+    // Only the vertices whose limit is wanted are cut into blocks: they gather where the order puts
+    // them (the base vertices of a uniformly refined mesh all come first), so cutting the whole order
+    // would leave one block all the work. Which limits get computed does not depend on the cut.
+    std::vector<std::uint32_t> wanted;
+    for (std::uint32_t v : order)
+        if (want_limit[v]) wanted.push_back(v);
+    evaluation.in_parallel(wanted, [&](std::uint32_t v, std::size_t block) { evaluation.limit(v, block); });
     return {evaluation.insertions(0), evaluation.known_limits(0)};
 }
 
