@@ -13,6 +13,7 @@
 #include "io/state_line_reader.h"
 #include "rgb/loop_geometry.h"
 #include "rgb/mesh.h"
+#include "rgb/parallel.h"
 
 namespace rgbio {
 
@@ -28,6 +29,39 @@ void append_number(std::string& out, std::uint64_t x) {
 }
 
 constexpr std::size_t kNoLine = static_cast<std::size_t>(-1);
+
+// The addresses of one "a" record, after its keyword.
+void read_address_record(StateLineReader& r, std::vector<rgb::SurfacePoint>& addresses) {
+    while (!r.at_end()) {
+        rgb::SurfacePoint p;
+        p.face = r.number<std::uint32_t>();
+        p.a[1] = r.number<std::uint32_t>();
+        p.a[2] = r.number<std::uint32_t>();
+        p.level = static_cast<int>(r.number<unsigned>(30));
+        const std::uint64_t total = std::uint64_t(1) << p.level;
+        if (std::uint64_t(p.a[1]) + p.a[2] > total) r.fail("an address lies outside its base face");
+        p.a[0] = static_cast<std::uint32_t>(total - p.a[1] - p.a[2]);
+        addresses.push_back(p);
+    }
+}
+
+bool is_address_record(const ObjStateLine& line, const std::string& file) { return StateLineReader(line, file).word() == "a"; }
+
+// A run of "a" records (one per vertex of a saved file, millions of numbers: most of the state's
+// reading time) read in parallel blocks of lines and appended in order. Each block stops at its first
+// problem and the lowest block's is reported: the first in line order, as a plain loop reports it.
+void read_address_records(std::span<const ObjStateLine> run, const std::string& file, std::vector<rgb::SurfacePoint>& addresses) {
+    std::vector<std::vector<rgb::SurfacePoint>> parts(rgb::parallel_blocks(run.size(), 1 << 12));
+    rgb::parallel_blocks_for(run.size(), parts.size(), [&](std::size_t b, std::size_t begin, std::size_t end) {
+        parts[b].reserve((end - begin) * kPerLine);
+        for (std::size_t i = begin; i < end; ++i) {
+            StateLineReader r(run[i], file);
+            r.word();
+            read_address_record(r, parts[b]);
+        }
+    });
+    for (const std::vector<rgb::SurfacePoint>& part : parts) addresses.insert(addresses.end(), part.begin(), part.end());
+}
 
 // The position a v line of the saved file holds.
 glm::dvec3 written_position(const rgb::Mesh& mesh, rgb::VertexId v, bool limit_positions) {
@@ -239,7 +273,9 @@ std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const
     std::vector<ObjStateLine> tag_records;  // version 4
     FaceLabelSectionReader face_labels(file);
     bool ended = false;
-    for (const ObjStateLine& line : lines.subspan(1)) {
+    const std::span<const ObjStateLine> records = lines.subspan(1);
+    for (std::size_t i = 0; i < records.size(); ++i) {
+        const ObjStateLine& line = records[i];
         StateLineReader r(line, file);
         if (ended) r.fail("#rgb line after '#rgb end'");
         if (face_labels.take(line)) continue;
@@ -295,17 +331,12 @@ std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const
             }
         } else if (kind == "a") {
             if (section != Section::Addresses) r.fail("addresses outside their section");
-            while (!r.at_end()) {
-                rgb::SurfacePoint p;
-                p.face = r.number<std::uint32_t>();
-                p.a[1] = r.number<std::uint32_t>();
-                p.a[2] = r.number<std::uint32_t>();
-                p.level = static_cast<int>(r.number<unsigned>(30));
-                const std::uint64_t total = std::uint64_t(1) << p.level;
-                if (std::uint64_t(p.a[1]) + p.a[2] > total) r.fail("an address lies outside its base face");
-                p.a[0] = static_cast<std::uint32_t>(total - p.a[1] - p.a[2]);
-                addresses.push_back(p);
-            }
+            // The lines up to the next other record are "a" records of this section too (nothing in
+            // between can end it or belong to another section), read here at once.
+            std::size_t run_end = i + 1;
+            while (run_end < records.size() && is_address_record(records[run_end], file)) ++run_end;
+            read_address_records(records.subspan(i, run_end - i), file, addresses);
+            i = run_end - 1;
         } else if (kind == "uv-interpolation" || kind == "uv" || kind == "uv-faces" || kind == "uv-untextured") {
             if (section != Section::BaseUvs) r.fail("texture coordinates outside their section");
             uv_records.push_back(line);

@@ -227,5 +227,33 @@ TEST(StateFormat, ARunLongerThanItsSectionIsAnError) {
     EXPECT_NE(e.reason().find("section 'base-vertices' announces"), std::string::npos) << e.what();
 }
 
+// The address lines of a large mesh are read in parallel blocks of lines (state_format.cpp); a
+// problem is still reported at its own line, and of two, the first in the file.
+TEST(StateFormat, TheFirstBrokenAddressLineIsNamedInALongSection) {
+    rgb::Mesh mesh = torus();
+    rgb::set_level(mesh, 4);  // 768 * 4^4 faces, half as many vertices: over 10,000 address lines
+    const std::string text = format_obj(mesh, {});
+    std::vector<std::size_t> address_starts;  // offsets of the "#rgb a " lines
+    for (std::size_t at = text.find("\n#rgb a "); at != std::string::npos; at = text.find("\n#rgb a ", at + 1))
+        address_starts.push_back(at + 1);
+    ASSERT_GT(address_starts.size(), 10000u);
+    // Breaks the first number of the address line at `offset`; gives the line's 1-based number.
+    auto break_line = [](std::string& file, std::size_t offset) {
+        file[offset + 7] = 'x';
+        return static_cast<std::size_t>(std::count(file.begin(), file.begin() + static_cast<std::ptrdiff_t>(offset), '\n')) + 1;
+    };
+    const std::size_t early = address_starts[address_starts.size() / 4], late = address_starts[3 * address_starts.size() / 4];
+    std::string late_only = text;
+    const std::size_t late_line = break_line(late_only, late);
+    const ObjError late_error = test::load_error(late_only);
+    EXPECT_EQ(late_error.problem(), ObjProblem::BadState);
+    EXPECT_EQ(late_error.line(), late_line) << late_error.what();
+    std::string both = late_only;
+    const std::size_t early_line = break_line(both, early);
+    const ObjError first_error = test::load_error(both);
+    EXPECT_EQ(first_error.line(), early_line) << first_error.what();
+    EXPECT_NE(first_error.reason().find("expected a number, found 'x"), std::string::npos) << first_error.what();
+}
+
 }  // namespace
 }  // namespace rgbio
