@@ -272,11 +272,16 @@ Mesh restore_state(const MeshState& s, const ProgressSpan& progress, RestoredCha
             m.face_count_ = nf;
         });
     progress.reach(kMatched);
-    for (std::uint32_t v = 0; v < nv; ++v) {
-        const auto group = out.of(v);
-        if (group.empty()) fail("vertex " + std::to_string(v) + " is used by no face");
-        m.set_vertex_halfedge(VertexId(v), OutgoingHalfedges::halfedge(group.front()));
-    }
+    // Each vertex's outgoing halfedge (a boundary vertex's takes a walk round it), in parallel: a
+    // block stops at its first unused vertex and the lowest block's is reported, the first in order.
+    parallel_for(nv, 1 << 15, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+            const auto v = static_cast<std::uint32_t>(i);
+            const auto group = out.of(v);
+            if (group.empty()) fail("vertex " + std::to_string(v) + " is used by no face");
+            m.set_vertex_halfedge(VertexId(v), OutgoingHalfedges::halfedge(group.front()));
+        }
+    });
     out = {};
     // Faces: their colour, level and red edge follow from where their corners are (spec §1.3).
     std::vector<std::uint32_t> untyped(parallel_blocks(nf, 1 << 14), BaseMesh::kNone);

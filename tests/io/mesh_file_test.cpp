@@ -6,6 +6,8 @@
 #include <iterator>
 #include <set>
 #include <sstream>
+#include <stdexcept>
+#include <string>
 
 #include <unistd.h>
 
@@ -104,6 +106,33 @@ TEST(MeshFile, MeshWithBoundaryRestoresBitForBit) {
     const rgb::Mesh restored = round_trip(mesh);
     EXPECT_TRUE(rgbtest::same_mesh(restored, mesh));
     expect_same_state(rgb::capture_state(restored), rgb::capture_state(mesh));
+}
+
+// restore_state finds each vertex's halfedge in parallel blocks of vertices: of two vertices that
+// no face uses, the first in vertex order is named, whichever block it is in.
+TEST(MeshFile, TheFirstVertexUsedByNoFaceIsNamed) {
+    rgb::Mesh mesh = build_mesh(read_obj_text(grid_obj(64), "grid.obj"));
+    rgb::set_level(mesh, 2);  // (4 * 64 + 1)^2 = 66,049 vertices: two blocks of 2^15 or more
+    const rgb::MeshState state = rgb::capture_state(mesh);
+    ASSERT_EQ(state.vertices.size(), 66049u);
+    const std::uint32_t early = 16500, late = 49500;
+    auto without_faces_of = [&](std::initializer_list<std::uint32_t> vertices) {
+        rgb::MeshState cut = state;
+        std::erase_if(cut.faces, [&](const rgb::Triangle& t) {
+            return std::any_of(vertices.begin(), vertices.end(), [&](std::uint32_t v) { return std::find(t.begin(), t.end(), v) != t.end(); });
+        });
+        return cut;
+    };
+    auto problem = [](const rgb::MeshState& cut) {
+        try {
+            rgb::restore_state(cut);
+        } catch (const std::invalid_argument& e) {
+            return std::string(e.what());
+        }
+        return std::string("restored");
+    };
+    EXPECT_EQ(problem(without_faces_of({late})), "invalid RGB state: vertex 49500 is used by no face");
+    EXPECT_EQ(problem(without_faces_of({early, late})), "invalid RGB state: vertex 16500 is used by no face");
 }
 
 TEST(MeshFile, RefiningAfterLoadingMatchesRefiningWithoutSaving) {
