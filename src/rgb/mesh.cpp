@@ -142,14 +142,25 @@ int Mesh::valence(VertexId v) const {
     return is_boundary(v) ? n + 1 : n;
 }
 
+namespace {
+// Capacity for `more` elements beyond the size, growing geometrically like push_back would.
+template <class Vector>
+void room_for(Vector& v, std::size_t more) {
+    if (v.capacity() - v.size() < more) v.reserve(std::max(2 * v.capacity(), v.size() + more));
+}
+}  // namespace
+
+// Geometric like the rest: a string of reservations a little larger each time (one per brush dab)
+// must not copy the whole mesh each time.
 void Mesh::reserve(std::size_t faces, std::size_t vertices) {
-    face_vertices_.reserve(faces);
-    face_code_.reserve(faces);
-    opposite_.reserve(3 * faces);
-    insertion_position_.reserve(vertices);
-    vertex_halfedge_.reserve(vertices);
-    vertex_info_.reserve(vertices);
-    address_.reserve(vertices);
+    const auto up_to = [](auto& v, std::size_t n) { room_for(v, n > v.size() ? n - v.size() : 0); };
+    up_to(face_vertices_, faces);
+    up_to(face_code_, faces);
+    up_to(opposite_, 3 * faces);
+    up_to(insertion_position_, vertices);
+    up_to(vertex_halfedge_, vertices);
+    up_to(vertex_info_, vertices);
+    up_to(address_, vertices);
 }
 
 void Mesh::add_observer(MeshObserver* o) { observers_.push_back(o); }
@@ -179,13 +190,6 @@ SurfacePoint Mesh::new_vertex_address(const NewVertex& added) const {
                          : canonical(*base_, midpoint(*base_, address(added.a), address(added.b)));
 }
 
-namespace {
-// Capacity for `more` elements beyond the size, growing geometrically like push_back would.
-template <class Vector>
-void room_for(Vector& v, std::size_t more) {
-    if (v.capacity() - v.size() < more) v.reserve(std::max(2 * v.capacity(), v.size() + more));
-}
-}  // namespace
 
 void Mesh::make_room(std::size_t faces_released, std::size_t faces_added, std::size_t vertices_released, bool vertex_added) {
     room_for(free_faces_, faces_released);

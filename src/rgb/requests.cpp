@@ -284,14 +284,13 @@ private:
 };
 
 // Room for what the request may add at once (estimated_triangles, an upper estimate), so that a large
-// request does not regrow the arrays on the way; at least double the slots, so that small requests
-// after one another keep the amortised growth of doubling instead of copying the mesh each time.
+// request does not regrow the arrays on the way (Mesh::reserve grows geometrically, so small requests
+// after one another keep the amortised cost of doubling).
 void reserve_for(Mesh& mesh, const LevelRequest& request) {
     const double estimate = estimated_triangles(mesh, request);
     if (!(estimate > static_cast<double>(mesh.face_capacity()))) return;
     const std::size_t added = static_cast<std::size_t>(estimate) - mesh.num_faces();
-    mesh.reserve(std::max(mesh.num_faces() + added, 2 * mesh.face_capacity()),
-                 std::max(mesh.num_vertices() + added / 2, 2 * mesh.vertex_capacity()));
+    mesh.reserve(mesh.num_faces() + added, mesh.num_vertices() + added / 2);
 }
 
 // Level by level, like uniform refinement: a request for level N is the requests for levels 1..N in
