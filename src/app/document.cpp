@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <new>
 #include <span>
 #include <utility>
 
@@ -28,6 +29,8 @@ void Document::adopt(LoadedDocument loaded, std::string path, bool dirty) {
     faces_caught_up_ = vertices_caught_up_ = 0;
     geometry_ = std::move(loaded.geometry);
     index_ = std::move(loaded.index);
+    room_ = 0;
+    keep_room(mesh_.num_faces());  // nothing to copy when the file's thread reserved it (load_document)
     uv_channel_ = std::move(loaded.uvs);
     uv_layout_.reset();
     display_changes_ = DisplayChanges{{}, true};
@@ -95,7 +98,22 @@ void Document::saved_as(const std::string& path, std::uint64_t changes) {
     dirty_ = dirty_ && changes != changes_count_;
 }
 
-void Document::begin_edit(std::string label) { history_.begin_edit(std::move(label)); }
+void Document::begin_edit(std::string label) {
+    keep_room_for_edit();
+    history_.begin_edit(std::move(label));
+}
+
+void Document::keep_room(std::size_t faces) {
+    if (faces <= room_) return;
+    try {
+        app::reserve_room(mesh_, geometry_, index_, kRoomFactor * faces);
+        room_ = kRoomFactor * faces;
+    } catch (const std::bad_alloc&) {
+        // No room now: the arrays grow as the work goes, and work stops cleanly if memory runs out.
+    }
+}
+
+void Document::keep_room_for_edit() { keep_room(mesh_.num_faces() + mesh_.num_faces() / 4); }
 
 void Document::end_edit(bool changed, std::optional<std::string> script) {
     history_.end_edit(changed, std::move(script));
@@ -110,6 +128,7 @@ bool Document::undo() { return step(&UndoHistory::undo); }
 bool Document::redo() { return step(&UndoHistory::redo); }
 
 bool Document::step(bool (UndoHistory::*cross)()) {
+    keep_room_for_edit();
     const std::uint64_t base = mesh_.base().serial();
     if (!(history_.*cross)()) return false;
     dirty_ = true;
@@ -203,7 +222,8 @@ std::optional<SurfaceHit> Document::pick(const Ray& ray) { return index_.pick(ge
 
 void Document::replace_mesh(rgb::Mesh mesh) {
     mesh_ = std::move(mesh);  // observers stay with the object
-    app::reserve_room(mesh_, geometry_, index_, kRoomFactor * mesh_.num_faces());
+    room_ = 0;
+    keep_room(mesh_.num_faces());
     resync();
 }
 

@@ -307,11 +307,7 @@ void Editor::start_flood_fill(int level) {
         return;
     }
     keep_recovery_copy(true);
-    try {
-        document_.reserve_room(static_cast<std::size_t>(rgb::estimated_triangles(document_.mesh(), everywhere)));
-    } catch (const std::bad_alloc&) {
-        // No room now: the arrays grow as the job goes, and the job stops cleanly if memory runs out.
-    }
+    document_.keep_room(static_cast<std::size_t>(rgb::estimated_triangles(document_.mesh(), everywhere)));
     queue(make_flood_fill(document_.mesh(), level));
 }
 
@@ -324,6 +320,7 @@ void Editor::start_auto_lod() {
         return;
     }
     keep_recovery_copy(true);
+    document_.keep_room(auto_lod_settings_.triangle_budget);
     queue(std::make_unique<AutoLodJob>(document_.mesh(), auto_lod_settings_));
 }
 
