@@ -17,7 +17,6 @@
 namespace app {
 namespace {
 
-constexpr double kHistogramRefreshS = 0.25;
 const ImVec4 kErrorColour{1.0f, 0.45f, 0.4f, 1.0f};
 const ImVec4 kNoteColour{0.7f, 0.9f, 0.7f, 1.0f};
 const ImVec4 kInvertedColour{0.45f, 0.7f, 1.0f, 1.0f};
@@ -224,20 +223,18 @@ void display_panel(render::RenderOptions& options) {
     ImGui::TextDisabled("back faces (through holes): brick-red");
 }
 
-void statistics_panel(Editor& editor, PanelState& state, double dt_s) {
+// The colour and level counts are the displayed triangles' (kept as the display follows the mesh,
+// so they cost nothing per frame at any size).
+void statistics_panel(Editor& editor, PanelState& state) {
     if (!ImGui::CollapsingHeader("Statistics")) return;
     const rgb::Mesh& mesh = editor.document().mesh();
-    state.histogram_age_s += dt_s;
-    if (state.histogram_age_s >= kHistogramRefreshS) {
-        state.faces_per_level.clear();
-        for (rgb::FaceId f : mesh.faces()) ++state.faces_per_level[mesh.level(f)];
-        state.histogram_age_s = 0.0;
-    }
     const render::SurfaceGeometry& geometry = editor.document().shown();
     ImGui::Text("V %zu   F %zu", mesh.num_vertices(), mesh.num_faces());
     ImGui::Text("green %zu  red %zu  blue %zu", geometry.triangles_of(rgb::Colour::Green),
                 geometry.triangles_of(rgb::Colour::Red), geometry.triangles_of(rgb::Colour::Blue));
-    for (const auto& [level, count] : state.faces_per_level) {
+    for (int level = 0; level <= geometry.max_face_level(); ++level) {
+        const std::size_t count = geometry.triangles_at(level);
+        if (count == 0) continue;
         const glm::vec3 c = render::level_colour(level);
         ImGui::TextColored(ImVec4(c.r, c.g, c.b, 1.0f), "level %2d", level);
         ImGui::SameLine();
@@ -304,7 +301,7 @@ void status_bar(Editor& editor) {
 
 }  // namespace
 
-void draw_panels(Editor& editor, PanelState& state, render::RenderOptions& options, double dt_s) {
+void draw_panels(Editor& editor, PanelState& state, render::RenderOptions& options) {
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     // Anchored to the right edge at every size, above the status bar; framing keeps the mesh clear of it.
     ImGui::SetNextWindowPos(ImVec2(display.x - kPanelWidth - 8.0f, 8.0f), ImGuiCond_Always);
@@ -319,7 +316,7 @@ void draw_panels(Editor& editor, PanelState& state, render::RenderOptions& optio
         detail_panel(editor);
         files_panel(editor, state);
         display_panel(options);
-        statistics_panel(editor, state, dt_s);
+        statistics_panel(editor, state);
         shortcuts_panel();
         ImGui::PopItemWidth();
     }

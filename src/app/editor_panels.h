@@ -7,7 +7,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
-#include <map>
 #include <string>
 
 #include "render/renderer.h"
@@ -34,14 +33,11 @@ struct PanelState {
     std::uint64_t seen_open_failures = 0;
     int flood_level = 2;
     double frame_ms = 0.0;  // the window's own work in the last frame, not the wait for input
-    // Level histogram, refreshed now and then (it costs a pass over the faces).
-    std::map<int, std::size_t> faces_per_level;
-    double histogram_age_s = 1e9;
     FileBrowser browser;
     bool panel_open = true;
 };
 
 // Draws every panel and applies what the user did to `editor` and `options`.
-void draw_panels(Editor& editor, PanelState& state, render::RenderOptions& options, double dt_s);
+void draw_panels(Editor& editor, PanelState& state, render::RenderOptions& options);
 
 }  // namespace app

@@ -6,9 +6,9 @@
 
 namespace app {
 
-void EditorView::draw(Editor& editor, glm::ivec2 framebuffer, double dt_s, bool show_cursor) {
+void EditorView::draw(Editor& editor, glm::ivec2 framebuffer, bool show_cursor) {
     Document& document = editor.document();
-    draw_panels(editor, panels_, options_, dt_s);
+    draw_panels(editor, panels_, options_);
     options_.bottom_inset_px = kStatusBarHeight;
     // The document's displayed triangles as far as they have caught up (Editor::update), which
     // picking uses too: the renderer uploads what changed.

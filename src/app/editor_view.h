@@ -19,7 +19,7 @@ public:
 
     // Builds the ImGui frame (between ImGui::NewFrame and ImGui::Render) and draws the mesh.
     // Call ImGui_ImplOpenGL3_RenderDrawData afterwards.
-    void draw(Editor& editor, glm::ivec2 framebuffer, double dt_s, bool show_cursor);
+    void draw(Editor& editor, glm::ivec2 framebuffer, bool show_cursor);
 
     render::RenderOptions& options() { return options_; }
     // The window's own work in the last frame (the wait for input left out), for the statistics.

@@ -174,7 +174,6 @@ void run_loop(GLFWwindow* window, WindowState& state, const WindowLaunch& launch
     EditorView view;
     JobPacer pacer;
     std::string title;
-    auto last = Clock::now();
     bool file_shown = !launch.file;
     int frames_after_shown = 0;
     // Read in the background, so the window is there at once; after the recovery question, if
@@ -211,15 +210,12 @@ void run_loop(GLFWwindow* window, WindowState& state, const WindowLaunch& launch
             title = editor.window_title();
             glfwSetWindowTitle(window, title.c_str());
         }
-        const auto now = Clock::now();
-        const double dt = std::chrono::duration<double>(now - last).count();
-        last = now;
         ImGui_ImplOpenGL3_NewFrame();
         ImGui_ImplGlfw_NewFrame();
         ImGui::NewFrame();
         const bool hovered = glfwGetWindowAttrib(window, GLFW_HOVERED) != 0;
         // A panel button may start work that fails; ImGui's window stack is then closed for it.
-        if (!editor.run_guarded([&] { view.draw(editor, {fw, fh}, dt, hovered); })) ImGui::ErrorCheckEndFrameRecover(nullptr);
+        if (!editor.run_guarded([&] { view.draw(editor, {fw, fh}, hovered); })) ImGui::ErrorCheckEndFrameRecover(nullptr);
         ImGui::Render();
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
         glfwSwapBuffers(window);

@@ -54,7 +54,7 @@ render::Image render_editor_frame(const std::string& file, const HeadlessFrame& 
     for (int i = 0; i < kSettleFrames; ++i) {
         ImGui_ImplOpenGL3_NewFrame();
         ImGui::NewFrame();
-        view.draw(editor, frame.size, io.DeltaTime, true);
+        view.draw(editor, frame.size, true);
         ImGui::Render();
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     }

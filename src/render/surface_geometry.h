@@ -95,8 +95,10 @@ public:
                 glm::dvec3(vertices_[3 * f.idx + 2].position)};
     }
     std::size_t face_slots() const { return vertices_.size() / 3; }
-    // Live triangles of each colour and the highest face level present.
+    // Live triangles of each colour and of each level (kept as slots are written, so reading them
+    // costs nothing at any size), and the highest face level present.
     std::size_t triangles_of(rgb::Colour colour) const { return colour_counts_[static_cast<int>(colour)]; }
+    std::size_t triangles_at(int level) const { return level_counts_[static_cast<std::size_t>(level)]; }
     int max_face_level() const;
     // The position shown for vertex slot v (live).
     const glm::vec3& position(rgb::VertexId v) const { return positions_[v.idx]; }

@@ -3,6 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <random>
+#include <span>
 #include <vector>
 
 #include "render/mesh_changes.h"
@@ -69,6 +72,42 @@ TEST_P(SurfaceGeometryTest, ColourCountsFollowTheMesh) {
     EXPECT_EQ(geometry.triangles_of(rgb::Colour::Blue), counts[2]);
     EXPECT_GT(counts[1] + counts[2], 0u) << "a local refinement leaves red/blue transition triangles";
     EXPECT_EQ(geometry.max_face_level(), max_level);
+}
+
+// What the statistics panel shows: the counts kept as slots are written against a count of the
+// mesh's faces, through random refinements and coarsenings (each update a part, as the editor's
+// display catches up).
+TEST_P(SurfaceGeometryTest, LevelAndColourCountsKeptIncrementallyEqualARecountAfterRandomEdits) {
+    rgb::Mesh mesh = render_test::icosphere(1);
+    MeshChanges changes(mesh);
+    SurfaceGeometry geometry(GetParam());
+    geometry.rebuild(mesh);
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> coordinate(-1.0, 1.0), radius(0.2, 0.8);
+    std::uniform_int_distribution<int> level(0, 4);
+    int deepest = 0;
+    for (int edit = 0; edit < 12; ++edit) {
+        rgb::set_level(mesh, level(random), rgb::Sphere{{coordinate(random), coordinate(random), coordinate(random)}, radius(random)});
+        const std::span<const rgb::FaceId> faces = changes.changed_faces();
+        const std::size_t half = faces.size() / 2;
+        geometry.update_part(mesh, faces.first(half), {});
+        geometry.update_part(mesh, faces.subspan(half), changes.moved_vertices());
+        changes.clear();
+
+        std::array<std::size_t, 256> per_level{};
+        std::array<std::size_t, 3> per_colour{};
+        for (rgb::FaceId f : mesh.faces()) {
+            ++per_level[static_cast<std::size_t>(mesh.level(f))];
+            ++per_colour[static_cast<std::size_t>(mesh.colour(f))];
+        }
+        SCOPED_TRACE(testing::Message() << "after edit " << edit << ", " << mesh.num_faces() << " faces");
+        for (int l = 0; l < 256; ++l) ASSERT_EQ(geometry.triangles_at(l), per_level[static_cast<std::size_t>(l)]) << "level " << l;
+        EXPECT_EQ(geometry.triangles_of(rgb::Colour::Green), per_colour[0]);
+        EXPECT_EQ(geometry.triangles_of(rgb::Colour::Red), per_colour[1]);
+        EXPECT_EQ(geometry.triangles_of(rgb::Colour::Blue), per_colour[2]);
+        deepest = std::max(deepest, geometry.max_face_level());
+    }
+    EXPECT_GE(deepest, 3) << "the edits reached deep levels";
 }
 
 INSTANTIATE_TEST_SUITE_P(Positions, SurfaceGeometryTest, ::testing::Values(PositionSource::Displayed, PositionSource::Limit));
