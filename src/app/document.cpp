@@ -123,14 +123,14 @@ void Document::end_edit(bool changed, std::optional<std::string> script) {
 
 bool Document::abandon_edit() { return history_.abandon_edit(); }
 
-bool Document::undo() { return step(&UndoHistory::undo); }
+bool Document::begin_undo() { return begin_crossing(&UndoHistory::begin_undo); }
 
-bool Document::redo() { return step(&UndoHistory::redo); }
+bool Document::begin_redo() { return begin_crossing(&UndoHistory::begin_redo); }
 
-bool Document::step(bool (UndoHistory::*cross)()) {
+bool Document::begin_crossing(bool (UndoHistory::*begin)()) {
     keep_room_for_edit();
     const std::uint64_t base = mesh_.base().serial();
-    if (!(history_.*cross)()) return false;
+    if (!(history_.*begin)()) return false;
     dirty_ = true;
     ++changes_count_;
     // A retag moved every vertex without telling the observers.

@@ -59,8 +59,13 @@ public:
     // Puts the mesh back as it was at begin_edit, leaving no step; false if no edit is under way.
     // Throws std::logic_error if it cannot (the history is then cleared).
     bool abandon_edit();
-    bool undo();
-    bool redo();
+    // Undo and redo in pieces (UndoHistory::begin_undo and the rest), so that a step too large for
+    // one frame can cross over several (history_job.h).
+    bool begin_undo();
+    bool begin_redo();
+    // True once the step has crossed.
+    bool continue_crossing(std::size_t max_steps) { return history_.continue_crossing(max_steps); }
+    void stop_crossing() { history_.stop_crossing(); }
     // The base mesh with other crease and corner tags, as one undoable edit labelled `label`: the
     // vertex set stays, every position follows the new rules. Throws std::invalid_argument for tags
     // the base mesh refuses (the document is unchanged then).
@@ -109,8 +114,8 @@ public:
     std::optional<SurfaceHit> pick(const Ray& ray);
 
 private:
-    // Undo or redo (`cross`), and what follows the mesh.
-    bool step(bool (UndoHistory::*cross)());
+    // The start of an undo or redo (`begin`), and what follows the mesh.
+    bool begin_crossing(bool (UndoHistory::*begin)());
     void replace_mesh(rgb::Mesh mesh);
     // Rebuilds what follows the mesh from scratch.
     void resync();

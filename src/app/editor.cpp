@@ -141,7 +141,7 @@ void Editor::update(std::chrono::microseconds job_slice) {
     while (!jobs_.empty()) {
         MeshJob& job = *jobs_.front();
         if (!front_begun_) {
-            document_.begin_edit(job.label());
+            if (job.makes_edit()) document_.begin_edit(job.label());
             front_begun_ = true;
         }
         const auto left = std::chrono::duration_cast<std::chrono::microseconds>(deadline - std::chrono::steady_clock::now());
@@ -177,8 +177,8 @@ void Editor::queue(std::unique_ptr<MeshJob> job) { jobs_.push_back(std::move(job
 
 void Editor::finish_front() {
     MeshJob& job = *jobs_.front();
-    if (!job.is_stroke()) report(job.label() + " done", false);
-    document_.end_edit(job.changed(), job.script());
+    if (!job.is_stroke()) report(job.done_message(), false);
+    if (job.makes_edit()) document_.end_edit(job.changed(), job.script());
     jobs_.pop_front();
     front_begun_ = false;
 }
@@ -279,19 +279,24 @@ void Editor::reset_view() {
     camera_.pan({-0.5f * covered_right_, 0.0f}, viewport_);
 }
 
-bool Editor::undo() {
-    if (refuse_if_busy("undo")) return false;
-    const std::string label = document_.history().can_undo() ? document_.history().undo_label() : "";
-    if (!document_.undo()) return false;
-    report("undid " + label, false);
-    return true;
-}
+bool Editor::undo() { return cross(HistoryJob::Direction::Undo); }
 
-bool Editor::redo() {
-    if (refuse_if_busy("redo")) return false;
-    const std::string label = document_.history().can_redo() ? document_.history().redo_label() : "";
-    if (!document_.redo()) return false;
-    report("redid " + label, false);
+bool Editor::redo() { return cross(HistoryJob::Direction::Redo); }
+
+// A step of a few thousand operations crosses at once; a larger one goes on over the frames as a job.
+bool Editor::cross(HistoryJob::Direction direction) {
+    const bool undo = direction == HistoryJob::Direction::Undo;
+    if (refuse_if_busy(undo ? "undo" : "redo")) return false;
+    const UndoHistory& history = document_.history();
+    std::string label = undo ? (history.can_undo() ? history.undo_label() : "") : (history.can_redo() ? history.redo_label() : "");
+    if (!(undo ? document_.begin_undo() : document_.begin_redo())) return false;
+    auto job = std::make_unique<HistoryJob>(document_, direction, std::move(label));
+    if (document_.continue_crossing(HistoryJob::kImmediateOperations)) {
+        report(job->done_message(), false);
+        return true;
+    }
+    queue(std::move(job));
+    front_begun_ = true;  // the crossing has begun; nothing was queued before it (refuse_if_busy)
     return true;
 }
 
@@ -328,15 +333,14 @@ void Editor::start_auto_lod() {
 void Editor::cancel_job() {
     if (jobs_.empty()) return;
     if (stroke_) end_stroke();
-    const std::string label = jobs_.front()->label();
+    MeshJob& front = *jobs_.front();
     if (front_begun_) {
-        jobs_.front()->cancel();
-        document_.end_edit(jobs_.front()->changed(), jobs_.front()->script());
+        front.cancel();
+        if (front.makes_edit()) document_.end_edit(front.changed(), front.script());
     }
-    const bool changed = front_begun_ && jobs_.front()->changed();
+    report(front.cancelled_message(front_begun_ && front.changed()), false);
     jobs_.clear();
     front_begun_ = false;
-    report(label + " cancelled" + (changed ? "; Ctrl+Z undoes what it did" : ""), false);
 }
 
 bool Editor::sample_level_under_cursor() {

@@ -27,6 +27,7 @@
 #include "app/crease_tool.h"
 #include "app/detail_job.h"
 #include "app/document.h"
+#include "app/history_job.h"
 #include "app/input.h"
 #include "app/mesh_job.h"
 #include "app/recovery_store.h"
@@ -118,6 +119,8 @@ public:
     // ---- whole-mesh actions ----
     void frame_mesh();
     void reset_view();
+    // A step of up to HistoryJob::kImmediateOperations crosses before these return; a larger one
+    // continues in update() as the job under way (job()), which Esc stops part way (history_job.h).
     bool undo();
     bool redo();
     // Both refuse (with a message naming the estimate) a result above the triangle limit.
@@ -215,6 +218,8 @@ private:
     void detail_dab(const BaseSpaceHit& at, const glm::dvec3& hit_point);
     std::optional<SurfaceHit> pick(glm::vec2 px);
     void queue(std::unique_ptr<MeshJob> job);
+    // Undo or redo: at once, or as a job.
+    bool cross(HistoryJob::Direction direction);
     // File tasks: start, and take what finished.
     void start_save(const std::string& path);
     void poll_file_task();

@@ -24,6 +24,14 @@ public:
     // What the job did as lines of a level-of-detail script (io/lod_script.h), when a script can
     // say it exactly.
     virtual std::optional<std::string> script() const = 0;
+    // Whether the editor opens an undoable edit around the job (an undo or redo crosses a step of
+    // the history instead, history_job.h).
+    virtual bool makes_edit() const { return true; }
+    // The status line once it is done, and once it was stopped (`changed`: it did something).
+    virtual std::string done_message() const { return label() + " done"; }
+    virtual std::string cancelled_message(bool changed) const {
+        return label() + " cancelled" + (changed ? "; Ctrl+Z undoes what it did" : "");
+    }
 };
 
 }  // namespace app

@@ -33,19 +33,22 @@ void UndoHistory::retag(std::string label, const rgb::SharpFeatures& features) {
     push(undo_, Step{std::move(label), {}, std::nullopt, std::move(replaced)});
 }
 
+// An edit, or a crossing (then its step goes back where it was, whole).
 bool UndoHistory::abandon_edit() {
     if (!journal_.recording()) return false;
     const rgb::JournalRecord record = journal_.stop();
+    std::optional<Crossing> crossing = std::exchange(crossing_, std::nullopt);
     try {
         journal_.revert(record);
     } catch (...) {
         clear();
         throw;
     }
+    if (crossing) push(*crossing->from, std::move(crossing->step));
     return true;
 }
 
-bool UndoHistory::cross(std::deque<Step>& from, std::deque<Step>& to) {
+bool UndoHistory::begin_cross(std::deque<Step>& from, std::deque<Step>& to) {
     forget_if_stale();
     if (from.empty() || journal_.recording()) return false;
     Step step = std::move(from.back());
@@ -58,15 +61,53 @@ bool UndoHistory::cross(std::deque<Step>& from, std::deque<Step>& to) {
         return true;
     }
     journal_.start();
+    const rgb::JournalRecord::Cursor end = step.record.end();
+    crossing_ = Crossing{std::move(step), end, &from, &to};
+    return true;
+}
+
+bool UndoHistory::continue_crossing(std::size_t max_steps) {
+    if (!crossing_) return true;
     try {
-        journal_.revert(step.record);
+        if (!journal_.revert_some(crossing_->step.record, crossing_->cursor, max_steps)) return false;
     } catch (...) {
         // Half reverted, or the mesh no longer fits the records: none can be trusted.
         journal_.stop();
+        crossing_.reset();
         clear();
         throw;
     }
-    push(to, Step{std::move(step.label), journal_.stop(), std::move(step.script), std::nullopt});
+    Crossing crossed = std::move(*crossing_);
+    crossing_.reset();
+    push(*crossed.to, Step{std::move(crossed.step.label), journal_.stop(), std::move(crossed.step.script), std::nullopt});
+    return true;
+}
+
+std::size_t UndoHistory::crossed_operations() const {
+    return crossing_ ? crossing_->step.record.steps() - crossing_->cursor.steps : 0;
+}
+
+std::size_t UndoHistory::crossing_operations() const { return crossing_ ? crossing_->step.record.steps() : 0; }
+
+void UndoHistory::stop_crossing() {
+    if (!crossing_) return;
+    Crossing stopped = std::move(*crossing_);
+    crossing_.reset();
+    rgb::JournalRecord reverted = journal_.stop();
+    if (reverted.empty()) {
+        push(*stopped.from, std::move(stopped.step));
+        return;
+    }
+    Step rest = std::move(stopped.step);
+    rest.record.truncate(stopped.cursor);
+    rest.script.reset();
+    if (!rest.record.empty()) push(*stopped.from, Step{rest.label, std::move(rest.record), std::nullopt, std::nullopt});
+    push(*stopped.to, Step{std::move(rest.label), std::move(reverted), std::nullopt, std::nullopt});
+}
+
+bool UndoHistory::cross(std::deque<Step>& from, std::deque<Step>& to) {
+    if (!begin_cross(from, to)) return false;
+    continue_crossing(crossing_operations());
     return true;
 }
 
@@ -74,7 +115,15 @@ bool UndoHistory::undo() { return cross(undo_, redo_); }
 
 bool UndoHistory::redo() { return cross(redo_, undo_); }
 
+bool UndoHistory::begin_undo() { return begin_cross(undo_, redo_); }
+
+bool UndoHistory::begin_redo() { return begin_cross(redo_, undo_); }
+
 void UndoHistory::clear() {
+    if (crossing_) {
+        journal_.stop();
+        crossing_.reset();
+    }
     undo_.clear();
     redo_.clear();
     bytes_ = 0;

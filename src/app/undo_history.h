@@ -52,6 +52,22 @@ public:
     bool redo();
     void clear();
 
+    // Undo and redo in pieces, for a step too large for one frame (its revert costs in proportion to
+    // its operations: 0.15 s for the 140k of a large stroke). begin_undo/begin_redo take the step off
+    // its side (false when there is none, or an edit is under way; a retag crosses whole at once);
+    // continue_crossing reverts up to `max_steps` more of its operations, true once the step has
+    // crossed (its reversal is then on the other side). Nothing else may change the mesh meanwhile.
+    bool begin_undo();
+    bool begin_redo();
+    bool crossing() const { return crossing_.has_value(); }
+    bool continue_crossing(std::size_t max_steps);
+    // Operations of the step crossing now: done, and in all.
+    std::size_t crossed_operations() const;
+    std::size_t crossing_operations() const;
+    // Stops the crossing part way: the part reverted goes to the other side as one step, the part
+    // still in effect stays as one step (neither has a script then: none says a part of a stroke).
+    void stop_crossing();
+
     // The script of every step in effect (undone ones left out, those forgotten for the memory
     // bound kept), and how many of them no script could say.
     struct SessionScript {
@@ -72,7 +88,9 @@ private:
         // For a retag, the tags that crossing the step sets (then `record` is empty).
         std::optional<rgb::SharpFeatures> retag;
     };
-    // Pops the newest step of `from`, reverts it, and pushes the reversal's record onto `to`.
+    // Pops the newest step of `from` and starts reverting it into a step for `to`.
+    bool begin_cross(std::deque<Step>& from, std::deque<Step>& to);
+    // One-shot: begin_cross, then continue_crossing to the end.
     bool cross(std::deque<Step>& from, std::deque<Step>& to);
     // A change made outside any edit: records from before it no longer fit the mesh.
     void forget_if_stale();
@@ -86,6 +104,14 @@ private:
     std::deque<Step> undo_;  // oldest first
     std::deque<Step> redo_;  // most recently undone last
     std::string pending_label_;
+    // The step being reverted, how far, and the sides it goes between.
+    struct Crossing {
+        Step step;
+        rgb::JournalRecord::Cursor cursor;
+        std::deque<Step>* from;
+        std::deque<Step>* to;
+    };
+    std::optional<Crossing> crossing_;
     SessionScript forgotten_;  // steps in effect that the bound dropped from undo_
 };
 

@@ -65,6 +65,20 @@ std::size_t JournalRecord::bytes() const {
     return total;
 }
 
+JournalRecord::Cursor JournalRecord::end() const {
+    return chunks_.empty() ? Cursor{} : Cursor{chunks_.size() - 1, chunks_.back().size, steps_};
+}
+
+void JournalRecord::truncate(const Cursor& at) {
+    if (at.steps == 0) {
+        *this = JournalRecord();
+        return;
+    }
+    chunks_.resize(at.chunk + 1);
+    chunks_.back().size = at.offset;
+    steps_ = at.steps;
+}
+
 Journal::Journal(Mesh& mesh) : mesh_(mesh) { mesh_.add_observer(this); }
 
 Journal::~Journal() { mesh_.remove_observer(this); }
@@ -181,17 +195,27 @@ void Journal::face_added(const Mesh&, FaceId f) {
 // ---- reverting ----------------------------------------------------------------------------------
 
 void Journal::revert(const JournalRecord& record) {
+    JournalRecord::Cursor cursor = record.end();
+    revert_some(record, cursor, record.steps());
+}
+
+bool Journal::revert_some(const JournalRecord& record, JournalRecord::Cursor& cursor, std::size_t max_steps) {
     struct Reverting {
         bool& flag;
         explicit Reverting(bool& f) : flag(f) { flag = true; }
         ~Reverting() { flag = false; }
     } guard(reverting_);
-    for (auto chunk = record.chunks_.rbegin(); chunk != record.chunks_.rend(); ++chunk)
-        for (std::uint32_t end = chunk->size; end > 0;) {
-            const std::uint32_t length = chunk->data[end - 1];
-            end -= length + 1;
-            revert_step(&chunk->data[end]);
-        }
+    for (; cursor.steps > 0 && max_steps > 0; --max_steps) {
+        // A chunk may be empty (a step dropped as incomplete was its only one); earlier steps exist.
+        while (cursor.offset == 0) cursor.offset = record.chunks_[--cursor.chunk].size;
+        const std::uint8_t* data = record.chunks_[cursor.chunk].data.get();
+        const std::uint32_t start = cursor.offset - 1 - data[cursor.offset - 1];
+        revert_step(&data[start]);
+        // Moved only once the step is undone: a step that threw is still to be undone.
+        cursor.offset = start;
+        --cursor.steps;
+    }
+    return cursor.steps == 0;
 }
 
 void Journal::revert_step(const std::uint8_t* step) {

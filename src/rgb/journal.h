@@ -33,6 +33,18 @@ public:
     // Memory held, in bytes.
     std::size_t bytes() const;
 
+    // A place between two steps, for reverting in pieces (Journal::revert_some): the steps before it
+    // are the ones still to be undone.
+    struct Cursor {
+        std::size_t chunk = 0;     // in this chunk
+        std::uint32_t offset = 0;  // the byte after the last step still to be undone
+        std::size_t steps = 0;     // steps before it
+    };
+    // After the last step: nothing undone yet.
+    Cursor end() const;
+    // Keeps only the steps before `at` (those a revert stopped part way has left in effect).
+    void truncate(const Cursor& at);
+
 private:
     friend class Journal;
     // Whole steps only, each followed by a byte with its length so that they can be read backwards.
@@ -62,6 +74,10 @@ public:
     // Undoes the steps of `record`, last to first. Throws std::logic_error if the mesh is not the one
     // the record left (some change was not recorded): then the mesh is valid but only partly reverted.
     void revert(const JournalRecord& record);
+    // The same in pieces: undoes up to `max_steps` more steps before `cursor` (which starts at
+    // record.end()) and moves it back over them; true once no step is left. Nothing else may change
+    // the mesh between the pieces; when recording, the pieces make one record as one revert would.
+    bool revert_some(const JournalRecord& record, JournalRecord::Cursor& cursor, std::size_t max_steps);
 
     // Whether the mesh changed while nothing was recorded since the last call: a record made before
     // such a change can no longer be reverted.

@@ -20,13 +20,16 @@ TEST(DisplayCatchUp, TheUndoOfALargeEditIsShownOverSeveralFramesAndEndsAsARebuil
     editor.start_flood_fill(3);  // 3674 -> 235,136 triangles
     editor.finish_work();
     ASSERT_EQ(editor.document().mesh().num_faces(), 235136u);
+    // The undo itself crosses over frames (history_job.h); its first part, made by the call, changes
+    // more face slots than one part of the catching up takes.
     ASSERT_TRUE(editor.undo());
-    ASSERT_EQ(editor.document().mesh().num_faces(), 3674u);
-    EXPECT_TRUE(editor.document().display_behind()) << "235k face slots changed: more than one part";
+    EXPECT_TRUE(editor.document().display_behind()) << "tens of thousands of face slots changed: more than one part";
     editor.mouse_moved({0.5f * kViewport.x, 0.5f * kViewport.y});
     EXPECT_FALSE(editor.cursor_hit()) << "hovering does not catch up all at once";
     int frames = 0;
-    for (; editor.document().display_behind() && frames < 10000; ++frames) editor.update(std::chrono::microseconds(1));
+    for (; (editor.job() != nullptr || editor.document().display_behind()) && frames < 10000; ++frames)
+        editor.update(std::chrono::microseconds(1));
+    ASSERT_EQ(editor.document().mesh().num_faces(), 3674u);
     EXPECT_GT(frames, 1) << "a frame of a few milliseconds catches up a part, not everything";
     EXPECT_TRUE(editor.cursor_hit()) << "the bunny is under the centre of the view";
 

@@ -12,13 +12,13 @@
 namespace app {
 namespace {
 
-struct Storage {
+struct ArrayStorage {
     const void* faces;
     const void* triangles;
-    bool operator==(const Storage&) const = default;
+    bool operator==(const ArrayStorage&) const = default;
 };
 
-Storage storage_of(Document& document) {
+ArrayStorage storage_of(Document& document) {
     return {&document.mesh().face_vertices(rgb::FaceId(0)), document.geometry().vertices().data()};
 }
 
@@ -45,7 +45,7 @@ TEST(DocumentRoom, AnAdoptedMeshHasRoomForTwiceItsTriangles) {
     document.adopt(bunny_at_level_2(), "bunny.obj");
     const std::size_t faces = document.mesh().num_faces();
     ASSERT_EQ(faces, 58784u);  // 3674 * 4^2
-    const Storage before = storage_of(document);
+    const ArrayStorage before = storage_of(document);
     // About a third of the surface one level deeper.
     refine_around_first_corner(document, 0.5 * document.geometry().bounds(document.mesh()).radius);
     ASSERT_GT(document.mesh().num_faces(), faces + faces / 4) << "the edit must grow the mesh past what any vector would hold spare";
@@ -64,7 +64,7 @@ TEST(DocumentRoom, AnEditStartsWithRoomForAQuarterMoreThanThereAre) {
     ASSERT_EQ(faces, 235136u);
     // The next edit moves the storage as it begins, before it changes anything, if it must; not while it runs.
     document.begin_edit("refine");
-    const Storage begun = storage_of(document);
+    const ArrayStorage begun = storage_of(document);
     const glm::dvec3 centre = document.mesh().insertion_position(document.mesh().face_vertices(rgb::FaceId(0))[0]);
     rgb::set_level(document.mesh(), 4, rgb::Sphere{centre, 0.25 * document.geometry().bounds(document.mesh()).radius});
     document.end_edit(true);
@@ -79,7 +79,7 @@ TEST(DocumentRoom, AWholeMeshJobReservesForTwiceItsEstimate) {
     editor.start_flood_fill(2);  // 3674 -> 58,784 triangles
     editor.finish_work();
     ASSERT_EQ(editor.document().mesh().num_faces(), 58784u);
-    const Storage before = storage_of(editor.document());
+    const ArrayStorage before = storage_of(editor.document());
     // A second edit as large as a quarter of the mesh and more: a set over part of the surface.
     Document& document = editor.document();
     refine_around_first_corner(document, 0.5 * document.geometry().bounds(document.mesh()).radius);

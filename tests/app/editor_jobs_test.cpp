@@ -144,13 +144,20 @@ TEST_F(EditorJobs, EscKeepsTheWorkDoneAsOneStepAndUndoRedoCrossItExactly) {
     stroke({0.5f * kViewport.x, 0.45f * kViewport.y}, {0.6f * kViewport.x, 0.45f * kViewport.y});
     const rgb::Mesh last = editor.document().mesh();
 
+    // Each undo and redo runs to its end (a large one crosses over frames, history_job.h).
     ASSERT_TRUE(editor.undo());
+    editor.finish_work();
     EXPECT_TRUE(rgbtest::same_slots(editor.document().mesh(), cancelled));
     ASSERT_TRUE(editor.undo());
+    editor.finish_work();
     EXPECT_TRUE(rgbtest::same_slots(editor.document().mesh(), after_first));
     ASSERT_TRUE(editor.undo());
+    editor.finish_work();
     EXPECT_TRUE(rgbtest::same_slots(editor.document().mesh(), original));
-    for (int i = 0; i < 3; ++i) ASSERT_TRUE(editor.redo());
+    for (int i = 0; i < 3; ++i) {
+        ASSERT_TRUE(editor.redo());
+        editor.finish_work();
+    }
     EXPECT_TRUE(rgbtest::same_slots(editor.document().mesh(), last));
     // A script cannot say a stroke stopped half way, and saving the session says so.
     EXPECT_EQ(editor.document().history().session_script().unscripted_steps, 1u);
@@ -212,6 +219,7 @@ TEST_F(EditorJobs, UndoMemoryBoundLimitsTheStepsKept) {
     EXPECT_EQ(editor.document().history().undo_steps(), 1u);
     EXPECT_EQ(editor.document().history().undo_label(), "set all to level 0");
     ASSERT_TRUE(editor.undo());
+    editor.finish_work();  // 43k operations: more than one frame's (history_job.h)
     EXPECT_EQ(editor.document().mesh().num_faces(), 16 * base_faces) << "back to level 2 everywhere";
     EXPECT_TRUE(rgbtest::same_slots(editor.document().mesh(), level_two));
     EXPECT_FALSE(editor.undo());

@@ -96,6 +96,54 @@ TEST(UndoHistory, AbandoningAnEditPutsTheMeshBack) {
     EXPECT_EQ(history.undo_steps(), 1u);
 }
 
+// A crossing in pieces that is stopped: before anything crossed, the step goes back whole; part
+// way, the two parts are steps of their own, with no script (none says part of a stroke); a crossing
+// abandoned (after a failure) puts the mesh and the step back as they were.
+TEST(UndoHistory, ACrossingStoppedOrAbandonedKeepsEveryMeshReachable) {
+    rgb::Mesh mesh = rgbtest::make_rgb_mesh(rgbtest::icosahedron());
+    UndoHistory history(mesh);
+    const rgb::Mesh bare = mesh;
+    history.begin_edit("set all");
+    rgb::set_level(mesh, 3);
+    history.end_edit(true, "level 3\n");
+    const rgb::Mesh refined = mesh;
+
+    ASSERT_TRUE(history.begin_undo());
+    EXPECT_TRUE(history.crossing());
+    const std::size_t operations = history.crossing_operations();
+    ASSERT_GT(operations, 100u);
+    history.stop_crossing();
+    EXPECT_FALSE(history.crossing());
+    EXPECT_TRUE(rgbtest::same_slots(mesh, refined));
+    EXPECT_EQ(history.undo_steps(), 1u);
+    EXPECT_EQ(history.redo_steps(), 0u);
+    EXPECT_EQ(history.session_script().text, "level 3\n") << "the step is whole, script and all";
+
+    ASSERT_TRUE(history.begin_undo());
+    EXPECT_FALSE(history.continue_crossing(operations / 4));
+    EXPECT_EQ(history.crossed_operations(), operations / 4);
+    EXPECT_TRUE(history.abandon_edit());
+    EXPECT_TRUE(rgbtest::same_slots(mesh, refined));
+    EXPECT_EQ(history.undo_steps(), 1u);
+    EXPECT_EQ(history.undo_label(), "set all");
+
+    ASSERT_TRUE(history.begin_undo());
+    EXPECT_FALSE(history.continue_crossing(operations / 3));
+    history.stop_crossing();
+    const rgb::Mesh middle = mesh;
+    EXPECT_EQ(history.undo_steps(), 1u);
+    EXPECT_EQ(history.redo_steps(), 1u);
+    EXPECT_EQ(history.session_script().unscripted_steps, 1u);
+    EXPECT_TRUE(history.session_script().text.empty());
+    ASSERT_TRUE(history.undo());
+    EXPECT_TRUE(rgbtest::same_slots(mesh, bare));
+    ASSERT_TRUE(history.redo());
+    EXPECT_TRUE(rgbtest::same_slots(mesh, middle));
+    ASSERT_TRUE(history.redo());
+    EXPECT_TRUE(rgbtest::same_slots(mesh, refined));
+    EXPECT_FALSE(history.can_redo());
+}
+
 TEST(UndoHistory, AnEditThatChangedNothingLeavesNoStep) {
     rgb::Mesh mesh = rgbtest::make_rgb_mesh(rgbtest::icosahedron());
     UndoHistory history(mesh);

@@ -73,6 +73,81 @@ TEST_P(JournalOnMeshes, RevertingEditsGivesBackEverySlotAndRevertingThatRedoesTh
     EXPECT_FALSE(journal.take_unrecorded_change()) << "reverting is not a change outside the journal";
 }
 
+// Several random requests recorded as one edit, for the reverts in pieces.
+rgb::JournalRecord record_requests(rgb::Mesh& mesh, rgb::Journal& journal, std::mt19937& rng, int requests) {
+    journal.start();
+    for (int i = 0; i < requests; ++i) rgb::apply_request(mesh, random_request(mesh, rng));
+    return journal.stop();
+}
+
+// What the editor does with an undo too large for a frame: the same steps, a few at a time.
+TEST_P(JournalOnMeshes, ARevertInPiecesGivesTheMeshAndTheRecordOfARevertInOne) {
+    rgb::Mesh mesh = rgbtest::make_rgb_mesh(GetParam());
+    rgb::Journal journal(mesh);
+    std::mt19937 rng(7);
+    const rgb::Mesh before = mesh;
+    const rgb::JournalRecord edit = record_requests(mesh, journal, rng, 8);
+    ASSERT_GT(edit.steps(), 50u) << "the edit must do something";
+    rgb::Mesh in_pieces = mesh;
+    rgb::Journal pieces_journal(in_pieces);
+
+    journal.start();
+    journal.revert(edit);
+    const rgb::JournalRecord whole_redo = journal.stop();
+
+    pieces_journal.start();
+    rgb::JournalRecord::Cursor cursor = edit.end();
+    std::size_t pieces = 0;
+    for (bool done = false; !done; ++pieces) {
+        const std::size_t left = cursor.steps;
+        const std::size_t piece = 1 + rng() % 37;
+        done = pieces_journal.revert_some(edit, cursor, piece);
+        ASSERT_EQ(cursor.steps, left - std::min(left, piece));
+    }
+    const rgb::JournalRecord pieces_redo = pieces_journal.stop();
+    EXPECT_GT(pieces, 2u);
+    ASSERT_TRUE(rgbtest::same_slots(in_pieces, mesh));
+    ASSERT_TRUE(rgbtest::same_slots(in_pieces, before));
+    EXPECT_EQ(pieces_redo.steps(), whole_redo.steps());
+    // The record the pieces made redoes the edit as the one-shot's does.
+    pieces_journal.revert(pieces_redo);
+    journal.revert(whole_redo);
+    EXPECT_TRUE(rgbtest::same_slots(in_pieces, mesh));
+    EXPECT_TRUE(rgb::check_invariants(in_pieces).ok());
+}
+
+// Esc during such an undo: the steps undone so far and the steps still in effect become two
+// records, each of which reverts to the mesh at the other end of it.
+TEST_P(JournalOnMeshes, ARevertStoppedPartWayLeavesTwoRecordsThatRevertExactly) {
+    rgb::Mesh mesh = rgbtest::make_rgb_mesh(GetParam());
+    rgb::Journal journal(mesh);
+    std::mt19937 rng(8);
+    const rgb::Mesh before = mesh;
+    rgb::JournalRecord edit = record_requests(mesh, journal, rng, 8);
+    const std::size_t steps = edit.steps();
+    ASSERT_GT(steps, 50u);
+    const rgb::Mesh edited = mesh;
+
+    journal.start();
+    rgb::JournalRecord::Cursor cursor = edit.end();
+    ASSERT_FALSE(journal.revert_some(edit, cursor, steps / 3));
+    const rgb::JournalRecord undone = journal.stop();
+    edit.truncate(cursor);
+    EXPECT_EQ(undone.steps(), steps / 3);
+    EXPECT_EQ(edit.steps(), steps - steps / 3);
+    const rgb::Mesh middle = mesh;
+
+    journal.start();
+    journal.revert(edit);  // the rest of the undo
+    const rgb::JournalRecord rest_redo = journal.stop();
+    ASSERT_TRUE(rgbtest::same_slots(mesh, before));
+    journal.revert(rest_redo);
+    ASSERT_TRUE(rgbtest::same_slots(mesh, middle));
+    journal.revert(undone);  // a redo of what was undone
+    EXPECT_TRUE(rgbtest::same_slots(mesh, edited));
+    EXPECT_TRUE(rgb::check_invariants(mesh).ok());
+}
+
 INSTANTIATE_TEST_SUITE_P(Meshes, JournalOnMeshes,
                          ::testing::Values(rgbtest::icosahedron(), rgbtest::grid(4, 3), rgbtest::fan(5), rgbtest::bunny()),
                          [](const auto& info) { return info.param.name; });
