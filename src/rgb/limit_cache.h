@@ -4,8 +4,14 @@
 // all that costs memory (a dense array would add 24 bytes to every vertex). A limit depends only on
 // the base mesh, so an entry never goes stale while its vertex lives. The mesh keeps a flag per
 // vertex for "cached", so lookups only ever probe for keys that are there: the table can run full
-// (up to 7/8) and grow by a quarter, which keeps it between 70% and 88% full (an entry is moved
-// about four times in all, cheap beside computing a limit).
+// (up to 7/8) and grow by a quarter, which keeps it between 70% and 88% full.
+//
+// Growing moves the entries a few at a time: the table grown into takes the inserts while every
+// insert and erase also moves the next kMovedPerChange slots of the table grown from, which empties
+// it well before the new one is full (a quarter more room is 0.22 of the old size in inserts, and
+// moving the old size takes a fifth of that at kMovedPerChange = 8). So no single insert rehashes
+// the whole table: that took 1-6 ms at 130k entries (3.8M triangles), in the middle of a brush
+// stroke's frame, and grows with the mesh.
 #include <cstdint>
 #include <vector>
 
@@ -16,12 +22,15 @@ namespace rgb {
 class LimitCache {
 public:
     // The caller knows which keys are present (the mesh's flag): find and erase take present keys,
-    // insert absent ones, so no probe ever runs to an empty slot at high load.
+    // insert absent ones, so no probe of the table being filled ever runs to an empty slot at high load.
     glm::dvec3 find(std::uint32_t vertex) const;
     void insert(std::uint32_t vertex, const glm::dvec3& limit);
     void erase(std::uint32_t vertex);
     std::size_t size() const { return size_; }
-    std::size_t memory_bytes() const { return entries_.size() * sizeof(Entry); }
+    std::size_t memory_bytes() const { return (entries_.size() + moving_.size()) * sizeof(Entry); }
+
+    // Slots of the table grown from that each insert and erase moves while a growth is under way.
+    static constexpr std::size_t kMovedPerChange = 8;
 
 private:
 #pragma pack(push, 4)
@@ -32,19 +41,31 @@ private:
     };
 #pragma pack(pop)
     static constexpr std::uint32_t kEmpty = 0xffffffffu;
+    // In the table grown from: an entry moved or erased. Lookups there never stop before their key,
+    // so a hole needs no backward shift; it is never filled again.
+    static constexpr std::uint32_t kGone = 0xfffffffeu;
     // Runs of 16 consecutive slots stay together (vertices made together are read together, so their
     // entries share cache lines); the runs are scattered over the table (any multiple of 16 long), so
     // no stride of ids clusters.
-    std::size_t home(std::uint32_t key) const {
-        const std::uint64_t run = (std::uint64_t(std::uint32_t((key >> 4) * 2654435761u)) * (entries_.size() / 16)) >> 32;
+    static std::size_t home(std::uint32_t key, std::size_t table_size) {
+        const std::uint64_t run = (std::uint64_t(std::uint32_t((key >> 4) * 2654435761u)) * (table_size / 16)) >> 32;
         return 16 * run + (key & 15u);
     }
-    std::size_t next(std::size_t i) const { return i + 1 == entries_.size() ? 0 : i + 1; }
-    std::size_t slot_of(std::uint32_t vertex) const;
+    static std::size_t next(std::size_t i, std::size_t table_size) { return i + 1 == table_size ? 0 : i + 1; }
+    // The slot of `vertex` in entries_, or entries_.size() if it is not there (then it is in moving_).
+    std::size_t slot_in_new(std::uint32_t vertex) const;
+    // The slot of `vertex` in moving_, where it must be.
+    std::size_t slot_in_old(std::uint32_t vertex) const;
+    void place(std::uint32_t vertex, double x, double y, double z);
+    void erase_slot(std::size_t i);
     void grow();
+    // Moves up to `slots` more slots of moving_ into entries_ (all when asked for its size).
+    void move_some(std::size_t slots);
 
     std::vector<Entry> entries_;  // a multiple of 16 long, linear probing
-    std::size_t size_ = 0;
+    std::vector<Entry> moving_;   // the table grown from, while its entries move; else empty
+    std::size_t moved_ = 0;       // slots of moving_ done
+    std::size_t size_ = 0;        // entries in both
 };
 
 }  // namespace rgb
