@@ -20,7 +20,6 @@
 #include "io/state_format.h"
 #include "io/truncation_check.h"
 #include "rgb/mesh.h"
-#include "rgb/position_check.h"
 #include "rgb/state.h"
 
 namespace rgbio {
@@ -94,16 +93,18 @@ std::shared_ptr<rgb::Mesh> adaptive_mesh(SavedState& saved, const ObjRecords& re
     if (!body_colours) saved.colours.clear();
     // The saved colours are at the positions' level; restored in the positions' pass, for speed.
     rgb::RestoredChannel colours{saved.colours, saved.limit_positions ? rgb::ChannelLevel::Limit : rgb::ChannelLevel::Displayed, {}};
+    rgb::RestoredPositions written{saved.limit_positions ? rgb::ChannelLevel::Limit : rgb::ChannelLevel::Displayed, {}};
     std::shared_ptr<rgb::Mesh> mesh;
     try {
         mesh = std::make_shared<rgb::Mesh>(
-            rgb::restore_state(saved.mesh, progress.part(0.0, kRestored), saved.colours.empty() ? nullptr : &colours));
+            rgb::restore_state(saved.mesh, progress.part(0.0, kRestored), saved.colours.empty() ? nullptr : &colours, &written));
     } catch (const std::invalid_argument& e) {
         reason = std::string("it does not fit the file's faces (") + e.what() + ")";
         return nullptr;
     }
     // An edit elsewhere (moved or scaled vertices) must win over the state, not be silently undone.
-    const std::size_t differing = rgb::count_differing_positions(*mesh, records.positions, saved.limit_positions);
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < written.values.size(); ++i) differing += written.values[i] != records.positions[i];
     if (differing > 0) {
         reason = std::to_string(differing) + " of " + std::to_string(records.positions.size()) +
                  " vertex positions differ from the ones it gives";

@@ -231,7 +231,7 @@ constexpr double kBaseBuilt = 0.01, kMatched = 0.26, kTyped = 0.40, kPositioned 
 // operators made: faces typed by their place in the hierarchy, insertion positions by the split
 // formula level by level. Every pass is linear (a table of addresses, halfedges grouped by vertex),
 // and the per-face ones run in parallel.
-Mesh restore_state(const MeshState& s, const ProgressSpan& progress, RestoredChannel* channel) {
+Mesh restore_state(const MeshState& s, const ProgressSpan& progress, RestoredChannel* channel, RestoredPositions* positions) {
     std::shared_ptr<const BaseMesh> base_mesh;
     try {
         base_mesh = std::make_shared<const BaseMesh>(s.base_positions, s.base_triangles, s.sharp_features);
@@ -301,23 +301,26 @@ Mesh restore_state(const MeshState& s, const ProgressSpan& progress, RestoredCha
     // Insertion positions, coarsest first, by the split formula on the (present) parent stencil; and
     // the limits of the vertices displayed above their own level, which a viewer (and the loader's
     // check of a file's positions) needs at once.
-    // A channel's levels: where its values are wanted (vertex_channel.h).
-    std::vector<std::uint8_t> displayed_above_own_level(nv), channel_levels(channel ? nv : 0);
+    // The levels of a channel's values and of the positions asked for (vertex_channel.h).
+    std::vector<std::uint8_t> displayed_above_own_level(nv), channel_levels(channel ? nv : 0), position_levels(positions ? nv : 0);
+    auto level_of = [](ChannelLevel level, int shown) { return level == ChannelLevel::Limit ? kLimitLevel : static_cast<std::uint8_t>(shown); };
     parallel_for(nv, 1 << 15, [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i) {
             const VertexId v(static_cast<std::uint32_t>(i));
             const int shown = display_level(m, v);
             displayed_above_own_level[i] = shown > m.level(v);
-            if (channel) channel_levels[i] = channel->level == ChannelLevel::Limit ? kLimitLevel : static_cast<std::uint8_t>(shown);
+            if (channel) channel_levels[i] = level_of(channel->level, shown);
+            if (positions) position_levels[i] = level_of(positions->level, shown);
         }
     });
     try {
-        HierarchyPositions positions =
-            channel ? hierarchy_positions(base, points, *index, displayed_above_own_level,
+        HierarchyPositions values =
+            channel ? hierarchy_positions(base, points, *index, displayed_above_own_level, position_levels,
                                           BaseMesh(channel->base_values, base.faces(), base.sharp_features()), channel_levels, channel->values)
-                    : hierarchy_positions(base, points, *index, displayed_above_own_level);
-        m.insertion_position_ = std::move(positions.insertion);
-        for (const HierarchyPositions::Limit& l : positions.limits) m.cache_limit(VertexId(l.vertex), l.position);
+                    : hierarchy_positions(base, points, *index, displayed_above_own_level, position_levels);
+        m.insertion_position_ = std::move(values.insertion);
+        for (const HierarchyPositions::Limit& l : values.limits) m.cache_limit(VertexId(l.vertex), l.position);
+        if (positions) positions->values = std::move(values.at_levels);
     } catch (const std::invalid_argument& e) {
         fail(e.what());
     }
