@@ -42,13 +42,14 @@ namespace {
 
 // The address of vertex i if it is a valid one for its place in the state, else why not.
 std::optional<std::string> address_problem(const BaseMesh& base, std::uint32_t i, const SurfacePoint& p) {
-    const std::string name = "vertex " + std::to_string(i);
+    // Named only for a report: this runs for every vertex of every file loaded.
+    auto name = [i] { return "vertex " + std::to_string(i); };
     if (p.face >= base.num_faces() || p.level < 0 || p.level > kMaxLevel ||
         std::uint64_t(p.a[0]) + p.a[1] + p.a[2] != (std::uint64_t(1) << p.level) || reduced(p) != p)
-        return name + " has an invalid address";
+        return name() + " has an invalid address";
     const bool base_slot = i < base.num_vertices();
     if (base_slot != (p.level == 0) || (base_slot && base_vertex(base, p) != i))
-        return name + ": the base vertices come first, in base order, and only they have level 0";
+        return name() + ": the base vertices come first, in base order, and only they have level 0";
     return std::nullopt;
 }
 
