@@ -43,6 +43,16 @@ void compact_vertices(const ObjRecords& records, TriangleSoup& soup, LoadedMesh&
     std::vector<std::uint32_t> new_index(soup.vertex_origin.size(), kNoIndex);
     for (const rgb::Triangle& t : soup.triangles)
         for (std::uint32_t v : t) new_index[v] = 0;
+    // Every vertex used, each the OBJ vertex of its own index (always so for a saved file): nothing
+    // to renumber, and the positions are the file's as they are.
+    std::uint32_t expected = 0;
+    if (soup.vertex_origin.size() == records.positions.size() && std::find(new_index.begin(), new_index.end(), kNoIndex) == new_index.end() &&
+        std::all_of(soup.vertex_origin.begin(), soup.vertex_origin.end(), [&expected](std::uint32_t origin) { return origin == expected++; })) {
+        mesh.positions = records.positions;
+        mesh.file_vertex = soup.vertex_origin;
+        mesh.triangles = std::move(soup.triangles);
+        return;
+    }
     std::size_t unused = 0, first_line = 0;
     mesh.positions.reserve(new_index.size());
     for (std::size_t v = 0; v < new_index.size(); ++v) {

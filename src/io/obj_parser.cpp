@@ -101,8 +101,10 @@ public:
     // line_in_block: the line's number among the lines given to this parser.
     void parse(std::size_t line_in_block, std::string_view content) {
         const std::size_t line = line_ = out_.last_line = before_.lines + line_in_block;
-        out_.v_line_starts += content.starts_with("v ");
-        out_.f_line_starts += content.starts_with("f ");
+        const bool v_line = content.starts_with("v "), f_line = content.starts_with("f ");
+        out_.v_line_starts += v_line;
+        out_.f_line_starts += f_line;
+        if ((v_line && plain_vertex(content.substr(2))) || (f_line && plain_face(content.substr(2)))) return;
         std::string_view rest = content;
         const std::string_view keyword = next_token(rest);
         if (keyword.empty()) return;
@@ -141,6 +143,51 @@ private:
         if (std::abs(x) > kMaxCoordinate)
             fail(ObjProblem::AbsurdCoordinate, std::string(what) + " " + quoted_file_text(token) + " exceeds the supported magnitude 1e12");
         return x;
+    }
+
+    // Most lines of a large file (all of a saved one's v and f lines) are plain: "v X Y Z" with three
+    // numbers in range and nothing after them, "f A B C..." with positive indices and nothing else.
+    // These read such a line in one scan, without splitting it into tokens first; for any other line
+    // they read nothing and return false, and the general path reads it (and reports its problem).
+    bool plain_vertex(std::string_view rest) {
+        if (!out_.colours.empty()) return false;
+        const char* p = rest.data();
+        const char* const end = p + rest.size();
+        glm::dvec3 position;
+        for (int i = 0; i < 3; ++i) {
+            while (p < end && is_blank(*p)) ++p;
+            if (p == end || *p == '+') return false;
+            const auto [stop, ec] = std::from_chars(p, end, position[i]);
+            // The comparison is false for infinities and NaN too.
+            if (ec != std::errc() || (stop < end && !is_blank(*stop)) || !(std::abs(position[i]) <= kMaxCoordinate)) return false;
+            p = stop;
+        }
+        while (p < end && is_blank(*p)) ++p;
+        if (p != end) return false;
+        out_.positions.push_back(position);
+        out_.position_lines.push_back(line_);
+        return true;
+    }
+
+    bool plain_face(std::string_view rest) {
+        const char* p = rest.data();
+        const char* const end = p + rest.size();
+        const std::size_t count = before_.positions + out_.positions.size();
+        corners_.clear();
+        for (;;) {
+            while (p < end && is_blank(*p)) ++p;
+            if (p == end) break;
+            // At most 18 digits: the sum cannot overflow, and larger indices are out of range anyway.
+            const char* const start = p;
+            std::uint64_t index = 0;
+            while (p < end && *p >= '0' && *p <= '9' && p - start < 18) index = 10 * index + static_cast<std::uint64_t>(*p++ - '0');
+            if (p == start || (p < end && !is_blank(*p)) || index == 0 || index > count) return false;
+            corners_.push_back(static_cast<std::uint32_t>(index - 1));
+        }
+        if (corners_.size() < 3) return false;
+        out_.polygons.add(corners_, {}, line_, material_.id(out_.material_names), group_.id(out_.group_names), object_.id(out_.object_names),
+                          smoothing_group_);
+        return true;
     }
 
     void parse_vertex(std::string_view rest) {
@@ -381,6 +428,16 @@ LinesBefore summarize_lines(std::string_view text) {
     LinesBefore summary;
     for_each_line(text, [&](std::size_t, std::string_view content) {
         ++summary.lines;
+        // The keyword of most lines, told at a glance (a keyword starting with '#' is none of these).
+        if (content.starts_with("v ")) {
+            ++summary.positions;
+            return;
+        }
+        if (content.starts_with("f ")) {
+            ++summary.faces;
+            return;
+        }
+        if (content.starts_with('#')) return;
         std::string_view rest = content;
         const std::string_view keyword = next_token(rest);
         if (keyword == "v") ++summary.positions;

@@ -1,14 +1,9 @@
 #include "io/obj_reader.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <cstring>
 #include <filesystem>
 #include <functional>
-
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include "io/base_colour_state.h"
 #include "io/crease_tags.h"
@@ -20,41 +15,9 @@
 #include "io/state_format.h"
 #include "io/truncation_check.h"
 #include "rgb/mesh.h"
-#include "rgb/position_check.h"
 #include "rgb/state.h"
 
 namespace rgbio {
-
-std::string read_text_file(const std::string& path, const rgb::ProgressSpan& progress) {
-    auto unreadable = [&](const std::string& why) { return ObjError(ObjProblem::Unreadable, path, 0, "cannot read the file: " + why); };
-    // O_NONBLOCK: opening a FIFO must not wait for a writer; the check below refuses it anyway.
-    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-    if (fd < 0) throw unreadable(std::strerror(errno));
-    struct stat info {};
-    if (::fstat(fd, &info) != 0 || !S_ISREG(info.st_mode)) {
-        ::close(fd);
-        throw unreadable(S_ISDIR(info.st_mode) ? "it is a directory" : "it is not a regular file");
-    }
-    std::string text;
-    text.resize(static_cast<std::size_t>(info.st_size));
-    std::size_t done = 0;
-    // In pieces, so that the progress moves while a large file comes off a slow disk.
-    constexpr std::size_t kPieceBytes = std::size_t(16) << 20;
-    while (done < text.size()) {
-        progress.reach(static_cast<double>(done) / static_cast<double>(text.size()));
-        const ssize_t got = ::read(fd, text.data() + done, std::min(text.size() - done, kPieceBytes));
-        if (got < 0 && errno == EINTR) continue;
-        if (got <= 0) {
-            const int error = got < 0 ? errno : 0;
-            ::close(fd);
-            throw unreadable(error ? std::strerror(error) : "the file shrank while reading");
-        }
-        done += static_cast<std::size_t>(got);
-    }
-    ::close(fd);
-    progress.done();
-    return text;
-}
 
 namespace {
 
@@ -94,16 +57,18 @@ std::shared_ptr<rgb::Mesh> adaptive_mesh(SavedState& saved, const ObjRecords& re
     if (!body_colours) saved.colours.clear();
     // The saved colours are at the positions' level; restored in the positions' pass, for speed.
     rgb::RestoredChannel colours{saved.colours, saved.limit_positions ? rgb::ChannelLevel::Limit : rgb::ChannelLevel::Displayed, {}};
+    rgb::RestoredPositions written{saved.limit_positions ? rgb::ChannelLevel::Limit : rgb::ChannelLevel::Displayed, {}};
     std::shared_ptr<rgb::Mesh> mesh;
     try {
         mesh = std::make_shared<rgb::Mesh>(
-            rgb::restore_state(saved.mesh, progress.part(0.0, kRestored), saved.colours.empty() ? nullptr : &colours));
+            rgb::restore_state(saved.mesh, progress.part(0.0, kRestored), saved.colours.empty() ? nullptr : &colours, &written));
     } catch (const std::invalid_argument& e) {
         reason = std::string("it does not fit the file's faces (") + e.what() + ")";
         return nullptr;
     }
     // An edit elsewhere (moved or scaled vertices) must win over the state, not be silently undone.
-    const std::size_t differing = rgb::count_differing_positions(*mesh, records.positions, saved.limit_positions);
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < written.values.size(); ++i) differing += written.values[i] != records.positions[i];
     if (differing > 0) {
         reason = std::to_string(differing) + " of " + std::to_string(records.positions.size()) +
                  " vertex positions differ from the ones it gives";
@@ -162,10 +127,10 @@ LoadedMesh read_records(const ObjRecords& records, const std::string& name, cons
 
 namespace {
 
-// What read_obj_text does; `owned`, when not null, is the text itself, given up by the caller and
+// What read_obj_text does; `owned`, when not null, holds the text itself, given up by the caller and
 // released once a saved file's state is parsed (its mesh is built without the text, which for a
 // 6M-triangle file is 370 MB).
-LoadedMesh read_text(std::string_view text, std::string* owned, const std::string& name, const ReadOptions& options) {
+LoadedMesh read_text(std::string_view text, FileText* owned, const std::string& name, const ReadOptions& options) {
     const std::optional<SavedFileHeader> header = read_saved_file_header(text);
     const rgb::ProgressSpan parsing = options.progress.part(0.0, kParsed);
     ReadOptions rest = options;
@@ -181,7 +146,7 @@ LoadedMesh read_text(std::string_view text, std::string* owned, const std::strin
     const TextEnd end = text_end(records, text);
     try {
         return read_records(records, name, rest, [owned] {
-            if (owned) std::string().swap(*owned);
+            if (owned) owned->release();
         });
     } catch (const ObjError& error) {
         throw truncation_or(error, *header, end, name);
@@ -195,10 +160,10 @@ LoadedMesh read_obj_text(std::string_view text, const std::string& name, const R
 }
 
 LoadedMesh read_obj_file(const std::string& path, const ReadOptions& options) {
-    std::string text = read_text_file(path, options.progress.part(0.0, kRead));
+    FileText text = read_file_text(path, options.progress.part(0.0, kRead));
     ReadOptions rest = options;
     rest.progress = options.progress.part(kRead, 1.0);
-    LoadedMesh loaded = read_text(text, &text, path, rest);
+    LoadedMesh loaded = read_text(text.view(), &text, path, rest);
     loaded.materials = read_material_libraries(loaded.material_libraries, std::filesystem::path(path).parent_path(),
                                                loaded.face_materials, loaded.warnings);
     return loaded;

@@ -3,13 +3,10 @@
 #include <string>
 #include <string_view>
 
+#include "io/file_text.h"
 #include "io/loaded_mesh.h"
 
 namespace rgbio {
-
-// The whole file as bytes; throws ObjError(Unreadable) naming the system's reason (missing,
-// a directory, no permission, read error). `progress` hears of the bytes read.
-std::string read_text_file(const std::string& path, const rgb::ProgressSpan& progress = {});
 
 // Throws ObjError; ObjProblem::Unreadable when the file cannot be opened or read. Also reads the
 // material libraries the file names (material_library.h), relative to its folder.

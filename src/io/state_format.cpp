@@ -303,7 +303,8 @@ std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const
             r.expect_end();
             if (section == Section::BaseVertices) state.base_positions.reserve(expected[s]);
             if (section == Section::BaseFaces) state.base_triangles.reserve(expected[s]);
-            if (section == Section::Addresses) addresses.reserve(expected[s]);
+            // With room for the base vertices' addresses, which go in front at the end.
+            if (section == Section::Addresses) addresses.reserve(state.base_positions.size() + expected[s]);
         } else if (kind == "p") {
             if (section != Section::BaseVertices) r.fail("a base vertex outside its section");
             glm::dvec3 p;
@@ -364,9 +365,8 @@ std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const
         for (std::uint32_t v : t)
             if (v >= state.base_positions.size()) last.fail("a base face uses a missing base vertex");
     // The base vertices' addresses follow once every base face is known (take_from_body).
-    state.vertices.reserve(state.base_positions.size() + addresses.size());
-    state.vertices.assign(state.base_positions.size(), rgb::SurfacePoint{});
-    state.vertices.insert(state.vertices.end(), addresses.begin(), addresses.end());
+    addresses.insert(addresses.begin(), state.base_positions.size(), rgb::SurfacePoint{});
+    state.vertices = std::move(addresses);
     state.sharp_features = parse_state_tag_records(tag_records, file);
     if (uv_section_line)
         saved.uvs = parse_uv_section(uv_records, expected[static_cast<int>(Section::BaseUvs)], state.base_triangles.size(),

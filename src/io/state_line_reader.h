@@ -2,6 +2,7 @@
 // Reads the tokens of one "#rgb" state line (state_format.h), reporting problems as
 // ObjError(BadState) with the file and line number.
 #include <charconv>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -31,6 +32,18 @@ public:
     }
     template <class T>
     T number(T max = std::numeric_limits<T>::max()) {
+        if constexpr (std::is_unsigned_v<T>) {
+            // Up to 9 plain digits (a saved file's millions of indices and addresses), read in one
+            // scan; anything else is read below, the same way, or named as a problem.
+            skip_blanks();
+            std::size_t e = 0;
+            std::uint64_t value = 0;
+            while (e < rest_.size() && e < 9 && rest_[e] >= '0' && rest_[e] <= '9') value = 10 * value + static_cast<std::uint64_t>(rest_[e++] - '0');
+            if (e > 0 && (e == rest_.size() || is_blank(rest_[e])) && value <= max) {
+                rest_.remove_prefix(e);
+                return static_cast<T>(value);
+            }
+        }
         const std::string_view w = word();
         if (w.empty()) fail("the line ends too early (is the file truncated?)");
         T value{};

@@ -222,9 +222,13 @@ std::vector<glm::dvec3> values_at(Evaluation<C>& evaluation, std::span<const std
     return result;
 }
 
-// The positions' part of the pass: insertion values, and the limits wanted (and any computed on the way).
+// The positions' part of the pass: insertion values, the values at `levels` (if any), and the limits
+// wanted (and any computed on the way).
 template <std::size_t C>
-HierarchyPositions positions(Evaluation<C>& evaluation, std::span<const std::uint32_t> order, std::span<const std::uint8_t> want_limit) {
+HierarchyPositions positions(Evaluation<C>& evaluation, std::span<const std::uint32_t> order, std::span<const std::uint8_t> want_limit,
+                             std::span<const std::uint8_t> levels) {
+    std::vector<glm::dvec3> at_levels;
+    if (!levels.empty()) at_levels = values_at(evaluation, order, levels, 0);
     // Only the vertices whose limit is wanted are cut into blocks: they gather where the order puts
     // them (the base vertices of a uniformly refined mesh all come first), so cutting the whole order
     // would leave one block all the work. Which limits get computed does not depend on the cut.
@@ -232,16 +236,16 @@ HierarchyPositions positions(Evaluation<C>& evaluation, std::span<const std::uin
     for (std::uint32_t v : order)
         if (want_limit[v]) wanted.push_back(v);
     evaluation.in_parallel(wanted, [&](std::uint32_t v, std::size_t block) { evaluation.limit(v, block); });
-    return {evaluation.insertions(0), evaluation.known_limits(0)};
+    return {evaluation.insertions(0), evaluation.known_limits(0), std::move(at_levels)};
 }
 
 }  // namespace
 
 HierarchyPositions hierarchy_positions(const BaseMesh& base, std::span<const SurfacePoint> points, const AddressIndex& index,
-                                       std::span<const std::uint8_t> want_limit) {
+                                       std::span<const std::uint8_t> want_limit, std::span<const std::uint8_t> levels) {
     Evaluation<1> evaluation({&base}, points, index);
     const std::vector<std::uint32_t> order = evaluation.insert_all();
-    return positions(evaluation, order, want_limit);
+    return positions(evaluation, order, want_limit, levels);
 }
 
 std::vector<glm::dvec3> hierarchy_values(const BaseMesh& base, std::span<const SurfacePoint> points, const AddressIndex& index,
@@ -252,12 +256,13 @@ std::vector<glm::dvec3> hierarchy_values(const BaseMesh& base, std::span<const S
 }
 
 HierarchyPositions hierarchy_positions(const BaseMesh& base, std::span<const SurfacePoint> points, const AddressIndex& index,
-                                       std::span<const std::uint8_t> want_limit, const BaseMesh& channel,
-                                       std::span<const std::uint8_t> channel_levels, std::vector<glm::dvec3>& channel_values) {
+                                       std::span<const std::uint8_t> want_limit, std::span<const std::uint8_t> levels,
+                                       const BaseMesh& channel, std::span<const std::uint8_t> channel_levels,
+                                       std::vector<glm::dvec3>& channel_values) {
     Evaluation<2> evaluation({&base, &channel}, points, index);
     const std::vector<std::uint32_t> order = evaluation.insert_all();
     channel_values = values_at(evaluation, order, channel_levels, 1);
-    return positions(evaluation, order, want_limit);
+    return positions(evaluation, order, want_limit, levels);
 }
 
 }  // namespace rgb

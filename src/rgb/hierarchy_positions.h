@@ -24,14 +24,16 @@ struct HierarchyPositions {
     };
     std::vector<glm::dvec3> insertion;  // per vertex
     std::vector<Limit> limits;          // the limits computed, by increasing vertex
+    std::vector<glm::dvec3> at_levels;  // per vertex, its value at the level asked for (empty if none asked)
 };
 
 // points[i]: vertex i's canonical address; base vertices are vertices 0..n0-1 in base order.
-// want_limit[i] != 0: vertex i's limit is wanted too.
+// want_limit[i] != 0: vertex i's limit is wanted too. `levels`, if not empty: vertex i's value at
+// levels[i] is wanted too, as hierarchy_values gives it (HierarchyPositions::at_levels).
 // Throws std::invalid_argument when a vertex's parent triangles are not all present (then the
 // vertex set is no RGB mesh: every vertex needs the corners of the triangles around its parent edge).
 HierarchyPositions hierarchy_positions(const BaseMesh& base, std::span<const SurfacePoint> points, const AddressIndex& index,
-                                       std::span<const std::uint8_t> want_limit);
+                                       std::span<const std::uint8_t> want_limit, std::span<const std::uint8_t> levels = {});
 
 // hierarchy_values' level that asks for the limit.
 inline constexpr std::uint8_t kLimitLevel = 255;
@@ -47,7 +49,8 @@ std::vector<glm::dvec3> hierarchy_values(const BaseMesh& base, std::span<const S
 // and channel_values = hierarchy_values over `channel` (base's faces and tags, other positions).
 // The neighbours are looked up once for both, so the channel costs its arithmetic only.
 HierarchyPositions hierarchy_positions(const BaseMesh& base, std::span<const SurfacePoint> points, const AddressIndex& index,
-                                       std::span<const std::uint8_t> want_limit, const BaseMesh& channel,
-                                       std::span<const std::uint8_t> channel_levels, std::vector<glm::dvec3>& channel_values);
+                                       std::span<const std::uint8_t> want_limit, std::span<const std::uint8_t> levels,
+                                       const BaseMesh& channel, std::span<const std::uint8_t> channel_levels,
+                                       std::vector<glm::dvec3>& channel_values);
 
 }  // namespace rgb

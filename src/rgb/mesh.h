@@ -224,7 +224,8 @@ public:
 
 private:
     friend struct MeshState capture_state(const Mesh& mesh);
-    friend Mesh restore_state(const struct MeshState& state, const class ProgressSpan& progress, struct RestoredChannel* channel);
+    friend Mesh restore_state(const struct MeshState& state, const class ProgressSpan& progress, struct RestoredChannel* channel,
+                              struct RestoredPositions* positions);
     friend void set_sharp_features(Mesh& mesh, const SharpFeatures& features);
 
     static constexpr std::uint8_t kDead = 0xff;

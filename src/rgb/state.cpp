@@ -1,6 +1,7 @@
 #include "rgb/state.h"
 
 #include <algorithm>
+#include <memory>
 #include <optional>
 #include <span>
 #include <stdexcept>
@@ -42,43 +43,65 @@ namespace {
 
 // The address of vertex i if it is a valid one for its place in the state, else why not.
 std::optional<std::string> address_problem(const BaseMesh& base, std::uint32_t i, const SurfacePoint& p) {
-    const std::string name = "vertex " + std::to_string(i);
+    // Named only for a report: this runs for every vertex of every file loaded.
+    auto name = [i] { return "vertex " + std::to_string(i); };
     if (p.face >= base.num_faces() || p.level < 0 || p.level > kMaxLevel ||
         std::uint64_t(p.a[0]) + p.a[1] + p.a[2] != (std::uint64_t(1) << p.level) || reduced(p) != p)
-        return name + " has an invalid address";
+        return name() + " has an invalid address";
     const bool base_slot = i < base.num_vertices();
     if (base_slot != (p.level == 0) || (base_slot && base_vertex(base, p) != i))
-        return name + ": the base vertices come first, in base order, and only they have level 0";
+        return name() + ": the base vertices come first, in base order, and only they have level 0";
     return std::nullopt;
 }
 
 // Outgoing halfedges grouped by their start vertex, each group sorted by end vertex: an entry is
 // (end << 32) | halfedge. Matching a halfedge a->b with b->a is then a search in b's short group.
 struct OutgoingHalfedges {
-    std::vector<std::uint32_t> start;  // vertex v's entries are [start[v], start[v + 1])
-    std::vector<std::uint64_t> entries;
+    std::vector<std::uint32_t> start;          // vertex v's entries are [start[v], start[v + 1])
+    std::unique_ptr<std::uint64_t[]> entries;  // 3 per face, each written once: nothing zero-fills them first
+    std::optional<std::uint32_t> repeating_face;  // the face of the first repeated directed edge, by start vertex
 
     static std::uint32_t end_vertex(std::uint64_t e) { return static_cast<std::uint32_t>(e >> 32); }
     static HalfedgeId halfedge(std::uint64_t e) { return HalfedgeId(static_cast<std::uint32_t>(e)); }
-    std::span<const std::uint64_t> of(std::uint32_t v) const {
-        return std::span<const std::uint64_t>(entries).subspan(start[v], start[v + 1] - start[v]);
-    }
+    std::span<const std::uint64_t> of(std::uint32_t v) const { return {entries.get() + start[v], start[v + 1] - start[v]}; }
 };
 
+// Grouped in parallel blocks of start vertices: each block's thread reads all the faces, in order,
+// and keeps the corners at its own vertices, so that counting and filling (random writes over 8
+// bytes per corner, the slow part) run on all cores and no thread writes where another does. Faces
+// must use vertices below nv only.
 OutgoingHalfedges outgoing_halfedges(const std::vector<Triangle>& faces, std::size_t nv) {
     OutgoingHalfedges out;
     out.start.assign(nv + 1, 0);
-    for (const Triangle& t : faces)
-        for (std::uint32_t v : t) ++out.start[v + 1];
-    for (std::size_t v = 0; v < nv; ++v) out.start[v + 1] += out.start[v];
-    out.entries.resize(3 * faces.size());
-    std::vector<std::uint32_t> cursor(out.start.begin(), out.start.end() - 1);
-    for (std::uint32_t f = 0; f < faces.size(); ++f)
-        for (int c = 0; c < 3; ++c)
-            out.entries[cursor[faces[f][c]]++] = std::uint64_t(faces[f][(c + 1) % 3]) << 32 | Mesh::halfedge(FaceId(f), c).idx;
-    parallel_for(nv, 1 << 16, [&](std::size_t begin, std::size_t end) {
-        for (std::size_t v = begin; v < end; ++v) std::sort(out.entries.begin() + out.start[v], out.entries.begin() + out.start[v + 1]);
+    const std::size_t blocks = parallel_blocks(nv, 1 << 16);
+    auto for_corners_at = [&faces](std::size_t begin, std::size_t end, const auto& f) {
+        const auto first = static_cast<std::uint32_t>(begin), count = static_cast<std::uint32_t>(end - begin);
+        for (std::uint32_t face = 0; face < faces.size(); ++face)
+            for (int c = 0; c < 3; ++c)
+                if (faces[face][c] - first < count) f(face, c);
+    };
+    parallel_blocks_for(nv, blocks, [&](std::size_t, std::size_t begin, std::size_t end) {
+        for_corners_at(begin, end, [&](std::uint32_t f, int c) { ++out.start[faces[f][c] + 1]; });
     });
+    for (std::size_t v = 0; v < nv; ++v) out.start[v + 1] += out.start[v];
+    out.entries.reset(new std::uint64_t[3 * faces.size()]);
+    std::vector<std::optional<std::uint32_t>> repeating(blocks);
+    parallel_blocks_for(nv, blocks, [&](std::size_t b, std::size_t begin, std::size_t end) {
+        std::vector<std::uint32_t> cursor(out.start.begin() + static_cast<std::ptrdiff_t>(begin), out.start.begin() + static_cast<std::ptrdiff_t>(end));
+        for_corners_at(begin, end, [&](std::uint32_t f, int c) {
+            out.entries[cursor[faces[f][c] - begin]++] = std::uint64_t(faces[f][(c + 1) % 3]) << 32 | Mesh::halfedge(FaceId(f), c).idx;
+        });
+        for (std::size_t v = begin; v < end; ++v) {
+            std::sort(out.entries.get() + out.start[v], out.entries.get() + out.start[v + 1]);
+            const auto group = out.of(static_cast<std::uint32_t>(v));
+            for (std::size_t k = 1; k < group.size() && !repeating[b]; ++k)
+                if (OutgoingHalfedges::end_vertex(group[k]) == OutgoingHalfedges::end_vertex(group[k - 1]))
+                    repeating[b] = Mesh::face(OutgoingHalfedges::halfedge(group[k])).idx;
+            if (repeating[b]) break;
+        }
+    });
+    for (const std::optional<std::uint32_t>& face : repeating)
+        if (face && !out.repeating_face) out.repeating_face = face;
     return out;
 }
 
@@ -143,42 +166,51 @@ std::optional<FaceType> type_from_corners(const Mesh& m, FaceId face) {
     return std::nullopt;
 }
 
-// Vertices: addresses checked and made canonical (points), so that equal points compare equal. The
-// first problem in vertex order is reported, a bad address or a repeated one.
+// Vertices: addresses checked and made canonical (points), so that equal points compare equal, in
+// parallel blocks that stop at their first problem. The first problem in vertex order is reported,
+// a bad address or a repeat of an earlier vertex.
 AddressIndex checked_addresses(const BaseMesh& base, const std::vector<SurfacePoint>& vertices, std::vector<SurfacePoint>& points) {
     const std::size_t nv = vertices.size();
-    std::optional<std::string> problem;
-    std::uint32_t checked = 0;
-    for (; checked < nv && !problem; ++checked) {
-        problem = address_problem(base, checked, vertices[checked]);
-        if (!problem) points[checked] = canonical(base, vertices[checked]);
-    }
-    if (problem) --checked;
+    std::vector<std::uint32_t> first_problem(parallel_blocks(nv, 1 << 15), BaseMesh::kNone);
+    parallel_blocks_for(nv, first_problem.size(), [&](std::size_t b, std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+            const auto v = static_cast<std::uint32_t>(i);
+            if (address_problem(base, v, vertices[v])) {
+                first_problem[b] = v;
+                return;
+            }
+            points[v] = canonical(base, vertices[v]);
+        }
+    });
+    const auto problem = std::find_if(first_problem.begin(), first_problem.end(), [](std::uint32_t v) { return v != BaseMesh::kNone; });
+    const std::uint32_t checked = problem == first_problem.end() ? static_cast<std::uint32_t>(nv) : *problem;
     AddressIndex index(std::span<const SurfacePoint>(points).first(checked), base.num_faces());
     if (const auto repeat = index.first_repeat()) fail("vertex " + std::to_string(*repeat) + " repeats another vertex");
-    if (problem) fail(*problem);
+    if (checked < nv) fail(*address_problem(base, checked, vertices[checked]));
     return index;
 }
 
 // The faces checked, and their adjacency: each halfedge's opposite (3f+i: corner i of face f), and
-// the outgoing halfedges grouped by vertex for the vertices' own halfedges.
+// the outgoing halfedges grouped by vertex for the vertices' own halfedges. The first face with a
+// missing vertex is reported, else the first that repeats a vertex (each parallel block finds its
+// own first ones), else the first repeated directed edge.
 OutgoingHalfedges matched_halfedges(const std::vector<Triangle>& faces, std::size_t nv, std::vector<HalfedgeId>& opposite) {
     const std::size_t nf = faces.size();
-    for (std::uint32_t f = 0; f < nf; ++f)
-        for (std::uint32_t v : faces[f])
-            if (v >= nv) fail("face " + std::to_string(f) + " uses a missing vertex");
-    for (std::uint32_t f = 0; f < nf; ++f) {
-        const Triangle& t = faces[f];
-        if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) fail("face " + std::to_string(f) + " repeats a vertex");
-    }
+    const std::size_t blocks = parallel_blocks(nf, 1 << 16);
+    std::vector<std::uint32_t> missing(blocks, BaseMesh::kNone), repeating(blocks, BaseMesh::kNone);
+    parallel_blocks_for(nf, blocks, [&](std::size_t b, std::size_t begin, std::size_t end) {
+        for (std::size_t f = begin; f < end; ++f) {
+            const Triangle& t = faces[f];
+            if (missing[b] == BaseMesh::kNone && (t[0] >= nv || t[1] >= nv || t[2] >= nv)) missing[b] = static_cast<std::uint32_t>(f);
+            if (repeating[b] == BaseMesh::kNone && (t[0] == t[1] || t[1] == t[2] || t[2] == t[0])) repeating[b] = static_cast<std::uint32_t>(f);
+        }
+    });
+    for (std::uint32_t f : missing)
+        if (f != BaseMesh::kNone) fail("face " + std::to_string(f) + " uses a missing vertex");
+    for (std::uint32_t f : repeating)
+        if (f != BaseMesh::kNone) fail("face " + std::to_string(f) + " repeats a vertex");
     OutgoingHalfedges out = outgoing_halfedges(faces, nv);
-    for (std::uint32_t v = 0; v < nv; ++v) {
-        const auto group = out.of(v);
-        for (std::size_t k = 1; k < group.size(); ++k)
-            if (OutgoingHalfedges::end_vertex(group[k]) == OutgoingHalfedges::end_vertex(group[k - 1]))
-                fail("face " + std::to_string(Mesh::face(OutgoingHalfedges::halfedge(group[k])).idx) +
-                     " repeats a directed edge (non-manifold)");
-    }
+    if (out.repeating_face) fail("face " + std::to_string(*out.repeating_face) + " repeats a directed edge (non-manifold)");
     opposite.assign(3 * nf, HalfedgeId());
     parallel_for(nv, 1 << 15, [&](std::size_t begin, std::size_t end) {
         for (std::size_t a = begin; a < end; ++a)
@@ -231,7 +263,7 @@ constexpr double kBaseBuilt = 0.01, kMatched = 0.26, kTyped = 0.40, kPositioned 
 // operators made: faces typed by their place in the hierarchy, insertion positions by the split
 // formula level by level. Every pass is linear (a table of addresses, halfedges grouped by vertex),
 // and the per-face ones run in parallel.
-Mesh restore_state(const MeshState& s, const ProgressSpan& progress, RestoredChannel* channel) {
+Mesh restore_state(const MeshState& s, const ProgressSpan& progress, RestoredChannel* channel, RestoredPositions* positions) {
     std::shared_ptr<const BaseMesh> base_mesh;
     try {
         base_mesh = std::make_shared<const BaseMesh>(s.base_positions, s.base_triangles, s.sharp_features);
@@ -257,10 +289,12 @@ Mesh restore_state(const MeshState& s, const ProgressSpan& progress, RestoredCha
             m.vertex_halfedge_.assign(nv, HalfedgeId());
             m.vertex_info_.resize(nv);
             m.address_.resize(nv);
-            for (std::uint32_t i = 0; i < nv; ++i) {
-                m.vertex_info_[i] = static_cast<std::uint8_t>(points[i].level | (is_boundary(base, points[i]) ? Mesh::kBoundaryBit : 0));
-                m.address_[i] = {points[i].face, points[i].a[1], points[i].a[2]};
-            }
+            parallel_for(nv, 1 << 15, [&](std::size_t begin, std::size_t end) {
+                for (std::size_t i = begin; i < end; ++i) {
+                    m.vertex_info_[i] = static_cast<std::uint8_t>(points[i].level | (is_boundary(base, points[i]) ? Mesh::kBoundaryBit : 0));
+                    m.address_[i] = {points[i].face, points[i].a[1], points[i].a[2]};
+                }
+            });
             m.vertex_count_ = nv;
         },
         [&] {
@@ -301,23 +335,26 @@ Mesh restore_state(const MeshState& s, const ProgressSpan& progress, RestoredCha
     // Insertion positions, coarsest first, by the split formula on the (present) parent stencil; and
     // the limits of the vertices displayed above their own level, which a viewer (and the loader's
     // check of a file's positions) needs at once.
-    // A channel's levels: where its values are wanted (vertex_channel.h).
-    std::vector<std::uint8_t> displayed_above_own_level(nv), channel_levels(channel ? nv : 0);
+    // The levels of a channel's values and of the positions asked for (vertex_channel.h).
+    std::vector<std::uint8_t> displayed_above_own_level(nv), channel_levels(channel ? nv : 0), position_levels(positions ? nv : 0);
+    auto level_of = [](ChannelLevel level, int shown) { return level == ChannelLevel::Limit ? kLimitLevel : static_cast<std::uint8_t>(shown); };
     parallel_for(nv, 1 << 15, [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i) {
             const VertexId v(static_cast<std::uint32_t>(i));
             const int shown = display_level(m, v);
             displayed_above_own_level[i] = shown > m.level(v);
-            if (channel) channel_levels[i] = channel->level == ChannelLevel::Limit ? kLimitLevel : static_cast<std::uint8_t>(shown);
+            if (channel) channel_levels[i] = level_of(channel->level, shown);
+            if (positions) position_levels[i] = level_of(positions->level, shown);
         }
     });
     try {
-        HierarchyPositions positions =
-            channel ? hierarchy_positions(base, points, *index, displayed_above_own_level,
+        HierarchyPositions values =
+            channel ? hierarchy_positions(base, points, *index, displayed_above_own_level, position_levels,
                                           BaseMesh(channel->base_values, base.faces(), base.sharp_features()), channel_levels, channel->values)
-                    : hierarchy_positions(base, points, *index, displayed_above_own_level);
-        m.insertion_position_ = std::move(positions.insertion);
-        for (const HierarchyPositions::Limit& l : positions.limits) m.cache_limit(VertexId(l.vertex), l.position);
+                    : hierarchy_positions(base, points, *index, displayed_above_own_level, position_levels);
+        m.insertion_position_ = std::move(values.insertion);
+        for (const HierarchyPositions::Limit& l : values.limits) m.cache_limit(VertexId(l.vertex), l.position);
+        if (positions) positions->values = std::move(values.at_levels);
     } catch (const std::invalid_argument& e) {
         fail(e.what());
     }

@@ -108,12 +108,28 @@ TEST(MeshFile, MeshWithBoundaryRestoresBitForBit) {
     expect_same_state(rgb::capture_state(restored), rgb::capture_state(mesh));
 }
 
+// What restore_state says of a state: the reason it refuses it, or "restored".
+std::string restore_problem(const rgb::MeshState& state) {
+    try {
+        rgb::restore_state(state);
+    } catch (const std::invalid_argument& e) {
+        return std::string(e.what());
+    }
+    return "restored";
+}
+
+// A grid of 64 x 64 squares at level 2: (4 * 64 + 1)^2 = 66,049 vertices and 131,072 faces, two
+// parallel blocks of vertices (2^15 or more each) and of faces (2^16) at least.
+rgb::MeshState large_grid_state() {
+    rgb::Mesh mesh = build_mesh(read_obj_text(grid_obj(64), "grid.obj"));
+    rgb::set_level(mesh, 2);
+    return rgb::capture_state(mesh);
+}
+
 // restore_state finds each vertex's halfedge in parallel blocks of vertices: of two vertices that
 // no face uses, the first in vertex order is named, whichever block it is in.
 TEST(MeshFile, TheFirstVertexUsedByNoFaceIsNamed) {
-    rgb::Mesh mesh = build_mesh(read_obj_text(grid_obj(64), "grid.obj"));
-    rgb::set_level(mesh, 2);  // (4 * 64 + 1)^2 = 66,049 vertices: two blocks of 2^15 or more
-    const rgb::MeshState state = rgb::capture_state(mesh);
+    const rgb::MeshState state = large_grid_state();
     ASSERT_EQ(state.vertices.size(), 66049u);
     const std::uint32_t early = 16500, late = 49500;
     auto without_faces_of = [&](std::initializer_list<std::uint32_t> vertices) {
@@ -123,16 +139,52 @@ TEST(MeshFile, TheFirstVertexUsedByNoFaceIsNamed) {
         });
         return cut;
     };
-    auto problem = [](const rgb::MeshState& cut) {
-        try {
-            rgb::restore_state(cut);
-        } catch (const std::invalid_argument& e) {
-            return std::string(e.what());
-        }
-        return std::string("restored");
+    EXPECT_EQ(restore_problem(without_faces_of({late})), "invalid RGB state: vertex 49500 is used by no face");
+    EXPECT_EQ(restore_problem(without_faces_of({early, late})), "invalid RGB state: vertex 16500 is used by no face");
+}
+
+// The checks of addresses and faces run in parallel blocks too, and name what a plain loop would
+// meet first: an invalid address before a later repeat (which is then not looked for), a repeat
+// before a later invalid address; a face with a missing vertex before any that repeats a vertex,
+// each the first in face order; a repeated directed edge at the later of the two faces using it.
+TEST(MeshFile, TheFirstBadAddressOrFaceIsNamed) {
+    const rgb::MeshState state = large_grid_state();
+    ASSERT_EQ(state.faces.size(), 131072u);
+    auto with = [&](const auto& change) {
+        rgb::MeshState changed = state;
+        change(changed);
+        return restore_problem(changed);
     };
-    EXPECT_EQ(problem(without_faces_of({late})), "invalid RGB state: vertex 49500 is used by no face");
-    EXPECT_EQ(problem(without_faces_of({early, late})), "invalid RGB state: vertex 16500 is used by no face");
+    const std::uint32_t nv = 66049;
+    auto invalid = [](rgb::SurfacePoint& p) { p.level = 99; };
+    EXPECT_EQ(with([&](rgb::MeshState& s) {
+                  invalid(s.vertices[60000]);
+                  invalid(s.vertices[20000]);
+              }),
+              "invalid RGB state: vertex 20000 has an invalid address");
+    EXPECT_EQ(with([&](rgb::MeshState& s) {
+                  invalid(s.vertices[50000]);
+                  s.vertices[60000] = s.vertices[30000];
+              }),
+              "invalid RGB state: vertex 50000 has an invalid address");
+    EXPECT_EQ(with([&](rgb::MeshState& s) {
+                  invalid(s.vertices[50000]);
+                  s.vertices[40000] = s.vertices[30000];
+              }),
+              "invalid RGB state: vertex 40000 repeats another vertex");
+    EXPECT_EQ(with([&](rgb::MeshState& s) {
+                  s.faces[10000][1] = s.faces[10000][0];
+                  s.faces[100000][0] = nv;
+                  s.faces[20000][2] = nv + 5;
+              }),
+              "invalid RGB state: face 20000 uses a missing vertex");
+    EXPECT_EQ(with([&](rgb::MeshState& s) {
+                  s.faces[90000][1] = s.faces[90000][0];
+                  s.faces[30000][2] = s.faces[30000][1];
+              }),
+              "invalid RGB state: face 30000 repeats a vertex");
+    EXPECT_EQ(with([&](rgb::MeshState& s) { s.faces[120000] = s.faces[40000]; }),
+              "invalid RGB state: face 120000 repeats a directed edge (non-manifold)");
 }
 
 TEST(MeshFile, RefiningAfterLoadingMatchesRefiningWithoutSaving) {
