@@ -25,7 +25,7 @@ std::size_t count_differing_positions(const Mesh& mesh, std::span<const glm::dve
             for (std::size_t i = begin; i < end; ++i) level[i] = static_cast<std::int8_t>(display_level(mesh, live(i)));
         });
     for (std::size_t i = 0; i < n; ++i)
-        if ((level[i] < 0 || level[i] > mesh.level(live(i))) && !mesh.cached_limit(live(i))) limit_position(mesh, live(i));
+        if ((level[i] < 0 || level[i] > mesh.level(live(i))) && !mesh.has_cached_limit(live(i))) limit_position(mesh, live(i));
     const std::size_t blocks = parallel_blocks(n, 1 << 15);
     std::vector<std::size_t> differing(blocks, 0);
     parallel_blocks_for(n, blocks, [&](std::size_t b, std::size_t begin, std::size_t end) {
