@@ -179,7 +179,7 @@ void write_obj(const rgb::Mesh& mesh, const SaveOptions& options, const std::str
     written_faces.done();
     append_tag_lines(mesh, obj_index, out);
     if (options.state)
-        write_state(mesh, options.positions == SavedPositions::Limit, out,
+        write_state(mesh, options.positions == SavedPositions::Limit, display_levels, out,
                     [&] {
                         output.flush_if_full();
                         written_state.add();
