@@ -24,8 +24,9 @@ namespace rgbio {
 
 namespace {
 
-glm::dvec3 written_position(const rgb::Mesh& mesh, rgb::VertexId v, SavedPositions which) {
-    return which == SavedPositions::Limit ? rgb::limit_position(mesh, v) : rgb::displayed_position(mesh, v);
+// `display_levels`: rgb::display_levels, for displayed positions.
+glm::dvec3 written_position(const rgb::Mesh& mesh, rgb::VertexId v, SavedPositions which, const std::vector<std::uint8_t>& display_levels) {
+    return which == SavedPositions::Limit ? rgb::limit_position(mesh, v) : rgb::displayed_position(mesh, v, display_levels[v.idx]);
 }
 
 }  // namespace
@@ -115,9 +116,11 @@ void write_obj(const rgb::Mesh& mesh, const SaveOptions& options, const std::str
         for (const std::string& library : library_references(*attributes, output_folder)) out += "mtllib " + library + "\n";
     std::vector<std::uint32_t> obj_index(mesh.vertex_capacity(), UINT32_MAX);
     std::uint32_t written = 0;
+    const std::vector<std::uint8_t> display_levels =
+        options.positions == SavedPositions::Limit ? std::vector<std::uint8_t>() : rgb::display_levels(mesh);
     for (rgb::VertexId v : mesh.vertices()) {
         obj_index[v.idx] = written++;
-        append_vector(out, "v", written_position(mesh, v, options.positions));
+        append_vector(out, "v", written_position(mesh, v, options.positions, display_levels));
         if (!colours.empty())
             for (int c = 0; c < 3; ++c) append_double(out, colours[v.idx][c]);
         out += '\n';
@@ -176,7 +179,7 @@ void write_obj(const rgb::Mesh& mesh, const SaveOptions& options, const std::str
     written_faces.done();
     append_tag_lines(mesh, obj_index, out);
     if (options.state)
-        write_state(mesh, options.positions == SavedPositions::Limit, out,
+        write_state(mesh, options.positions == SavedPositions::Limit, display_levels, out,
                     [&] {
                         output.flush_if_full();
                         written_state.add();

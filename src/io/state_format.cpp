@@ -63,9 +63,9 @@ void read_address_records(std::span<const ObjStateLine> run, const std::string& 
     for (const std::vector<rgb::SurfacePoint>& part : parts) addresses.insert(addresses.end(), part.begin(), part.end());
 }
 
-// The position a v line of the saved file holds.
-glm::dvec3 written_position(const rgb::Mesh& mesh, rgb::VertexId v, bool limit_positions) {
-    return limit_positions ? rgb::limit_position(mesh, v) : rgb::displayed_position(mesh, v);
+// The position a v line of the saved file holds (`display_levels` as write_state's).
+glm::dvec3 written_position(const rgb::Mesh& mesh, rgb::VertexId v, bool limit_positions, std::span<const std::uint8_t> display_levels) {
+    return limit_positions ? rgb::limit_position(mesh, v) : rgb::displayed_position(mesh, v, display_levels[v.idx]);
 }
 
 // Per base face, the index among the f lines (`face_lines`, or live faces in slot order when empty)
@@ -166,9 +166,9 @@ rgb::UvChannel parse_uv_section(std::span<const ObjStateLine> records, std::size
 
 }  // namespace
 
-void write_state(const rgb::Mesh& mesh, bool limit_positions, std::string& out, const std::function<void()>& flush_if_full,
-                 std::span<const rgb::FaceId> face_lines, const BaseFaceLabels& labels, const rgb::UvChannel* uvs,
-                 std::span<const glm::dvec3> base_colours) {
+void write_state(const rgb::Mesh& mesh, bool limit_positions, std::span<const std::uint8_t> display_levels, std::string& out,
+                 const std::function<void()>& flush_if_full, std::span<const rgb::FaceId> face_lines, const BaseFaceLabels& labels,
+                 const rgb::UvChannel* uvs, std::span<const glm::dvec3> base_colours) {
     const rgb::BaseMesh& base = mesh.base();
     const std::size_t n0 = base.num_vertices();
     out += "# rgbsub adaptive state: the #rgb lines restore the exact RGB mesh; other readers ignore them\n";
@@ -184,7 +184,7 @@ void write_state(const rgb::Mesh& mesh, bool limit_positions, std::string& out, 
     };
     for (std::uint32_t v = 0; v < n0; ++v) {
         // Where its v line puts it (bit for bit: -0 is not 0 here), it is not repeated.
-        const glm::dvec3 p = base.position(v), written = written_position(mesh, rgb::VertexId(v), limit_positions);
+        const glm::dvec3 p = base.position(v), written = written_position(mesh, rgb::VertexId(v), limit_positions, display_levels);
         if (std::memcmp(&p, &written, sizeof p) == 0) {
             ++run;
             continue;

@@ -77,11 +77,13 @@ struct SavedState {
 // Appends the lines of the mesh's state (rgb::capture_state's, read from the mesh as they are
 // written) to `out`, calling flush_if_full() between lines so that a file writer can empty the buffer
 // (the state of a large mesh is tens of megabytes). `face_lines`: the live faces in the order of the
-// file's f lines (which t-as-f records refer to), or empty for slot order. `labels` (per base face)
+// file's f lines (which t-as-f records refer to), or empty for slot order. `display_levels`: with
+// displayed positions, rgb::display_levels(mesh) (which the writer of the v lines has already), so
+// that the base vertices' positions cost no walk around each. `labels` (per base face)
 // become the optional face-labels section. `uvs`: the base mesh's UV channel, if any. `base_colours`:
 // empty, or one colour per base vertex (the base-colours section).
-void write_state(const rgb::Mesh& mesh, bool limit_positions, std::string& out, const std::function<void()>& flush_if_full,
-                 std::span<const rgb::FaceId> face_lines = {}, const BaseFaceLabels& labels = {},
+void write_state(const rgb::Mesh& mesh, bool limit_positions, std::span<const std::uint8_t> display_levels, std::string& out,
+                 const std::function<void()>& flush_if_full, std::span<const rgb::FaceId> face_lines = {}, const BaseFaceLabels& labels = {},
                  const rgb::UvChannel* uvs = nullptr, std::span<const glm::dvec3> base_colours = {});
 
 // The #rgb lines of a file, or nothing when they are not an rgbsub state at all (no `#rgb state`

@@ -60,15 +60,27 @@ LodDriver::LodDriver(Mesh& mesh, LodSettings settings)
     for (VertexId v : mesh_.vertices())
         if (mesh_.level(v) > 0) by_level[static_cast<std::size_t>(mesh_.level(v))].push_back(v);
     for (const auto& level : by_level) doomed_.insert(doomed_.end(), level.begin(), level.end());
-    vertex_key_.assign(mesh_.vertex_capacity(), 0);
+    // The default value reads limits from the driver's own array (edge_key); a criterion of the
+    // caller's, or sharp features (whose vertices need no limit for some values), take the general way.
+    const auto* value = settings_.value.target<double (*)(const Mesh&, VertexId, VertexId, int)>();
+    plain_edge_length_ = value && *value == &edge_length && !base.has_sharp_features();
+    grow_vertex_arrays(mesh_.vertex_capacity());
     std::fill(vertex_key_.begin(), vertex_key_.begin() + base.num_vertices(), kBaseKey);
-    base_space_.resize(mesh_.vertex_capacity());
-    limit_known_.assign(mesh_.vertex_capacity(), 0);
     for (std::uint32_t v = 0; v < base.num_vertices(); ++v) base_space_[v] = base.position(v);
+    face_added_.assign(mesh_.face_capacity(), 0);
     mesh_.add_observer(this);
 }
 
 LodDriver::~LodDriver() { mesh_.remove_observer(this); }
+
+// New slots start unkeyed, with no limit known.
+void LodDriver::grow_vertex_arrays(std::size_t size) {
+    if (size <= vertex_key_.size()) return;
+    vertex_key_.resize(size, 0);
+    base_space_.resize(size);
+    limit_known_.resize(size, 0);
+    if (plain_edge_length_) limit_.resize(size);
+}
 
 bool LodDriver::outranks(const Candidate& x, const Candidate& y) const {
     if (x.key != y.key) return x.key > y.key;
@@ -82,9 +94,14 @@ bool LodDriver::outranks(const Candidate& x, const Candidate& y) const {
 std::uint64_t LodDriver::edge_key(VertexId a, VertexId b, int level) {
     const std::uint64_t inherited = std::min(key_of(a), key_of(b));
     if (inherited == 0) return 0;
-    prepare_limit(a, level);
-    prepare_limit(b, level);
-    const double value = settings_.value(mesh_, a, b, level);
+    double value = 0.0;
+    if (plain_edge_length_) {
+        value = glm::distance(control_point_of(a, level), control_point_of(b, level));  // edge_length's bits
+    } else {
+        prepare_limit(a, level);
+        prepare_limit(b, level);
+        value = settings_.value(mesh_, a, b, level);
+    }
     if (!(value > settings_.threshold)) return 0;
     if (level >= settings_.max_level) {
         report_.level_cap_bound = true;
@@ -103,18 +120,34 @@ std::uint64_t LodDriver::edge_key(VertexId a, VertexId b, int level) {
 void LodDriver::prepare_limit(VertexId v, int level) {
     if (mesh_.level(v) >= level || limit_known_[v.idx]) return;
     limit_known_[v.idx] = 1;
-    if (mesh_.cached_limit(v)) return;
+    cache_limit_cheaply(v);
+}
+
+void LodDriver::cache_limit_cheaply(VertexId v) {
+    if (mesh_.has_cached_limit(v)) return;
     if (const auto limit = limit_from_completed_ring(mesh_, v)) mesh_.cache_limit(v, *limit);
+}
+
+// The limit of v, once known kept by slot (plain_edge_length_ only): found as prepare_limit and the
+// value would find it.
+const glm::dvec3& LodDriver::limit_of(VertexId v) {
+    if (!limit_known_[v.idx]) {
+        limit_known_[v.idx] = 1;
+        cache_limit_cheaply(v);
+        limit_[v.idx] = limit_position(mesh_, v);  // cached by now, or the general way
+    }
+    return limit_[v.idx];
+}
+
+glm::dvec3 LodDriver::control_point_of(VertexId v, int level) {
+    if (level <= mesh_.level(v)) return mesh_.insertion_position(v);
+    return control_point(mesh_, v, level, limit_of(v));
 }
 
 void LodDriver::vertex_added(const Mesh&, VertexId v, VertexId a, VertexId b) {
     ++report_.splits;
     added_vertices_.push_back(v);
-    if (v.idx >= vertex_key_.size()) {
-        vertex_key_.resize(std::max<std::size_t>(v.idx + 1, 2 * vertex_key_.size()), 0);
-        base_space_.resize(vertex_key_.size());
-        limit_known_.resize(vertex_key_.size());
-    }
+    if (v.idx >= vertex_key_.size()) grow_vertex_arrays(std::max<std::size_t>(v.idx + 1, 2 * vertex_key_.size()));
     limit_known_[v.idx] = 0;  // a slot the removals freed holds a new vertex
     base_space_[v.idx] = 0.5 * (base_space_[a.idx] + base_space_[b.idx]);
     unkeyed_.push_back({v, a, b});
@@ -139,7 +172,11 @@ void LodDriver::key_new_vertices() {
 void LodDriver::start_refining() {
     // With every split wanted the run ends at the budget: room for it at once, so that the arrays do
     // not regrow on the way (a split adds a vertex per two triangles, one per triangle on a boundary).
-    if (settings_.threshold <= 0.0) mesh_.reserve(settings_.max_triangles, settings_.max_triangles / 2 + mesh_.num_vertices());
+    if (settings_.threshold <= 0.0) {
+        mesh_.reserve(settings_.max_triangles, settings_.max_triangles / 2 + mesh_.num_vertices());
+        grow_vertex_arrays(mesh_.vertex_capacity());
+        face_added_.resize(std::max(face_added_.size(), mesh_.face_capacity()), 0);
+    }
     for (FaceId f : mesh_.faces())
         for (int i = 0; i < 3; ++i) {
             const HalfedgeId h = Mesh::halfedge(f, i);
@@ -160,12 +197,23 @@ void LodDriver::push(const Candidate& c) {
         bands_[band].push_back(c);
 }
 
+void LodDriver::face_added(const Mesh&, FaceId f) {
+    if (f.idx >= face_added_.size()) face_added_.resize(std::max<std::size_t>(f.idx + 1, 2 * face_added_.size()), 0);
+    if (face_added_[f.idx]) return;  // a slot freed and taken again within the step
+    face_added_[f.idx] = 1;
+    added_faces_.push_back(f);
+}
+
+void LodDriver::clear_added_faces() {
+    for (FaceId f : added_faces_) face_added_[f.idx] = 0;
+    added_faces_.clear();
+}
+
 // The green edges a step created: those inside the faces it added (both sides new) and new boundary
-// edges. An edge on the border of the added faces was there before, and queued then.
+// edges. An edge on the border of the added faces was there before, and queued then. (The order of
+// the pushes does not matter: a band is sorted before use, and its heap orders newcomers.)
 void LodDriver::push_new_edges() {
-    std::sort(added_faces_.begin(), added_faces_.end());
-    added_faces_.erase(std::unique(added_faces_.begin(), added_faces_.end()), added_faces_.end());
-    auto added = [&](FaceId f) { return std::binary_search(added_faces_.begin(), added_faces_.end(), f); };
+    auto added = [&](FaceId f) { return face_added_[f.idx] != 0; };
     for (FaceId f : added_faces_) {
         if (!mesh_.is_live(f)) continue;
         for (int i = 0; i < 3; ++i) {
@@ -194,7 +242,7 @@ bool LodDriver::split(const Candidate& c) {
         limit_position_where_uniform(mesh_, mesh_.from_vertex(side));
         limit_position_where_uniform(mesh_, mesh_.opposite_vertex(side));
     }
-    added_faces_.clear();
+    clear_added_faces();
     added_vertices_.clear();
     splitting_ = &c;
     refine_edge(mesh_, h);
@@ -263,7 +311,7 @@ bool LodDriver::step() {
         if (!doomed_.empty()) {
             const VertexId v = doomed_.back();
             doomed_.pop_back();
-            added_faces_.clear();
+            clear_added_faces();
             remove_vertex(mesh_, v);
             return true;
         }

@@ -84,12 +84,17 @@ private:
     };
     void vertex_added(const Mesh&, VertexId v, VertexId a, VertexId b) override;
     void vertex_removed(const Mesh&, VertexId) override { ++report_.removals; }
-    void face_added(const Mesh&, FaceId f) override { added_faces_.push_back(f); }
+    void face_added(const Mesh&, FaceId f) override;
 
     bool outranks(const Candidate& x, const Candidate& y) const;
     std::uint64_t edge_key(VertexId a, VertexId b, int level);
     std::uint64_t key_of(VertexId v) const { return v.idx < vertex_key_.size() ? vertex_key_[v.idx] : 0; }
     void prepare_limit(VertexId v, int level);
+    void cache_limit_cheaply(VertexId v);
+    const glm::dvec3& limit_of(VertexId v);
+    glm::dvec3 control_point_of(VertexId v, int level);
+    void grow_vertex_arrays(std::size_t size);
+    void clear_added_faces();
     void key_new_vertices();
     void push(const Candidate& c);
     void push_new_edges();
@@ -108,8 +113,11 @@ private:
     // evaluating each vertex's address), for Morton codes and ties.
     std::vector<glm::dvec3> base_space_;
     // Per vertex slot: whether its limit is known to be cached (prepare_limit), so that the check
-    // costs a byte rather than a probe of the mesh's limit table.
+    // costs a byte rather than a probe of the mesh's limit table; and, with the default value on a
+    // mesh without sharp features, the limit itself (limit_), read by slot rather than looked up.
     std::vector<std::uint8_t> limit_known_;
+    std::vector<glm::dvec3> limit_;
+    bool plain_edge_length_ = false;  // the value is edge_length and every vertex follows Loop's rules
     // Candidates by band (the key's top 16 bits), worked off band by band in key order: a band's list
     // is sorted once when its turn comes (sequential, cheap), and the few candidates a split adds to
     // the band being worked off wait in a small heap merged with that list. So every split comes in
@@ -120,6 +128,7 @@ private:
     std::priority_queue<Candidate, std::vector<Candidate>, Lower> queue_;
     const Candidate* splitting_ = nullptr;
     std::vector<FaceId> added_faces_;
+    std::vector<std::uint8_t> face_added_;  // per face slot: in added_faces_
     std::vector<VertexId> added_vertices_;
     struct Unkeyed {
         VertexId v, a, b;  // a new vertex and its parent edge

@@ -80,12 +80,17 @@ glm::dvec3 limit_position(const Mesh& mesh, VertexId v) {
 }
 
 void limit_position_where_uniform(const Mesh& mesh, VertexId v) {
-    if (!mesh.cached_limit(v) && ring_is_direct(mesh, v)) limit_position(mesh, v);
+    if (!mesh.has_cached_limit(v) && ring_is_direct(mesh, v)) limit_position(mesh, v);
 }
 
 glm::dvec3 control_point(const Mesh& mesh, VertexId v, int k) {
     if (k <= mesh.level(v)) return mesh.insertion_position(v);
     return later_control_point(mesh, v, k, [&] { return limit_position(mesh, v); });
+}
+
+glm::dvec3 control_point(const Mesh& mesh, VertexId v, int k, const glm::dvec3& limit) {
+    if (k <= mesh.level(v)) return mesh.insertion_position(v);
+    return later_control_point(mesh, v, k, [&] { return limit; });
 }
 
 int display_level(const Mesh& mesh, VertexId v) {
@@ -99,8 +104,28 @@ int display_level(const Mesh& mesh, VertexId v) {
     return std::max(mesh.level(v), lowest);
 }
 
-glm::dvec3 displayed_position(const Mesh& mesh, VertexId v) {
-    const int k = display_level(mesh, v);
+std::vector<std::uint8_t> display_levels(const Mesh& mesh) {
+    // The lowest edge level at each corner (its two edges), kept per vertex; then raised to the
+    // vertex's own level, as display_level does.
+    std::vector<std::uint8_t> levels(mesh.vertex_capacity(), 0xff);
+    for (FaceId f : mesh.faces()) {
+        std::array<int, 3> edge{};
+        for (int i = 0; i < 3; ++i) edge[static_cast<std::size_t>(i)] = mesh.edge_type(Mesh::halfedge(f, i)).level;
+        for (std::size_t c = 0; c < 3; ++c) {
+            std::uint8_t& lowest = levels[mesh.face_vertices(f)[c].idx];
+            lowest = static_cast<std::uint8_t>(std::min({int(lowest), edge[c], edge[(c + 2) % 3]}));
+        }
+    }
+    for (std::uint32_t i = 0; i < levels.size(); ++i) {
+        const VertexId v(i);
+        levels[i] = mesh.is_live(v) ? static_cast<std::uint8_t>(std::max(mesh.level(v), int(levels[i]))) : 0;
+    }
+    return levels;
+}
+
+glm::dvec3 displayed_position(const Mesh& mesh, VertexId v) { return displayed_position(mesh, v, display_level(mesh, v)); }
+
+glm::dvec3 displayed_position(const Mesh& mesh, VertexId v, int k) {
     if (k <= mesh.level(v)) return mesh.insertion_position(v);
     return later_control_point(mesh, v, k, [&] { return limit_position_uncached(mesh, v); });
 }

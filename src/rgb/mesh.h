@@ -158,9 +158,11 @@ public:
     // p^inf(v) if it has been computed (see loop_geometry.h, which computes it on demand).
     std::optional<glm::dvec3> cached_limit(VertexId v) const {
         // The flag answers the common "not cached" without a probe into the table.
-        if ((vertex_info_[v.idx] & kLimitBit) == 0) return std::nullopt;
+        if (!has_cached_limit(v)) return std::nullopt;
         return limits_.find(v.idx);
     }
+    // Whether cached_limit has a value, from the flag alone: for callers that only ask.
+    bool has_cached_limit(VertexId v) const { return (vertex_info_[v.idx] & kLimitBit) != 0; }
     // Number of neighbours in the uniform mesh of the vertex's own level (base valence or 6).
     int uniform_valence(VertexId v) const;
     int valence(VertexId v) const;  // in the current mesh
