@@ -3,26 +3,19 @@
 #include <imgui.h>
 
 #include "app/editor.h"
+#include "app/hover_tooltip.h"
 
 namespace app {
-
-namespace {
-
-void tooltip(const char* text) {
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
-}
-
-}  // namespace
 
 void detail_panel(Editor& editor) {
     if (!ImGui::CollapsingHeader("Detail by size, accuracy, view", ImGuiTreeNodeFlags_DefaultOpen)) return;
     DetailSettings& detail = editor.detail_settings();
     int criterion = static_cast<int>(detail.criterion);
     ImGui::RadioButton("max edge", &criterion, 0);
-    tooltip("No edge longer than the amount (as `rgbsub refine --max-edge`), as coarse as that allows");
+    hover_tooltip("No edge longer than the amount (as `rgbsub refine --max-edge`), as coarse as that allows");
     ImGui::SameLine();
     ImGui::RadioButton("tolerance", &criterion, 1);
-    tooltip("The surface shown within the amount of the Loop limit surface (as `rgbsub refine --tolerance`),\n"
+    hover_tooltip("The surface shown within the amount of the Loop limit surface (as `rgbsub refine --tolerance`),\n"
             "with as few triangles as that allows");
     detail.criterion = static_cast<rgbio::DetailCriterion>(criterion);
     float amount = static_cast<float>(detail.amount.value);
@@ -30,13 +23,13 @@ void detail_panel(Editor& editor) {
     if (amount > 0.0f) detail.amount.value = amount;
     ImGui::SameLine();
     ImGui::Checkbox("%", &detail.amount.percent);
-    tooltip("On: a percentage of the mesh's bounding-box diagonal; off: the mesh's units");
+    hover_tooltip("On: a percentage of the mesh's bounding-box diagonal; off: the mesh's units");
     if (ImGui::Button("Apply to the whole mesh")) editor.start_detail_edit();
-    tooltip("Over the next frames; Esc stops; one undo step");
+    hover_tooltip("Over the next frames; Esc stops; one undo step");
 
     float pixels = static_cast<float>(detail.view_pixels);
     ImGui::SliderFloat("view detail", &pixels, 1.0f, 64.0f, "%.1f px", ImGuiSliderFlags_Logarithmic);
-    tooltip("View-dependent LOD: edges longer than this on screen are split, shorter than half of it\n"
+    hover_tooltip("View-dependent LOD: edges longer than this on screen are split, shorter than half of it\n"
             "removed; outside the view and on the back only what visible detail needs stays");
     ViewLodJob* running = editor.view_lod();
     if (static_cast<double>(pixels) != detail.view_pixels) {
@@ -49,11 +42,11 @@ void detail_panel(Editor& editor) {
     }
     if (!running) {
         if (ImGui::Button("View-dependent LOD")) editor.start_view_lod();
-        tooltip("Detail follows the camera every frame until you freeze it");
+        hover_tooltip("Detail follows the camera every frame until you freeze it");
         return;
     }
     if (ImGui::Button("Freeze")) editor.freeze_view_lod();
-    tooltip("Esc: keeps the mesh as it is, an ordinary editable state (one undo step)");
+    hover_tooltip("Esc: keeps the mesh as it is, an ordinary editable state (one undo step)");
     ImGui::SameLine();
     ImGui::TextUnformatted(running->converged() ? "settled for this view" : "following the camera");
 }

@@ -10,6 +10,7 @@
 #include "app/crease_panel.h"
 #include "app/detail_panel.h"
 #include "app/editor.h"
+#include "app/hover_tooltip.h"
 #include "app/editor_dialogs.h"
 #include "render/colour_map.h"
 #include "rgb/mesh.h"
@@ -37,9 +38,6 @@ constexpr DisplayMode kDisplayModes[] = {
     {"diffuse texture", render::Shading::Smooth, render::Colouring::Texture},
 };
 
-void tooltip(const char* text) {
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
-}
 
 void copy_path(PanelState& state, const std::string& path) {
     const std::size_t n = std::min(path.size(), state.path.size() - 1);
@@ -61,35 +59,35 @@ void brush_panel(Editor& editor) {
     BrushSettings& brush = editor.brush();
     int mode = static_cast<int>(brush.mode);
     ImGui::RadioButton("refine", &mode, 0);
-    tooltip("Adds detail up to the target level (key 1)");
+    hover_tooltip("Adds detail up to the target level (key 1)");
     ImGui::SameLine();
     ImGui::RadioButton("coarsen", &mode, 1);
-    tooltip("Removes detail down to the target level (key 2)");
+    hover_tooltip("Removes detail down to the target level (key 2)");
     ImGui::SameLine();
     ImGui::RadioButton("set level", &mode, 2);
-    tooltip("Makes the level exactly the target (key 3)");
+    hover_tooltip("Makes the level exactly the target (key 3)");
     brush.mode = static_cast<BrushMode>(mode);
     int target = static_cast<int>(brush.target);
     ImGui::RadioButton("level", &target, 0);
-    tooltip("Dabs aim for a subdivision level");
+    hover_tooltip("Dabs aim for a subdivision level");
     ImGui::SameLine();
     ImGui::RadioButton("detail size", &target, 1);
-    tooltip("Dabs aim for an edge length: no edge longer, as coarse as that allows (no falloff)");
+    hover_tooltip("Dabs aim for an edge length: no edge longer, as coarse as that allows (no falloff)");
     ImGui::SameLine();
     ImGui::RadioButton("tolerance", &target, 2);
-    tooltip("Dabs aim for accuracy: the surface shown within the amount of the Loop limit surface,\n"
+    hover_tooltip("Dabs aim for accuracy: the surface shown within the amount of the Loop limit surface,\n"
             "with as few triangles as that allows (no falloff)");
     brush.target = static_cast<BrushSettings::Target>(target);
     if (brush.target == BrushSettings::Target::Level) {
         ImGui::SliderInt("target level", &brush.target_level, 0, kMaxBrushLevel);
-        tooltip("The level painting aims for (keys - and =)");
+        hover_tooltip("The level painting aims for (keys - and =)");
     } else {
         int unit = static_cast<int>(brush.detail_unit);
         ImGui::RadioButton("px##detail", &unit, 0);
-        tooltip("Relative detail: the amount in screen pixels where the dab lands (zoom in for finer)");
+        hover_tooltip("Relative detail: the amount in screen pixels where the dab lands (zoom in for finer)");
         ImGui::SameLine();
         ImGui::RadioButton("world##detail", &unit, 1);
-        tooltip("Constant detail: the amount in the mesh's units");
+        hover_tooltip("Constant detail: the amount in the mesh's units");
         brush.detail_unit = static_cast<RadiusUnit>(unit);
         if (brush.detail_unit == RadiusUnit::ScreenPixels)
             ImGui::SliderFloat("amount (px)", &brush.detail_px, 0.1f, 100.0f, "%.3g px", ImGuiSliderFlags_Logarithmic);
@@ -98,20 +96,20 @@ void brush_panel(Editor& editor) {
     }
     int unit = static_cast<int>(brush.unit);
     ImGui::RadioButton("screen", &unit, 0);
-    tooltip("Radius in screen pixels: the brush looks the same size at any zoom");
+    hover_tooltip("Radius in screen pixels: the brush looks the same size at any zoom");
     ImGui::SameLine();
     ImGui::RadioButton("world", &unit, 1);
-    tooltip("Radius in the mesh's units: the brush covers the same surface at any zoom");
+    hover_tooltip("Radius in the mesh's units: the brush covers the same surface at any zoom");
     brush.unit = static_cast<RadiusUnit>(unit);
     if (brush.unit == RadiusUnit::ScreenPixels)
         ImGui::SliderFloat("radius (px)", &brush.radius_px, 2.0f, 400.0f, "%.0f px");
     else
         ImGui::DragFloat("radius (world)", &brush.radius_world, brush.radius_world * 0.01f, 1e-6f, 1e6f, "%.4g units");
-    tooltip("Keys [ and ]");
+    hover_tooltip("Keys [ and ]");
     ImGui::SliderFloat("falloff", &brush.falloff, 0.0f, 1.0f, "%.2f of radius");
-    tooltip("The part of the radius, from the rim in, over which the level tapers off");
+    hover_tooltip("The part of the radius, from the rim in, over which the level tapers off");
     ImGui::Checkbox("paint through", &brush.paint_through);
-    tooltip("Off: only faces facing you and connected to the point under the cursor change.\n"
+    hover_tooltip("Off: only faces facing you and connected to the point under the cursor change.\n"
             "On: everything within the radius, the far side of thin parts too.");
     // What a drag does now: Shift visibly turns refining into removing detail.
     const BrushMode active = editor.active_mode();
@@ -128,26 +126,26 @@ void actions_panel(Editor& editor, PanelState& state) {
     ImGui::SliderInt("##flood", &state.flood_level, 0, kMaxBrushLevel, "level %d");
     ImGui::SameLine();
     if (ImGui::Button("Set all")) editor.start_flood_fill(state.flood_level);
-    tooltip("Every face to this level, coarse to fine over the next frames (Esc stops)");
+    hover_tooltip("Every face to this level, coarse to fine over the next frames (Esc stops)");
     if (ImGui::Button("Sample level under cursor (S)")) editor.sample_level_under_cursor();
     AutoLodSettings& lod = editor.auto_lod_settings();
     int budget = static_cast<int>(lod.triangle_budget);
     ImGui::DragInt("triangle budget", &budget, 1000.0f, 100, 20000000);
-    tooltip("Automatic LOD refines the longest edges until the mesh has this many triangles");
+    hover_tooltip("Automatic LOD refines the longest edges until the mesh has this many triangles");
     lod.triangle_budget = static_cast<std::size_t>(std::max(budget, 100));
     float edge = static_cast<float>(lod.max_edge_fraction * 100.0);
     ImGui::SliderFloat("max edge", &edge, 0.05f, 10.0f, "%.2f %% of size", ImGuiSliderFlags_Logarithmic);
-    tooltip("Edges longer than this share of the mesh's size get refined");
+    hover_tooltip("Edges longer than this share of the mesh's size get refined");
     lod.max_edge_fraction = edge / 100.0;
     if (ImGui::Button("Automatic LOD")) editor.start_auto_lod();
     const UndoHistory& history = editor.document().history();
     const std::string undo = history.can_undo() ? "Undo " + history.undo_label() : std::string("Undo");
     const std::string redo = history.can_redo() ? "Redo " + history.redo_label() : std::string("Redo");
     if (ImGui::Button(undo.c_str())) editor.undo();
-    tooltip("Ctrl+Z");
+    hover_tooltip("Ctrl+Z");
     ImGui::SameLine();
     if (ImGui::Button(redo.c_str())) editor.redo();
-    tooltip("Ctrl+Shift+Z or Ctrl+Y");
+    hover_tooltip("Ctrl+Shift+Z or Ctrl+Y");
     ImGui::Text("%zu/%zu steps, history %.1f of %.0f MB", history.undo_steps(), history.undo_steps() + history.redo_steps(),
                 static_cast<double>(history.bytes()) / 1e6, static_cast<double>(history.byte_bound()) / 1e6);
 }
@@ -161,31 +159,31 @@ void files_panel(Editor& editor, PanelState& state) {
     }
     if (!ImGui::CollapsingHeader("File", ImGuiTreeNodeFlags_DefaultOpen)) return;
     ImGui::InputText("path", state.path.data(), state.path.size());
-    tooltip("The file Open and Save as use; ... browses");
+    hover_tooltip("The file Open and Save as use; ... browses");
     ImGui::SameLine();
     if (ImGui::Button("...")) open_browser(state, FileBrowser::Purpose::Open, state.path.data());
     if (ImGui::Button("Open")) editor.request_open(state.path.data());
-    tooltip("Ctrl+O browses");
+    hover_tooltip("Ctrl+O browses");
     ImGui::SameLine();
     if (ImGui::Button("Save")) editor.request_save();
-    tooltip("Ctrl+S, to the document's file");
+    hover_tooltip("Ctrl+S, to the document's file");
     ImGui::SameLine();
     if (ImGui::Button("Save as")) editor.request_save_as(state.path.data());
-    tooltip("To the path above; Ctrl+Shift+S browses");
+    hover_tooltip("To the path above; Ctrl+Shift+S browses");
     ImGui::SameLine();
     if (ImGui::Button("Save strokes")) open_browser(state, FileBrowser::Purpose::SaveStrokes, state.path.data());
-    tooltip("Ctrl+E: the edits in effect as a script; rgbsub apply FILE.obj SCRIPT -o OUT.obj replays them");
+    hover_tooltip("Ctrl+E: the edits in effect as a script; rgbsub apply FILE.obj SCRIPT -o OUT.obj replays them");
     int positions = static_cast<int>(editor.save_options().positions);
     ImGui::RadioButton("displayed positions", &positions, 0);
     ImGui::SameLine();
     ImGui::RadioButton("limit", &positions, 1);
-    tooltip("Which positions a save writes: as shown, or on the Loop limit surface");
+    hover_tooltip("Which positions a save writes: as shown, or on the Loop limit surface");
     editor.save_options().positions = static_cast<rgbio::SavedPositions>(positions);
     if (const std::optional<rgb::UvInterpolation> uv = editor.document().uv_interpolation()) {
         int option = static_cast<int>(*uv);
         if (ImGui::Combo("UV interpolation", &option, "none\0corners\0boundaries\0all\0"))
             editor.document().set_uv_interpolation(static_cast<rgb::UvInterpolation>(option));
-        tooltip("How saved texture coordinates are subdivided (OpenSubdiv's FVAR_LINEAR_* options): none moves every "
+        hover_tooltip("How saved texture coordinates are subdivided (OpenSubdiv's FVAR_LINEAR_* options): none moves every "
                 "UV (seams become smooth curves), corners keeps UV corners in place, boundaries keeps seams and borders "
                 "on their input lines, all is linear");
     }
@@ -206,19 +204,19 @@ void display_panel(render::RenderOptions& options) {
             if (ImGui::Selectable(mode.name, &mode == current)) current = &mode;
         ImGui::EndCombo();
     }
-    tooltip("The heat map gives every level one colour of its own. Material colours (Kd), vertex colours and the checker\n"
+    hover_tooltip("The heat map gives every level one colour of its own. Material colours (Kd), vertex colours and the checker\n"
             "over the texture coordinates show the file's data, interpolated linearly over each base face (a preview:\n"
             "a refined save keeps materials, but not yet texture coordinates or colours)");
     options.shading = current->shading;
     options.colouring = current->colouring;
     ImGui::Checkbox("wireframe", &options.wireframe);
-    tooltip("Lines fade where triangles are only a few pixels across");
+    hover_tooltip("Lines fade where triangles are only a few pixels across");
     ImGui::SameLine();
     ImGui::Checkbox("base mesh", &options.base_mesh_overlay);
-    tooltip("The input's control cage over the surface");
+    hover_tooltip("The input's control cage over the surface");
     bool limit = options.positions == render::PositionSource::Limit;
     ImGui::Checkbox("limit positions", &limit);
-    tooltip("Show (and pick on) the Loop limit surface instead of the mesh's own positions");
+    hover_tooltip("Show (and pick on) the Loop limit surface instead of the mesh's own positions");
     options.positions = limit ? render::PositionSource::Limit : render::PositionSource::Displayed;
     ImGui::TextDisabled("back faces (through holes): brick-red");
 }

@@ -6,6 +6,7 @@
 #include <functional>
 #include <unordered_set>
 
+#include "io/number_format.h"
 #include "io/obj_error.h"
 #include "io/printable_text.h"
 #include "rgb/loop_geometry.h"
@@ -48,11 +49,6 @@ int integer_sharpness(double s, const std::function<void(const std::string&)>& f
 }
 
 std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) { return (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b); }
-
-void append_number(std::string& out, std::uint64_t x) {
-    out += ' ';
-    out += std::to_string(x);
-}
 
 }  // namespace
 
@@ -179,9 +175,9 @@ void append_tag_lines(const rgb::Mesh& mesh, std::span<const std::uint32_t> obj_
     for (const rgb::MeshSharpEdge& e : rgb::sharp_mesh_edges(mesh)) {
         if (e.sharpness <= 0) continue;
         out += "t crease 2/1/0";
-        append_number(out, obj_index[mesh.from_vertex(e.halfedge).idx]);
-        append_number(out, obj_index[mesh.to_vertex(e.halfedge).idx]);
-        append_number(out, static_cast<std::uint64_t>(e.sharpness));
+        append_integer(out, obj_index[mesh.from_vertex(e.halfedge).idx]);
+        append_integer(out, obj_index[mesh.to_vertex(e.halfedge).idx]);
+        append_integer(out, static_cast<std::uint64_t>(e.sharpness));
         out += '\n';
     }
     for (const rgb::VertexSharpness& c : features.corners) {
@@ -189,8 +185,8 @@ void append_tag_lines(const rgb::Mesh& mesh, std::span<const std::uint32_t> obj_
         const int now = c.sharpness >= rgb::kInfiniteSharpness ? c.sharpness : c.sharpness - rgb::display_level(mesh, v);
         if (now <= 0) continue;
         out += "t corner 1/1/0";
-        append_number(out, obj_index[v.idx]);
-        append_number(out, static_cast<std::uint64_t>(now));
+        append_integer(out, obj_index[v.idx]);
+        append_integer(out, static_cast<std::uint64_t>(now));
         out += '\n';
     }
 }
@@ -204,14 +200,14 @@ void append_state_tag_records(const rgb::SharpFeatures& features, std::string& o
         for (std::size_t k = i; k < std::min(features.edges.size(), i + per_line); ++k)
             for (std::uint64_t x : {std::uint64_t(features.edges[k].a), std::uint64_t(features.edges[k].b),
                                     std::uint64_t(features.edges[k].sharpness)})
-                append_number(out, x);
+                append_integer(out, x);
         out += '\n';
     }
     for (std::size_t i = 0; i < features.corners.size(); i += per_line) {
         out += "#rgb corner";
         for (std::size_t k = i; k < std::min(features.corners.size(), i + per_line); ++k)
             for (std::uint64_t x : {std::uint64_t(features.corners[k].vertex), std::uint64_t(features.corners[k].sharpness)})
-                append_number(out, x);
+                append_integer(out, x);
         out += '\n';
     }
 }

@@ -21,13 +21,6 @@ namespace {
 
 constexpr std::size_t kPerLine = 8;
 
-void append_number(std::string& out, std::uint64_t x) {
-    char buffer[24];
-    const auto end = std::to_chars(buffer, buffer + sizeof buffer, x).ptr;
-    out += ' ';
-    out.append(buffer, end);
-}
-
 constexpr std::size_t kNoLine = static_cast<std::size_t>(-1);
 
 // The addresses of one "a" record, after its keyword.
@@ -104,14 +97,14 @@ void append_uv_section(const rgb::UvChannel& uvs, std::string& out, const std::f
     }
     for (std::size_t i = 0; i < uvs.faces_without_uvs.size(); i += 3 * kPerLine) {
         out += "#rgb uv-untextured";
-        for (std::size_t k = i; k < std::min(uvs.faces_without_uvs.size(), i + 3 * kPerLine); ++k) append_number(out, uvs.faces_without_uvs[k]);
+        for (std::size_t k = i; k < std::min(uvs.faces_without_uvs.size(), i + 3 * kPerLine); ++k) append_integer(out, uvs.faces_without_uvs[k]);
         out += '\n';
         flush_if_full();
     }
     for (std::size_t i = 0; i < uvs.corners.size(); i += kPerLine) {
         out += "#rgb uv-faces";
         for (std::size_t k = i; k < std::min(uvs.corners.size(), i + kPerLine); ++k)
-            for (std::uint32_t x : uvs.corners[k]) append_number(out, x);
+            for (std::uint32_t x : uvs.corners[k]) append_integer(out, x);
         out += '\n';
         flush_if_full();
     }
@@ -206,7 +199,7 @@ void write_state(const rgb::Mesh& mesh, bool limit_positions, std::span<const st
         for (std::size_t i = 0; i < explicit_faces.size(); i += kPerLine) {
             out += "#rgb t";
             for (std::size_t k = i; k < std::min(explicit_faces.size(), i + kPerLine); ++k)
-                for (std::uint32_t v : explicit_faces[k]) append_number(out, v);
+                for (std::uint32_t v : explicit_faces[k]) append_integer(out, v);
             out += '\n';
             flush_if_full();
         }
@@ -234,7 +227,7 @@ void write_state(const rgb::Mesh& mesh, bool limit_positions, std::span<const st
         if (on_line == 0) out += "#rgb a";
         const rgb::SurfacePoint p = mesh.address(v);
         for (std::uint64_t x : {std::uint64_t(p.face), std::uint64_t(p.a[1]), std::uint64_t(p.a[2]), std::uint64_t(p.level)})
-            append_number(out, x);
+            append_integer(out, x);
         if (++on_line == kPerLine) {
             out += '\n';
             on_line = 0;

@@ -15,11 +15,6 @@ namespace {
 
 constexpr std::uint32_t kLeafSize = 8;
 
-std::array<glm::dvec3, 3> corners(const BaseMesh& base, std::uint32_t f) {
-    const Triangle& t = base.face(f);
-    return {base.position(t[0]), base.position(t[1]), base.position(t[2])};
-}
-
 double box_distance_squared(const glm::dvec3& p, const glm::dvec3& lo, const glm::dvec3& hi) {
     const glm::dvec3 d = glm::max(glm::max(lo - p, p - hi), glm::dvec3(0.0));
     return glm::dot(d, d);
@@ -33,7 +28,7 @@ BaseFaceIndex::BaseFaceIndex(const BaseMesh& base) : base_(base), faces_(base.nu
     // Each face's box and centroid once, rather than from its corners at every level of the build.
     std::vector<FaceBox> boxes(faces_.size());
     for (std::uint32_t f = 0; f < faces_.size(); ++f) {
-        const auto c = corners(base_, f);
+        const auto c = base_.corner_positions(f);
         boxes[f] = {glm::min(glm::min(c[0], c[1]), c[2]), glm::max(glm::max(c[0], c[1]), c[2]), c[0] + c[1] + c[2]};
     }
     nodes_.reserve(2 * faces_.size() / kLeafSize + 2);
@@ -80,7 +75,7 @@ std::vector<std::uint32_t> BaseFaceIndex::faces_meeting_sphere(const glm::dvec3&
             continue;
         }
         for (std::uint32_t i = n.first; i < n.first + n.count; ++i)
-            if (triangle_meets_sphere(corners(base_, faces_[i]), centre, radius)) found.push_back(faces_[i]);
+            if (triangle_meets_sphere(base_.corner_positions(faces_[i]), centre, radius)) found.push_back(faces_[i]);
     }
     std::sort(found.begin(), found.end());
     return found;

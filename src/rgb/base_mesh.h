@@ -45,6 +45,9 @@ public:
     const glm::dvec3& position(std::uint32_t v) const { return positions_[v]; }
     std::span<const glm::dvec3> positions() const { return positions_; }
     const Triangle& face(std::uint32_t f) const { return faces_[f]; }
+    std::array<glm::dvec3, 3> corner_positions(std::uint32_t f) const {
+        return {positions_[faces_[f][0]], positions_[faces_[f][1]], positions_[faces_[f][2]]};
+    }
     std::span<const Triangle> faces() const { return faces_; }
 
     // The halfedge opposite base halfedge h (3f+i), or kNone on the boundary.

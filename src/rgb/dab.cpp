@@ -20,11 +20,6 @@ double strength(double falloff, double d, double radius) {
     return band <= 0.0 ? 1.0 : std::clamp((radius - d) / band, 0.0, 1.0);
 }
 
-std::array<glm::dvec3, 3> corners(const BaseMesh& base, std::uint32_t f) {
-    const Triangle& t = base.face(f);
-    return {base.position(t[0]), base.position(t[1]), base.position(t[2])};
-}
-
 // Oriented normal (unnormalised), from the corners rotated to start at the lexicographically smallest,
 // so that the input's corner rotation cannot flip a borderline facing test.
 glm::dvec3 canonical_normal(std::array<glm::dvec3, 3> c) {
@@ -55,13 +50,13 @@ std::vector<std::uint32_t> facing_base_faces(const Mesh& mesh, const Sphere& bal
     const BaseMesh& base = mesh.base();
     const std::vector<std::uint32_t> meeting = base.face_index().faces_meeting_sphere(ball.centre, ball.radius);
     auto in_ball = [&](std::uint32_t f) { return std::binary_search(meeting.begin(), meeting.end(), f); };
-    auto facing = [&](std::uint32_t f) { return glm::dot(canonical_normal(corners(base, f)), view) < 0.0; };
+    auto facing = [&](std::uint32_t f) { return glm::dot(canonical_normal(base.corner_positions(f)), view) < 0.0; };
     // The hit: the facing base face nearest the centre (ties: the smaller corner positions, not ids).
     std::optional<std::uint32_t> hit;
     double best = 0.0;
     for (std::uint32_t f : meeting) {
         if (!facing(f)) continue;
-        auto c = corners(base, f);
+        auto c = base.corner_positions(f);
         std::sort(c.begin(), c.end(), [](const glm::dvec3& x, const glm::dvec3& y) {
             if (x.x != y.x) return x.x < y.x;
             if (x.y != y.y) return x.y < y.y;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "rgb/mesh.h"
+#include "rgb/surface_point.h"
 
 namespace rgb {
 
@@ -28,14 +29,6 @@ std::optional<CornerNumerators> corners_in(const Mesh& mesh, FaceId f, std::uint
     for (int i = 0; i < 3; ++i)
         if (out[0][i] + out[1][i] + out[2][i] == 0) return std::nullopt;
     return out;
-}
-
-std::int64_t orientation(const std::array<std::uint32_t, 3>& p, const std::array<std::uint32_t, 3>& q,
-                         const std::array<std::uint32_t, 3>& r) {
-    // In the plane of the two free barycentric coordinates (a1, a2).
-    const std::int64_t ux = std::int64_t(q[1]) - p[1], uy = std::int64_t(q[2]) - p[2];
-    const std::int64_t vx = std::int64_t(r[1]) - p[1], vy = std::int64_t(r[2]) - p[2];
-    return ux * vy - uy * vx;
 }
 
 int top_level(const Mesh& mesh, FaceId f) {
@@ -174,8 +167,8 @@ FaceId face_containing(const Mesh& mesh, std::uint32_t base_face, const std::arr
         const FaceId f(open.top().second);
         open.pop();
         const auto c = *corners_in(mesh, f, base_face, level);
-        if (orientation(c[0], c[1], target) >= 0 && orientation(c[1], c[2], target) >= 0 &&
-            orientation(c[2], c[0], target) >= 0)
+        if (lattice_orientation(c[0], c[1], target) >= 0 && lattice_orientation(c[1], c[2], target) >= 0 &&
+            lattice_orientation(c[2], c[0], target) >= 0)
             return f;
         for (int i = 0; i < 3; ++i) {
             const HalfedgeId o = mesh.opposite(Mesh::halfedge(f, i));

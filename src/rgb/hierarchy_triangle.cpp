@@ -4,19 +4,11 @@
 #include <stdexcept>
 
 #include "rgb/base_mesh.h"
+#include "rgb/surface_point.h"
 
 namespace rgb {
 
 namespace {
-
-// Twice the signed area in the plane of the free barycentric coordinates (a1, a2): positive when
-// (p, q, r) runs counter-clockwise like the base face's corners.
-std::int64_t orientation(const std::array<std::uint32_t, 3>& p, const std::array<std::uint32_t, 3>& q,
-                         const std::array<std::uint32_t, 3>& r) {
-    const std::int64_t ux = std::int64_t(q[1]) - p[1], uy = std::int64_t(q[2]) - p[2];
-    const std::int64_t vx = std::int64_t(r[1]) - p[1], vy = std::int64_t(r[2]) - p[2];
-    return ux * vy - uy * vx;
-}
 
 std::array<SampleWeights, kSamplesPerTriangle> make_sample_weights() {
     std::array<SampleWeights, kSamplesPerTriangle> w{};
@@ -83,7 +75,7 @@ InlineVector<HierarchyTriangle, 2> triangles_beside(const BaseMesh& base, const 
             t.corners[i] = numerators_at(*p, t.level);
         }
         t.corners[2] = numerators_at(far, t.level);
-        if (orientation(t.corners[0], t.corners[1], t.corners[2]) < 0) std::swap(t.corners[0], t.corners[1]);
+        if (lattice_orientation(t.corners[0], t.corners[1], t.corners[2]) < 0) std::swap(t.corners[0], t.corners[1]);
         out.push_back(t);
     }
     return out;

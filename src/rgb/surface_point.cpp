@@ -89,6 +89,13 @@ std::array<std::uint32_t, 3> numerators_at(const SurfacePoint& p, int k) {
     return {p.a[0] << shift, p.a[1] << shift, p.a[2] << shift};
 }
 
+std::int64_t lattice_orientation(const std::array<std::uint32_t, 3>& p, const std::array<std::uint32_t, 3>& q,
+                                 const std::array<std::uint32_t, 3>& r) {
+    const std::int64_t ux = std::int64_t(q[1]) - p[1], uy = std::int64_t(q[2]) - p[2];
+    const std::int64_t vx = std::int64_t(r[1]) - p[1], vy = std::int64_t(r[2]) - p[2];
+    return ux * vy - uy * vx;
+}
+
 std::optional<std::uint32_t> base_vertex(const BaseMesh& base, const SurfacePoint& p) {
     if (p.level != 0) return std::nullopt;
     for (int c = 0; c < 3; ++c)

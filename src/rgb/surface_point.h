@@ -34,6 +34,10 @@ SurfacePoint corner_point(std::uint32_t f, int corner);
 SurfacePoint reduced(SurfacePoint p);
 // The same point with denominator 2^k (k >= p.level).
 std::array<std::uint32_t, 3> numerators_at(const SurfacePoint& p, int k);
+// Twice the signed area of the triangle of three numerator triples of one level, in the plane of the
+// free coordinates (a1, a2): positive when (p, q, r) runs counter-clockwise like the base face's corners.
+std::int64_t lattice_orientation(const std::array<std::uint32_t, 3>& p, const std::array<std::uint32_t, 3>& q,
+                                 const std::array<std::uint32_t, 3>& r);
 
 // The base vertex p is, if it is one.
 std::optional<std::uint32_t> base_vertex(const BaseMesh& base, const SurfacePoint& p);

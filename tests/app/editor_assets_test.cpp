@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "app/editor.h"
+#include "editor_fixture.h"
 #include "io/base_attributes.h"
 #include "io/obj_reader.h"
 #include "render/surface_appearance.h"
@@ -15,32 +16,27 @@
 namespace app {
 namespace {
 
-constexpr glm::ivec2 kViewport{800, 600};
-constexpr int kCells = 4;
+using test::kViewport;
+using test::fresh_folder;
 
-std::filesystem::path fresh_folder(const std::string& name) {
-    const std::filesystem::path folder = std::filesystem::path(::testing::TempDir()) / name;
-    std::filesystem::remove_all(folder);
-    std::filesystem::create_directories(folder);
-    return folder;
-}
+constexpr int kGridCells = 4;
 
-// A flat kCells x kCells grid facing +z with texture coordinates (x, y) / kCells and vertex colours
-// (x / kCells, y / kCells, 0.5), material "left" (red) or "right" (blue) by column half and group
+// A flat kGridCells x kGridCells grid facing +z with texture coordinates (x, y) / kGridCells and vertex colours
+// (x / kGridCells, y / kGridCells, 0.5), material "left" (red) or "right" (blue) by column half and group
 // "bottom" or "top" by row half, and its library.
 void write_grid(const std::filesystem::path& folder) {
     std::ofstream mtl(folder / "grid.mtl");
     mtl << "newmtl left\nKd 1 0 0\nnewmtl right\nKd 0 0 1\n";
     std::ofstream obj(folder / "grid.obj");
     obj << "mtllib grid.mtl\n";
-    for (int y = 0; y <= kCells; ++y)
-        for (int x = 0; x <= kCells; ++x)
-            obj << "v " << x << ' ' << y << " 0 " << double(x) / kCells << ' ' << double(y) / kCells << " 0.5\nvt "
-                << double(x) / kCells << ' ' << double(y) / kCells << '\n';
-    for (int y = 0; y < kCells; ++y)
-        for (int x = 0; x < kCells; ++x) {
-            const int a = y * (kCells + 1) + x + 1, b = a + 1, c = a + kCells + 2, d = a + kCells + 1;
-            obj << "g " << (y < kCells / 2 ? "bottom" : "top") << "\nusemtl " << (x < kCells / 2 ? "left" : "right") << '\n';
+    for (int y = 0; y <= kGridCells; ++y)
+        for (int x = 0; x <= kGridCells; ++x)
+            obj << "v " << x << ' ' << y << " 0 " << double(x) / kGridCells << ' ' << double(y) / kGridCells << " 0.5\nvt "
+                << double(x) / kGridCells << ' ' << double(y) / kGridCells << '\n';
+    for (int y = 0; y < kGridCells; ++y)
+        for (int x = 0; x < kGridCells; ++x) {
+            const int a = y * (kGridCells + 1) + x + 1, b = a + 1, c = a + kGridCells + 2, d = a + kGridCells + 1;
+            obj << "g " << (y < kGridCells / 2 ? "bottom" : "top") << "\nusemtl " << (x < kGridCells / 2 ? "left" : "right") << '\n';
             obj << "f " << a << '/' << a << ' ' << b << '/' << b << ' ' << c << '/' << c << '\n';
             obj << "f " << a << '/' << a << ' ' << c << '/' << c << ' ' << d << '/' << d << '\n';
         }
@@ -55,19 +51,19 @@ TEST(EditorAssets, OpeningShowsTheFilesLookAndSavingKeepsItsLabels) {
 
     const std::shared_ptr<const render::SurfaceAppearance>& look = editor.document().appearance();
     ASSERT_NE(look, nullptr);
-    ASSERT_EQ(look->face_colours.size(), 2u * kCells * kCells);
+    ASSERT_EQ(look->face_colours.size(), 2u * kGridCells * kGridCells);
     ASSERT_TRUE(look->uvs.has_value());
-    ASSERT_EQ(look->uvs->corners.size(), 2u * kCells * kCells);
-    ASSERT_EQ(look->vertex_colours.size(), std::size_t{(kCells + 1) * (kCells + 1)});
+    ASSERT_EQ(look->uvs->corners.size(), 2u * kGridCells * kGridCells);
+    ASSERT_EQ(look->vertex_colours.size(), std::size_t{(kGridCells + 1) * (kGridCells + 1)});
     const rgb::BaseMesh& base = editor.document().mesh().base();
     for (std::uint32_t f = 0; f < base.num_faces(); ++f) {
         glm::dvec3 centroid(0.0);
         for (int c = 0; c < 3; ++c) {
             const glm::dvec3& p = base.position(base.face(f)[c]);
             centroid += p / 3.0;
-            EXPECT_EQ(look->uvs->values[look->uvs->corners[f][c]], glm::dvec2(p.x / kCells, p.y / kCells));
+            EXPECT_EQ(look->uvs->values[look->uvs->corners[f][c]], glm::dvec2(p.x / kGridCells, p.y / kGridCells));
         }
-        EXPECT_EQ(*look->face_colours[f], centroid.x < kCells / 2 ? glm::vec3(1, 0, 0) : glm::vec3(0, 0, 1)) << "face " << f;
+        EXPECT_EQ(*look->face_colours[f], centroid.x < kGridCells / 2 ? glm::vec3(1, 0, 0) : glm::vec3(0, 0, 1)) << "face " << f;
     }
 
     const std::size_t before = editor.document().mesh().num_faces();

@@ -9,6 +9,7 @@
 #include <glm/vec4.hpp>
 
 #include "app/editor.h"
+#include "editor_fixture.h"
 #include "io/mesh_file.h"
 #include "rgb/loop_geometry.h"
 #include "rgb/requests.h"
@@ -18,7 +19,7 @@
 namespace app {
 namespace {
 
-constexpr glm::ivec2 kViewport{800, 600};
+using test::kViewport;
 
 class EditorCreases : public ::testing::Test {
 protected:

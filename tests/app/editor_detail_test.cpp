@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "app/editor.h"
+#include "editor_fixture.h"
 #include "io/detail_edit.h"
 #include "io/lod_script.h"
 #include "io/mesh_file.h"
@@ -26,9 +27,8 @@
 namespace app {
 namespace {
 
-constexpr glm::ivec2 kViewport{800, 600};
-
-std::string bunny_path() { return std::string(RGBSUB_SOURCE_DIR) + "/assets/bunny.obj"; }
+using test::kViewport;
+using test::bunny_path;
 
 class EditorDetail : public ::testing::Test {
 protected:

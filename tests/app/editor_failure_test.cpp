@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "app/editor.h"
+#include "editor_fixture.h"
 #include "rgb/invariants.h"
 #include "rgb/state.h"
 #include "support/same_mesh.h"
@@ -20,7 +21,7 @@
 namespace app {
 namespace {
 
-constexpr glm::ivec2 kViewport{800, 600};
+using test::kViewport;
 
 class EditorFailure : public ::testing::Test {
 protected:

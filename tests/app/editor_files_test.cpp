@@ -26,18 +26,11 @@
 namespace app {
 namespace {
 
+using test::bunny_path;
+using test::fresh_folder;
+
 using test::EditorFixture;
 using test::kViewport;
-
-std::string bunny_path() { return test::asset_path("bunny.obj"); }
-
-// A fresh folder under the test's temporary directory.
-std::filesystem::path fresh_folder(const std::string& name) {
-    const std::filesystem::path folder = std::filesystem::path(::testing::TempDir()) / name;
-    std::filesystem::remove_all(folder);
-    std::filesystem::create_directories(folder);
-    return folder;
-}
 
 // The id of a process that has run and ended.
 int ended_process() {

@@ -7,10 +7,9 @@
 #include <glm/vec2.hpp>
 
 #include "app/editor.h"
+#include "test_paths.h"
 
 namespace app::test {
-
-inline std::string asset_path(const std::string& name) { return std::string(RGBSUB_SOURCE_DIR) + "/assets/" + name; }
 
 inline constexpr glm::ivec2 kViewport{800, 600};
 

@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "app/editor.h"
+#include "editor_fixture.h"
 #include "io/lod_script.h"
 #include "io/mesh_file.h"
 #include "rgb/invariants.h"
@@ -24,10 +25,10 @@
 namespace app {
 namespace {
 
-constexpr glm::ivec2 kViewport{800, 600};
-constexpr glm::vec2 kCentre{0.5f * kViewport.x, 0.55f * kViewport.y};
+using test::kViewport;
+using test::bunny_path;
 
-std::string bunny_path() { return std::string(RGBSUB_SOURCE_DIR) + "/assets/bunny.obj"; }
+constexpr glm::vec2 kCentre{0.5f * kViewport.x, 0.55f * kViewport.y};
 
 std::filesystem::path scratch(const std::string& name) { return std::filesystem::path(::testing::TempDir()) / name; }
 

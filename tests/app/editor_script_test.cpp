@@ -20,10 +20,10 @@
 namespace app {
 namespace {
 
+using test::bunny_path;
+
 using test::EditorFixture;
 using test::kViewport;
-
-std::string bunny_path() { return test::asset_path("bunny.obj"); }
 
 class EditorScript : public EditorFixture {
 protected:

@@ -18,13 +18,13 @@
 namespace {
 
 constexpr double kPixels = 12.0;
-constexpr glm::dvec2 kViewport{640.0, 480.0};
+constexpr glm::dvec2 kScreen{640.0, 480.0};
 
 rgb::ScreenView camera_at(const glm::dvec3& eye) {
     rgb::ScreenView view;
-    view.viewport = kViewport;
+    view.viewport = kScreen;
     view.eye = eye;
-    view.view_projection = glm::perspective(glm::radians(40.0), kViewport.x / kViewport.y, 0.01, 100.0) *
+    view.view_projection = glm::perspective(glm::radians(40.0), kScreen.x / kScreen.y, 0.01, 100.0) *
                            glm::lookAt(eye, glm::dvec3(0.0), glm::dvec3(0.0, 1.0, 0.0));
     return view;
 }
@@ -63,7 +63,7 @@ double longest_visible_edge(const rgb::Mesh& mesh, const rgb::ScreenView& view) 
                 ends[e] = glm::dvec2(clip) / clip.w;
                 inside = inside && clip.w > 0.0 && std::abs(ends[e].x) < 0.8 && std::abs(ends[e].y) < 0.8;
             }
-            if (inside) longest = std::max(longest, glm::length(0.5 * (ends[0] - ends[1]) * kViewport));
+            if (inside) longest = std::max(longest, glm::length(0.5 * (ends[0] - ends[1]) * kScreen));
         }
     }
     return longest;

@@ -27,13 +27,13 @@ namespace {
 
 using test::textured_grid;
 
-struct TexturedMesh {
+struct MeshWithUvs {
     LoadedMesh loaded;
     rgb::Mesh mesh;
     std::shared_ptr<const rgb::UvLayout> uvs;
 };
 
-TexturedMesh load(const std::string& text, std::optional<rgb::UvInterpolation> option = std::nullopt) {
+MeshWithUvs load(const std::string& text, std::optional<rgb::UvInterpolation> option = std::nullopt) {
     LoadedMesh loaded = read_obj_text(text, "test.obj");
     rgb::Mesh mesh = build_mesh(loaded);
     std::vector<std::string> warnings;
@@ -43,7 +43,7 @@ TexturedMesh load(const std::string& text, std::optional<rgb::UvInterpolation> o
 }
 
 // Every corner of `m` (at level 0) shows the UV the input gave that corner, bit for bit.
-testing::AssertionResult shows_the_input_uvs(const TexturedMesh& m, const LoadedMesh& input) {
+testing::AssertionResult shows_the_input_uvs(const MeshWithUvs& m, const LoadedMesh& input) {
     rgb::UvEvaluator uvs(m.mesh.base(), *m.uvs);
     for (rgb::FaceId f : m.mesh.faces()) {
         const std::uint32_t g = rgb::base_face_of(m.mesh, f);
@@ -59,7 +59,7 @@ testing::AssertionResult shows_the_input_uvs(const TexturedMesh& m, const Loaded
     return testing::AssertionSuccess();
 }
 
-std::string saved(const TexturedMesh& m) {
+std::string saved(const MeshWithUvs& m) {
     SaveOptions options;
     options.uvs = m.uvs;
     return format_obj(m.mesh, options);
@@ -67,7 +67,7 @@ std::string saved(const TexturedMesh& m) {
 
 TEST(UvRoundTrip, RefinedSaveResumesAndLevelZeroGivesBackTheInputUvsBitForBit) {
     const std::string input = textured_grid();
-    TexturedMesh original = load(input);
+    MeshWithUvs original = load(input);
     ASSERT_NE(original.uvs, nullptr);
     rgb::set_level(original.mesh, 3, rgb::Sphere{{2, 1.5, 0}, 1.2});
     rgb::LevelRequest everywhere;
@@ -75,7 +75,7 @@ TEST(UvRoundTrip, RefinedSaveResumesAndLevelZeroGivesBackTheInputUvsBitForBit) {
     everywhere.level = 1;
     rgb::apply_request(original.mesh, everywhere);
 
-    TexturedMesh resumed = load(saved(original));
+    MeshWithUvs resumed = load(saved(original));
     ASSERT_TRUE(resumed.loaded.adaptive);
     ASSERT_NE(resumed.uvs, nullptr);
     EXPECT_EQ(resumed.uvs->channel(), original.uvs->channel());
@@ -101,18 +101,18 @@ TEST(UvRoundTrip, TheAssimpTexturedModelsComeBackFromRefinementWithTheirUvs) {
         const LoadedMesh input = read_obj_file((corpus / name).string());
         rgb::Mesh mesh = build_mesh(input);
         std::vector<std::string> warnings;
-        TexturedMesh m{input, std::move(mesh), nullptr};
+        MeshWithUvs m{input, std::move(mesh), nullptr};
         m.uvs = uv_layout(base_uv_channel(input, m.mesh, warnings), m.mesh, std::nullopt);
         ASSERT_NE(m.uvs, nullptr) << name;
         rgb::set_level(m.mesh, 2);
-        TexturedMesh resumed = load(saved(m));
+        MeshWithUvs resumed = load(saved(m));
         rgb::set_level(resumed.mesh, 0);
         EXPECT_TRUE(shows_the_input_uvs(resumed, input)) << name;
     }
 }
 
 TEST(UvRoundTrip, LimitPositionsComeWithLimitUvs) {
-    TexturedMesh m = load(textured_grid());
+    MeshWithUvs m = load(textured_grid());
     rgb::set_level(m.mesh, 2, rgb::Sphere{{2, 1, 0}, 1.0});
     SaveOptions options;
     options.uvs = m.uvs;
@@ -132,7 +132,7 @@ TEST(UvRoundTrip, LimitPositionsComeWithLimitUvs) {
 }
 
 TEST(UvRoundTrip, TheSavedInterpolationResumesAndAnExplicitOneWins) {
-    TexturedMesh m = load(textured_grid(), rgb::UvInterpolation::Boundaries);
+    MeshWithUvs m = load(textured_grid(), rgb::UvInterpolation::Boundaries);
     rgb::set_level(m.mesh, 1);
     const std::string text = saved(m);
     EXPECT_NE(text.find("#rgb uv-interpolation boundaries\n"), std::string::npos);
@@ -147,7 +147,7 @@ TEST(UvRoundTrip, AMeshWithoutUvsKeepsTheStateWithoutTheSection) {
 }
 
 TEST(UvRoundTrip, ABadBaseUvsSectionIsRefusedNamingTheLine) {
-    TexturedMesh m = load(textured_grid());
+    MeshWithUvs m = load(textured_grid());
     rgb::set_level(m.mesh, 1);
     const std::string text = saved(m);
     auto replaced = [&](const std::string& from, const std::string& to) {
@@ -167,7 +167,7 @@ TEST(UvRoundTrip, ABadBaseUvsSectionIsRefusedNamingTheLine) {
 
 TEST(UvRoundTrip, FacesWithoutVtStayWithoutAndAFaceWithSomeDropsTheUvs) {
     const std::string square = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n";
-    TexturedMesh m = load(square + "f 2 4 3\n");
+    MeshWithUvs m = load(square + "f 2 4 3\n");
     ASSERT_NE(m.uvs, nullptr);
     EXPECT_EQ(m.uvs->channel().faces_without_uvs, std::vector<std::uint32_t>{1});
     rgb::set_level(m.mesh, 2);

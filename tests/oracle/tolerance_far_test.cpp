@@ -23,7 +23,7 @@
 namespace osdoracle {
 namespace {
 
-constexpr int kFarLevels = 5;
+constexpr int kTolerancesFarLevels = 5;
 constexpr double kShare = 0.02;  // of the base's bounding-box diagonal
 
 double diagonal(const FarInput& input) {
@@ -39,7 +39,7 @@ class ToleranceOnTaggedMeshes : public testing::TestWithParam<CreaseCase> {};
 
 TEST_P(ToleranceOnTaggedMeshes, EveryVertexAndEveryGreenFaceSampleIsWithinTheToleranceOfTheTaggedLimit) {
     const FarInput& input = GetParam().input;
-    const FarByIdentity far(input, kFarLevels);
+    const FarByIdentity far(input, kTolerancesFarLevels);
     const std::vector<LevelTags> tags = tags_per_level(input, far.refinement());
     const rgbtest::UniformLoopOracle& oracle = far.oracle();
     auto exact_limit = [&](rgbtest::Identity id) {
@@ -61,7 +61,7 @@ TEST_P(ToleranceOnTaggedMeshes, EveryVertexAndEveryGreenFaceSampleIsWithinTheTol
     const rgb::LodReport report = rgb::apply_detail_request(mesh, request);
     ASSERT_FALSE(report.budget_bound || report.level_cap_bound);
     ASSERT_GT(mesh.num_faces(), input.triangles.size());
-    ASSERT_LE(mesh.max_vertex_level(), kFarLevels - 2);  // so that every sample is a vertex Far has
+    ASSERT_LE(mesh.max_vertex_level(), kTolerancesFarLevels - 2);  // so that every sample is a vertex Far has
     EXPECT_TRUE(rgb::check_invariants(mesh).ok());
 
     double worst = 0.0;

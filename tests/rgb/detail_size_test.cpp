@@ -74,12 +74,6 @@ private:
     double threshold_;
 };
 
-std::set<Identity> vertex_set(const rgb::Mesh& mesh, const IdentityTracker& ids) {
-    std::set<Identity> s;
-    for (rgb::VertexId v : mesh.vertices()) s.insert(ids.identity(v));
-    return s;
-}
-
 rgb::LodReport apply_max_edge(rgb::Mesh& mesh, rgb::RequestKind kind, double length, std::optional<rgb::Sphere> sphere) {
     rgb::DetailRequest request;
     request.kind = kind;
@@ -103,7 +97,7 @@ TEST_P(DetailSize, OverTheWholeSurfaceNoEdgeIsLongerThanAsked) {
         rgb::set_level(mesh, 1, rgb::Sphere{base.positions[1], 0.3 * bounding_box_diagonal(base.positions)});
         const rgb::LodReport report = apply_max_edge(mesh, rgb::RequestKind::Set, length, std::nullopt);
         EXPECT_FALSE(report.budget_bound);
-        EXPECT_EQ(vertex_set(mesh, ids), meaning.refined(meaning.base(), std::nullopt)) << "share " << share;
+        EXPECT_EQ(ids.live_identities(), meaning.refined(meaning.base(), std::nullopt)) << "share " << share;
         EXPECT_TRUE(rgb::check_invariants(mesh).ok());
         EXPECT_TRUE(rgb::check_normal_form(mesh).ok());
         // Edge by edge: every green edge is within the length in the uniform mesh of its level,
@@ -134,13 +128,13 @@ TEST_P(DetailSize, RequestsInABallFollowTheirMeaning) {
         // Some detail to start from, partly in the ball.
         rgb::set_level(mesh, 3, rgb::Sphere{base.positions[0], 0.3 * diagonal});
         rgb::set_level(mesh, 1, rgb::Sphere{base.positions[3], 0.3 * diagonal});
-        const std::set<Identity> before = vertex_set(mesh, ids);
+        const std::set<Identity> before = ids.live_identities();
         apply_max_edge(mesh, kind, length, ball);
         std::set<Identity> expected = before;
         if (kind != rgb::RequestKind::Refine) expected = meaning.coarsened(expected, oracle_ball);
         if (kind != rgb::RequestKind::Coarsen) expected = meaning.refined(expected, oracle_ball);
         EXPECT_NE(expected, before) << "the request should change something";
-        EXPECT_EQ(vertex_set(mesh, ids), expected);
+        EXPECT_EQ(ids.live_identities(), expected);
         EXPECT_TRUE(rgb::check_invariants(mesh).ok());
         EXPECT_TRUE(rgb::check_normal_form(mesh).ok());
     }

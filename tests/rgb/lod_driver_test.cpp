@@ -21,7 +21,7 @@
 namespace rgbtest {
 namespace {
 
-constexpr int kOracleLevels = 4;
+constexpr int kDriverOracleLevels = 4;
 
 // The vertices a criterion run with `threshold` on edge lengths wants, by the meaning's own rule on
 // oracle identities: a midpoint is wanted if its edge (in the uniform Loop mesh of its level) is
@@ -40,12 +40,6 @@ std::set<Identity> wanted_vertices(const UniformLoopOracle& oracle, double thres
     return wanted;
 }
 
-std::set<Identity> vertex_set(const rgb::Mesh& mesh, const IdentityTracker& ids) {
-    std::set<Identity> s;
-    for (rgb::VertexId v : mesh.vertices()) s.insert(ids.identity(v));
-    return s;
-}
-
 rgb::LodReport run_budget(rgb::Mesh& mesh, std::size_t budget, int cap = rgb::kMaxLevel) {
     rgb::LodSettings settings;
     settings.max_triangles = budget;
@@ -60,19 +54,19 @@ class LodDriverMeaning : public testing::TestWithParam<TestMesh> {};
 
 TEST_P(LodDriverMeaning, ACriterionRunIsTheClosureOfTheWantedVertices) {
     const TestMesh& base = GetParam();
-    const UniformLoopOracle oracle(base.positions, base.triangles, kOracleLevels);
+    const UniformLoopOracle oracle(base.positions, base.triangles, kDriverOracleLevels);
     const RequestOracle meaning(oracle);
     for (double share : {0.3, 0.6, 0.85}) {
-        const double threshold = clear_threshold(oracle, kOracleLevels, share);
+        const double threshold = clear_threshold(oracle, kDriverOracleLevels, share);
         rgb::Mesh mesh = make_rgb_mesh(base);
         IdentityTracker ids(mesh, oracle);
         rgb::LodSettings settings;
         settings.threshold = threshold;
-        settings.max_level = kOracleLevels;
+        settings.max_level = kDriverOracleLevels;
         rgb::LodDriver driver(mesh, settings);
         driver.run();
         EXPECT_FALSE(driver.report().budget_bound);
-        EXPECT_EQ(vertex_set(mesh, ids), meaning.closure(wanted_vertices(oracle, threshold, kOracleLevels))) << "share " << share;
+        EXPECT_EQ(ids.live_identities(), meaning.closure(wanted_vertices(oracle, threshold, kDriverOracleLevels))) << "share " << share;
         EXPECT_TRUE(rgb::check_invariants(mesh).ok());
         EXPECT_TRUE(rgb::check_normal_form(mesh).ok());
     }
@@ -90,7 +84,7 @@ TEST_P(LodDriverMeaning, BudgetsStayWithinAndGrowByAddingVertices) {
         const rgb::LodReport report = run_budget(mesh, budget, kCap);
         EXPECT_LE(mesh.num_faces(), budget);
         EXPECT_TRUE(report.budget_bound);
-        const std::set<Identity> now = vertex_set(mesh, ids);
+        const std::set<Identity> now = ids.live_identities();
         EXPECT_TRUE(std::includes(now.begin(), now.end(), previous.begin(), previous.end())) << "budget " << budget;
         EXPECT_GT(now.size(), previous.size());
         previous = now;

@@ -21,9 +21,9 @@
 namespace rgbtest {
 namespace {
 
-constexpr int kOracleLevels = 7;
+constexpr int kToleranceOracleLevels = 7;
 constexpr int kDense = 4;  // points of Σ(l+4) in every face of level l: 16 times the samples' density
-constexpr int kCap = kOracleLevels - kDense;
+constexpr int kLevelCap = kToleranceOracleLevels - kDense;
 
 rgb::LodReport apply_tolerance(rgb::Mesh& mesh, double tolerance, std::optional<rgb::Sphere> sphere = std::nullopt,
                                std::size_t budget = 1'000'000) {
@@ -37,7 +37,7 @@ rgb::LodReport apply_tolerance(rgb::Mesh& mesh, double tolerance, std::optional<
 
 struct Case {
     TestMesh mesh;
-    std::vector<double> shares;  // tolerances as shares of the bounding-box diagonal, reachable below kCap
+    std::vector<double> shares;  // tolerances as shares of the bounding-box diagonal, reachable below kLevelCap
 };
 void PrintTo(const Case& c, std::ostream* os) { *os << c.mesh.name; }
 
@@ -45,7 +45,7 @@ class Tolerance : public testing::TestWithParam<Case> {};
 
 TEST_P(Tolerance, TheResultIsWithinTheToleranceAtEverySampleAndBetween) {
     const TestMesh& base = GetParam().mesh;
-    const UniformLoopOracle oracle(base.positions, base.triangles, kOracleLevels);
+    const UniformLoopOracle oracle(base.positions, base.triangles, kToleranceOracleLevels);
     OracleSurface surface(oracle);
     for (double share : GetParam().shares) {
         SCOPED_TRACE("tolerance " + std::to_string(share) + " of the diagonal");
@@ -54,7 +54,7 @@ TEST_P(Tolerance, TheResultIsWithinTheToleranceAtEverySampleAndBetween) {
         IdentityTracker ids(mesh, oracle);
         const rgb::LodReport report = apply_tolerance(mesh, tolerance);
         ASSERT_FALSE(report.level_cap_bound || report.budget_bound);
-        ASSERT_LE(mesh.max_vertex_level(), kCap);
+        ASSERT_LE(mesh.max_vertex_level(), kLevelCap);
         EXPECT_TRUE(rgb::check_invariants(mesh).ok());
         EXPECT_TRUE(rgb::check_normal_form(mesh).ok());
         // The promise, at the samples (corners, edge points and inner points of Σ(l+2)).

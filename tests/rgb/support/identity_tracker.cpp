@@ -25,6 +25,12 @@ IdentityTriangle IdentityTracker::identity_triangle(rgb::FaceId f) const {
     return {identity(v[0]), identity(v[1]), identity(v[2])};
 }
 
+std::set<Identity> IdentityTracker::live_identities() const {
+    std::set<Identity> s;
+    for (rgb::VertexId v : mesh_.vertices()) s.insert(identity(v));
+    return s;
+}
+
 rgb::VertexId IdentityTracker::vertex_of(Identity id) const {
     for (rgb::VertexId v : mesh_.vertices())
         if (identity(v) == id) return v;

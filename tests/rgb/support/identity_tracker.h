@@ -3,6 +3,7 @@
 // through the mesh observer: base vertex i is identity i, and a vertex reported as inserted on the
 // edge (a, b) is the oracle's midpoint of their identities. Vertex slots are reused after removal,
 // so the map is rewritten on every vertex_added and cleared on vertex_removed.
+#include <set>
 #include <vector>
 
 #include "rgb/observer.h"
@@ -24,6 +25,8 @@ public:
     IdentityTriangle identity_triangle(rgb::FaceId f) const;
     // The live vertex with this identity, if any (linear search: for tests on small meshes).
     rgb::VertexId vertex_of(Identity id) const;
+    // The identities of all live vertices: the vertex set of the mesh, comparable across histories.
+    std::set<Identity> live_identities() const;
 
     void vertex_added(const rgb::Mesh& mesh, rgb::VertexId v, rgb::VertexId a, rgb::VertexId b) override;
     void vertex_removed(const rgb::Mesh& mesh, rgb::VertexId v) override;
