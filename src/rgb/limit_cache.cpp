@@ -65,8 +65,20 @@ void LimitCache::erase_slot(std::size_t i) {
 
 void LimitCache::grow() {
     move_some(moving_.size());  // done long before, by the pace kMovedPerChange sets
-    const std::size_t grown = entries_.empty() ? 64 : (entries_.size() + entries_.size() / 4 + 15) / 16 * 16;
-    moving_ = std::exchange(entries_, std::vector<Entry>(grown));
+    start_moving_into(entries_.empty() ? 64 : (entries_.size() + entries_.size() / 4 + 15) / 16 * 16);
+}
+
+void LimitCache::reserve(std::size_t entries) {
+    // The fewest slots, a multiple of 16, that hold `entries` at 7/8 full.
+    const std::size_t slots = ((8 * entries + 6) / 7 + 15) / 16 * 16;
+    if (slots <= entries_.size()) return;
+    move_some(moving_.size());
+    start_moving_into(slots);
+    move_some(moving_.size());
+}
+
+void LimitCache::start_moving_into(std::size_t slots) {
+    moving_ = std::exchange(entries_, std::vector<Entry>(slots));
     moved_ = 0;
 }
 

@@ -26,6 +26,10 @@ public:
     glm::dvec3 find(std::uint32_t vertex) const;
     void insert(std::uint32_t vertex, const glm::dvec3& limit);
     void erase(std::uint32_t vertex);
+    // Room for `entries` in all without growing (a restore knows its count: growing step by step
+    // moved every entry about four times over). Moves any growth under way to its end and rehashes
+    // into the larger table at once, so it is for loading, not for a frame.
+    void reserve(std::size_t entries);
     std::size_t size() const { return size_; }
     std::size_t memory_bytes() const { return (entries_.size() + moving_.size()) * sizeof(Entry); }
 
@@ -59,6 +63,8 @@ private:
     void place(std::uint32_t vertex, double x, double y, double z);
     void erase_slot(std::size_t i);
     void grow();
+    // Makes entries_ an empty table of `slots` and the table it was the one to move from.
+    void start_moving_into(std::size_t slots);
     // Moves up to `slots` more slots of moving_ into entries_ (all when asked for its size).
     void move_some(std::size_t slots);
 

@@ -353,6 +353,7 @@ Mesh restore_state(const MeshState& s, const ProgressSpan& progress, RestoredCha
                                           BaseMesh(channel->base_values, base.faces(), base.sharp_features()), channel_levels, channel->values)
                     : hierarchy_positions(base, points, *index, displayed_above_own_level, position_levels);
         m.insertion_position_ = std::move(values.insertion);
+        m.limits_.reserve(m.limits_.size() + values.limits.size());
         for (const HierarchyPositions::Limit& l : values.limits) m.cache_limit(VertexId(l.vertex), l.position);
         if (positions) positions->values = std::move(values.at_levels);
     } catch (const std::invalid_argument& e) {

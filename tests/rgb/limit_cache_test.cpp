@@ -77,4 +77,22 @@ TEST(LimitCache, ReleasesTheTableGrownFromBeforeItMustGrowAgain) {
     for (std::uint32_t k = 0; k < key; k += 97) ASSERT_EQ(cache.find(k), value_of(k));
 }
 
+// Reserved for a count, the table takes that many inserts without growing: at 7/8 full, 1000 entries
+// need 1143 slots, 1152 as a multiple of 16 (28 bytes a slot). Reserving in the middle of a growth
+// keeps every entry found.
+TEST(LimitCache, ReservedTableTakesItsCountWithoutGrowing) {
+    rgb::LimitCache cache;
+    for (std::uint32_t k = 0; k < 57; ++k) cache.insert(k, value_of(k));  // the 57th (> 7/8 of 64) starts a growth
+    cache.reserve(1000);
+    EXPECT_EQ(cache.memory_bytes(), 28u * 1152);
+    for (std::uint32_t k = 57; k < 1000; ++k) cache.insert(k, value_of(k));
+    EXPECT_EQ(cache.memory_bytes(), 28u * 1152);
+    ASSERT_EQ(cache.size(), 1000u);
+    for (std::uint32_t k = 0; k < 1000; ++k) ASSERT_EQ(cache.find(k), value_of(k)) << "key " << k;
+    cache.reserve(10);  // less than there is: nothing changes
+    EXPECT_EQ(cache.memory_bytes(), 28u * 1152);
+    cache.insert(1000, value_of(1000));  // 8 x 1001 <= 7 x 1152: the room left is the rounding's
+    EXPECT_EQ(cache.memory_bytes(), 28u * 1152);
+}
+
 }  // namespace
