@@ -5,6 +5,8 @@
 #include <map>
 #include <string>
 
+#include "rgb/parallel.h"
+
 namespace rgbio {
 
 namespace {
@@ -39,6 +41,25 @@ void append(std::vector<T>& into, const std::vector<T>& later) {
     into.insert(into.end(), later.begin(), later.end());
 }
 
+// The block's positions and their lines and colours after `into`'s.
+void append_positions(ObjRecords& into, const ObjRecords& block) {
+    const std::size_t positions_before = into.positions.size();
+    append(into.positions, block.positions);
+    append(into.position_lines, block.position_lines);
+    if (!block.colours.empty() || !into.colours.empty()) {
+        // Positions without a colour line have colour 0 and has_colour 0, as parse_obj gives them.
+        into.colours.resize(positions_before, glm::dvec3(0.0));
+        into.has_colour.resize(positions_before, 0);
+        if (block.colours.empty()) {
+            into.colours.resize(into.positions.size(), glm::dvec3(0.0));
+            into.has_colour.resize(into.positions.size(), 0);
+        } else {
+            append(into.colours, block.colours);
+            append(into.has_colour, block.has_colour);
+        }
+    }
+}
+
 }  // namespace
 
 LinesBefore LinesBefore::then(const LinesBefore& later) const {
@@ -69,34 +90,25 @@ std::vector<std::string_view> line_blocks(std::string_view text, std::size_t cou
 }
 
 void append_records(ObjRecords& into, const ObjRecords& block) {
-    const std::size_t positions_before = into.positions.size();
-    append(into.positions, block.positions);
-    append(into.position_lines, block.position_lines);
-    if (!block.colours.empty() || !into.colours.empty()) {
-        // Positions without a colour line have colour 0 and has_colour 0, as parse_obj gives them.
-        into.colours.resize(positions_before, glm::dvec3(0.0));
-        into.has_colour.resize(positions_before, 0);
-        if (block.colours.empty()) {
-            into.colours.resize(into.positions.size(), glm::dvec3(0.0));
-            into.has_colour.resize(into.positions.size(), 0);
-        } else {
-            append(into.colours, block.colours);
-            append(into.has_colour, block.has_colour);
-        }
-    }
-    append(into.texcoords, block.texcoords);
-    join_skipped(into.texcoord_w, block.texcoord_w);
     const std::vector<std::uint32_t> materials = join_names(into.material_names, block.material_names);
     const std::vector<std::uint32_t> groups = join_names(into.group_names, block.group_names);
     const std::vector<std::uint32_t> objects = join_names(into.object_names, block.object_names);
-    into.polygons.append(block.polygons, materials, groups, objects);
+    // The polygons, and the positions and #rgb lines, are tens of MB each in a large file (about
+    // 108 MB in all for a saved 6M-triangle mesh, where this copy ran on one thread): they are
+    // copied side by side.
+    rgb::parallel_invoke([&] { into.polygons.append(block.polygons, materials, groups, objects); },
+                         [&] {
+                             append_positions(into, block);
+                             append(into.state, block.state);
+                         });
+    append(into.texcoords, block.texcoords);
+    join_skipped(into.texcoord_w, block.texcoord_w);
     append(into.material_libraries, block.material_libraries);
     into.line_elements += block.line_elements;
     into.point_elements += block.point_elements;
     join_skipped(into.normals, block.normals);
     join_skipped(into.unsupported, block.unsupported);
     join_skipped(into.unknown, block.unknown);
-    append(into.state, block.state);
     into.v_line_starts += block.v_line_starts;
     into.f_line_starts += block.f_line_starts;
     into.last_line = std::max(into.last_line, block.last_line);
