@@ -199,6 +199,7 @@ rgb::RequestStats ScriptRunner::run(rgb::Mesh& mesh, const ScriptLine& line) {
     const auto& budget = std::get<BudgetEdit>(line.edit);
     rgb::LodSettings settings;
     settings.max_triangles = budget.triangles;
+    settings.uniform_start = true;  // a script line runs to its end
     rgb::LodDriver driver(mesh, settings);
     driver.run();
     return {driver.report().splits, driver.report().removals, driver.report().level_cap_bound};

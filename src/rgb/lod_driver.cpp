@@ -39,6 +39,17 @@ std::uint64_t band(double value) {
 }
 
 
+// The vertices above the base, coarsest first: taken from the back (finest first), each is removable
+// when its turn comes.
+std::vector<VertexId> detail_coarsest_first(const Mesh& mesh) {
+    std::vector<std::vector<VertexId>> by_level(kMaxLevel + 1);
+    for (VertexId v : mesh.vertices())
+        if (mesh.level(v) > 0) by_level[static_cast<std::size_t>(mesh.level(v))].push_back(v);
+    std::vector<VertexId> detail;
+    for (const auto& level : by_level) detail.insert(detail.end(), level.begin(), level.end());
+    return detail;
+}
+
 }  // namespace
 
 double edge_length(const Mesh& mesh, VertexId a, VertexId b, int level) {
@@ -55,11 +66,7 @@ LodDriver::LodDriver(Mesh& mesh, LodSettings settings)
     }
     box_lo_ = lo;
     box_scale_ = double((1 << kMortonBits) - 1) / glm::max(hi - lo, glm::dvec3(1e-300));
-    // The old detail goes finest first, so that each vertex is removable when its turn comes.
-    std::vector<std::vector<VertexId>> by_level(kMaxLevel + 1);
-    for (VertexId v : mesh_.vertices())
-        if (mesh_.level(v) > 0) by_level[static_cast<std::size_t>(mesh_.level(v))].push_back(v);
-    for (const auto& level : by_level) doomed_.insert(doomed_.end(), level.begin(), level.end());
+    doomed_ = detail_coarsest_first(mesh_);
     // The default value reads limits from the driver's own array (edge_key); a criterion of the
     // caller's, or sharp features (whose vertices need no limit for some values), take the general way.
     const auto* value = settings_.value.target<double (*)(const Mesh&, VertexId, VertexId, int)>();
@@ -153,7 +160,7 @@ void LodDriver::vertex_added(const Mesh&, VertexId v, VertexId a, VertexId b) {
     unkeyed_.push_back({v, a, b});
     // Within a split the keys wait until it is complete (key_new_vertices), when the mesh around the
     // endpoints can be walked again.
-    if (!splitting_) key_new_vertices();
+    if (!splitting_ && !keys_wait_) key_new_vertices();
 }
 
 // In the order the vertices came, so that each endpoint has its key before its edge's vertex.
@@ -172,21 +179,80 @@ void LodDriver::key_new_vertices() {
 void LodDriver::start_refining() {
     // With every split wanted the run ends at the budget: room for it at once, so that the arrays do
     // not regrow on the way (a split adds a vertex per two triangles, one per triangle on a boundary).
+    // The room holds the split that crosses the budget too (undone at once): without it the mesh's
+    // arrays doubled for those few faces, a copy of the whole mesh at the last step.
     if (settings_.threshold <= 0.0) {
-        mesh_.reserve(settings_.max_triangles, settings_.max_triangles / 2 + mesh_.num_vertices());
-        grow_vertex_arrays(mesh_.vertex_capacity());
-        face_added_.resize(std::max(face_added_.size(), mesh_.face_capacity()), 0);
+        const std::size_t faces = settings_.max_triangles + settings_.max_triangles / 64 + 64;
+        const std::size_t vertices = faces / 2 + mesh_.num_vertices();
+        mesh_.reserve(faces, vertices);
+        grow_vertex_arrays(vertices);
+        face_added_.resize(std::max(face_added_.size(), faces), 0);
     }
+    report_before_start_ = report_;
+    if (settings_.uniform_start && settings_.threshold <= 0.0 && !uniform_start_failed_) refine_uniform_start();
     for (FaceId f : mesh_.faces())
         for (int i = 0; i < 3; ++i) {
             const HalfedgeId h = Mesh::halfedge(f, i);
             const HalfedgeId o = mesh_.opposite(h);
             if (o.valid() && o < h) continue;  // each edge once
+            const EdgeType t = mesh_.edge_type(h);
+            if (t.colour != Colour::Green) continue;
             const VertexId a = mesh_.from_vertex(h), b = mesh_.to_vertex(h);
-            if (const std::uint64_t key = edge_key(a, b, 0)) push({key, a, b});
+            if (const std::uint64_t key = edge_key(a, b, t.level)) push({key, a, b});
         }
     band_ = bands_.size() - 1;
     while (band_ > 0 && bands_[band_].empty()) --band_;
+}
+
+// The finest uniform level whose triangles fill at most a quarter of the budget: a budget that could
+// hold the whole next level holds this one unless its edges' values vary more than about twice
+// (longer edges of the next level outranking shorter ones of this), as on a torus with a thick tube.
+int LodDriver::uniform_start_level() const {
+    const std::size_t faces = mesh_.num_faces(), room = settings_.max_triangles / 4;
+    int level = 0;
+    while (level + 1 < settings_.max_level && (faces << (2 * (level + 1))) <= room) ++level;
+    return level;
+}
+
+// Every vertex of the uniform levels, through refine_uniform, with its key as a split would give it
+// (a key depends on the vertex's edge alone). The run then goes on from that mesh; the result is the
+// same if every one of those vertices is wanted and outranks the split where the budget stops (then
+// the ordinary run holds them all, and from there the two make the same splits), which split_next
+// checks against the lowest of them.
+void LodDriver::refine_uniform_start() {
+    const int level = uniform_start_level();
+    if (level == 0) return;
+    keys_wait_ = true;
+    refine_uniform(mesh_, level);
+    keys_wait_ = false;
+    std::optional<Candidate> lowest;
+    for (const Unkeyed& n : unkeyed_) {
+        const std::uint64_t key = edge_key(n.a, n.b, mesh_.level(n.v) - 1);
+        vertex_key_[n.v.idx] = key;
+        const Candidate c{key, n.a, n.b};
+        if (!lowest || outranks(*lowest, c)) lowest = c;
+    }
+    steps_ += unkeyed_.size();
+    unkeyed_.clear();
+    uniform_lowest_ = lowest;
+    if (lowest->key == 0) undo_uniform_start();
+}
+
+// The uniform start held a vertex the ordinary run would not have: back to the mesh the run started
+// from (the base: a run removes the old detail first), with no candidates and the report of before
+// the start, for the ordinary way from there.
+void LodDriver::undo_uniform_start() {
+    uniform_start_failed_ = true;
+    uniform_lowest_.reset();
+    const std::vector<VertexId> detail = detail_coarsest_first(mesh_);
+    for (auto it = detail.rbegin(); it != detail.rend(); ++it) remove_vertex(mesh_, *it);
+    for (std::vector<Candidate>& band : bands_) std::vector<Candidate>().swap(band);
+    queue_ = decltype(queue_)(Lower{this});
+    band_next_ = 0;
+    band_sorted_ = false;
+    clear_added_faces();
+    steps_ = 0;
+    report_ = report_before_start_;
 }
 
 void LodDriver::push(const Candidate& c) {
@@ -198,6 +264,7 @@ void LodDriver::push(const Candidate& c) {
 }
 
 void LodDriver::face_added(const Mesh&, FaceId f) {
+    if (keys_wait_) return;  // the uniform start pushes every edge afterwards
     if (f.idx >= face_added_.size()) face_added_.resize(std::max<std::size_t>(f.idx + 1, 2 * face_added_.size()), 0);
     if (face_added_[f.idx]) return;  // a slot freed and taken again within the step
     face_added_[f.idx] = 1;
@@ -290,6 +357,11 @@ bool LodDriver::split_next() {
         if (!split(*c)) continue;
         if (mesh_.num_faces() > settings_.max_triangles) {
             undo(added_vertices_);
+            if (uniform_lowest_ && !outranks(*uniform_lowest_, *c)) {
+                undo_uniform_start();
+                start_refining();
+                continue;
+            }
             report_.budget_bound = true;
             return false;
         }

@@ -44,6 +44,12 @@ struct LodSettings {
     // and a threshold run ends with no unsplit green edge above the threshold: the smallest RGB mesh
     // with that property (criteria that promise something of every face, lod_criteria.h).
     bool split_past_dependencies = false;
+    // For a caller that runs to the end rather than step by step between frames: a run with every
+    // split wanted (threshold 0) may start with the uniform levels the budget will surely hold,
+    // through refine_uniform in one long step (about a third of the cost per split). The result is
+    // the same; where the start proves wrong (a vertex of those levels not wanted, or below the
+    // split where the budget stops) the run starts again the ordinary way.
+    bool uniform_start = false;
 };
 
 struct LodReport {
@@ -99,6 +105,9 @@ private:
     void push(const Candidate& c);
     void push_new_edges();
     void start_refining();
+    int uniform_start_level() const;
+    void refine_uniform_start();
+    void undo_uniform_start();
     bool split(const Candidate& c);
     void undo(const std::vector<VertexId>& vertices);
     std::optional<Candidate> next_candidate();
@@ -134,9 +143,13 @@ private:
         VertexId v, a, b;  // a new vertex and its parent edge
     };
     std::vector<Unkeyed> unkeyed_;
-    LodReport report_;
+    LodReport report_, report_before_start_;
     std::size_t steps_ = 0;
     bool refining_ = false, done_ = false;
+    // The uniform start: its lowest-ranking vertex (a budget stopping above it proves the start
+    // wrong), whether it proved wrong, and whether refine_uniform is running (keys wait for its end).
+    std::optional<Candidate> uniform_lowest_;
+    bool uniform_start_failed_ = false, keys_wait_ = false;
 };
 
 }  // namespace rgb

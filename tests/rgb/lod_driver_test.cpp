@@ -200,5 +200,55 @@ TEST(LodDriver, BudgetsBetweenLevelsRefineSolidPatches) {
     }
 }
 
+// What a uniform start (LodSettings::uniform_start) must not change: the mesh and the report of the
+// ordinary run with the same settings.
+void expect_uniform_start_changes_nothing(const TestMesh& base, rgb::LodSettings settings) {
+    rgb::Mesh ordinary = make_rgb_mesh(base), started = make_rgb_mesh(base);
+    settings.uniform_start = false;
+    rgb::LodDriver ordinary_run(ordinary, settings);
+    ordinary_run.run();
+    settings.uniform_start = true;
+    rgb::LodDriver started_run(started, settings);
+    started_run.run();
+    SCOPED_TRACE(base.name + ", budget " + std::to_string(settings.max_triangles));
+    EXPECT_TRUE(same_mesh(ordinary, started));
+    EXPECT_TRUE(rgb::check_invariants(started).ok());
+    EXPECT_TRUE(rgb::check_normal_form(started).ok());
+    const rgb::LodReport& a = ordinary_run.report();
+    const rgb::LodReport& b = started_run.report();
+    EXPECT_EQ(a.splits, b.splits);
+    EXPECT_EQ(a.removals, b.removals);
+    EXPECT_EQ(a.budget_bound, b.budget_bound);
+    EXPECT_EQ(a.level_cap_bound, b.level_cap_bound);
+}
+
+// A budget of four times a uniform level starts with that level whole; on a regular mesh the budget
+// holds it, on one stretched tenfold the longest edges of finer levels outrank the shortest of the
+// coarse one, so the start proves wrong at the budget and the run starts again. Both must give the
+// ordinary run's result.
+TEST(LodDriver, AUniformStartGivesTheOrdinaryResult) {
+    TestMesh stretched = icosahedron();
+    stretched.name = "stretched icosahedron";
+    for (glm::dvec3& p : stretched.positions) p.x *= 10.0;
+    for (const TestMesh& base : {icosahedron(), perforated_slab(7, 7, 3), stretched})
+        for (std::size_t times : {4, 5, 16, 23, 64, 100, 300}) {
+            rgb::LodSettings settings;
+            settings.max_triangles = times * base.triangles.size();
+            expect_uniform_start_changes_nothing(base, settings);
+        }
+}
+
+// A vertex of the uniform levels that is not wanted (its edge's value is not above the threshold:
+// here a criterion that wants nothing on one side of the plane x = 0) proves the start wrong at once.
+TEST(LodDriver, AUniformStartWithUnwantedVerticesGivesTheOrdinaryResult) {
+    rgb::LodSettings settings;
+    settings.max_triangles = 64 * 20;
+    settings.value = [](const rgb::Mesh& mesh, rgb::VertexId a, rgb::VertexId b, int level) {
+        const double x = mesh.base_space_position(a).x + mesh.base_space_position(b).x;
+        return x < 0.0 ? 0.0 : rgb::edge_length(mesh, a, b, level);
+    };
+    expect_uniform_start_changes_nothing(icosahedron(), settings);
+}
+
 }  // namespace
 }  // namespace rgbtest
