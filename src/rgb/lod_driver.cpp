@@ -32,10 +32,18 @@ std::uint64_t spread(std::uint64_t x) {
     return x;
 }
 
-// The criterion's band: half octaves of the value, biased to 1..65535 (0 means "not wanted").
+// The criterion's band: half octaves of the value, floor(2 log2 value), biased to 1..65535 (0 means
+// "not wanted"). Exact, from the value's binary exponent and whether its significand reaches the
+// square root of two (a sign the fused multiply-add gets right, as m^2 - 1/2 is never zero), where
+// std::log2 cost a call per key and could round across a band's edge.
 std::uint64_t band(double value) {
-    const double b = std::floor(std::log2(value) * kBandsPerOctave);
-    return static_cast<std::uint64_t>(std::clamp(b, -32767.0, 32767.0) + 32768.0);
+    static_assert(kBandsPerOctave == 2);
+    if (!(value > 0.0)) return 1;
+    if (!std::isfinite(value)) return 65535;
+    int exponent = 0;
+    const double m = std::frexp(value, &exponent);  // value = m 2^exponent, 1/2 <= m < 1
+    const long b = 2L * (exponent - 1) + (std::fma(m, m, -0.5) > 0.0 ? 1 : 0);
+    return static_cast<std::uint64_t>(std::clamp(b, -32767L, 32767L) + 32768L);
 }
 
 
@@ -185,6 +193,9 @@ void LodDriver::start_refining() {
         const std::size_t faces = settings_.max_triangles + settings_.max_triangles / 64 + 64;
         const std::size_t vertices = faces / 2 + mesh_.num_vertices();
         mesh_.reserve(faces, vertices);
+        // The coarser vertices get their limits cached (finer splits and keys need them): 269k for
+        // a budget of 1.5M triangles on a torus, so a quarter of the budget leaves room to spare.
+        mesh_.reserve_limits(settings_.max_triangles / 4);
         grow_vertex_arrays(vertices);
         face_added_.resize(std::max(face_added_.size(), faces), 0);
     }

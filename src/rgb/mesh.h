@@ -193,6 +193,9 @@ public:
         limits_.insert(v.idx, p);
         vertex_info_[v.idx] |= kLimitBit;
     }
+    // Room for `count` cached limits in all, made at once (a growth moves the entries a few at a time
+    // over later inserts, each a cache miss): for a caller that knows about how many it will cache.
+    void reserve_limits(std::size_t count) const { limits_.reserve(count); }
     // Delete `old_faces` (and the listed vertices, which must be used by no new face), add `added` (in
     // slot next_vertex_slot()) and create `new_faces` over the same region. Adjacency with the outside
     // is rebuilt by matching edges. Observers hear of it in the order observer.h states. Returns the
