@@ -193,7 +193,7 @@ void LodDriver::start_refining() {
         const std::size_t faces = settings_.max_triangles + settings_.max_triangles / 64 + 64;
         const std::size_t vertices = faces / 2 + mesh_.num_vertices();
         mesh_.reserve(faces, vertices);
-        // The coarser vertices get their limits cached (finer splits and keys need them): 269k for
+        // The coarser vertices get their limits cached (finer splits and keys need them): 268k for
         // a budget of 1.5M triangles on a torus, so a quarter of the budget leaves room to spare.
         mesh_.reserve_limits(settings_.max_triangles / 4);
         grow_vertex_arrays(vertices);
@@ -313,13 +313,6 @@ bool LodDriver::split(const Candidate& c) {
     if (!h.valid()) return false;
     const EdgeType t = mesh_.edge_type(h);
     if (t.colour != Colour::Green) return false;  // its level is the one it was queued with (Candidate)
-    // The split ends the uniform neighbourhoods of the corners of the edge's two triangles, where
-    // their limits (which later keys and splits need) cost least: take them now.
-    for (HalfedgeId side : {h, mesh_.opposite(h)}) {
-        if (!side.valid()) continue;
-        limit_position_where_uniform(mesh_, mesh_.from_vertex(side));
-        limit_position_where_uniform(mesh_, mesh_.opposite_vertex(side));
-    }
     clear_added_faces();
     added_vertices_.clear();
     splitting_ = &c;
