@@ -74,6 +74,9 @@ public:
     // field (material, group, object or smoothing_group), without looking at every face.
     bool has_texcoords() const { return !texcoords_.empty(); }
     bool has_labels(std::uint32_t ObjPolygon::*field) const;
+    // Whether some face has any label (usemtl, g, o, or s other than off): most saved files have none,
+    // and what labels need (a base face lookup per face, an index per face) is then skipped.
+    bool has_any_labels() const { return !material_.empty() || !group_.empty() || !object_.empty() || !smoothing_group_.empty(); }
     iterator begin() const { return {this, 0}; }
     iterator end() const { return {this, size()}; }
 

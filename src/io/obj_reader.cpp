@@ -89,8 +89,9 @@ std::shared_ptr<rgb::Mesh> adaptive_mesh(SavedState& saved, const ObjRecords& re
 }
 
 // A state's mesh, or the plain mesh with a warning saying why the state was not used.
-// release_text() is called once a state is parsed: nothing after needs the text.
-LoadedMesh read_records(const ObjRecords& records, const std::string& name, const ReadOptions& options,
+// release_text() is called once a state is parsed: nothing after needs the text. The records are
+// used up (the positions move into the result).
+LoadedMesh read_records(ObjRecords&& records, const std::string& name, const ReadOptions& options,
                         const std::function<void()>& release_text) {
     std::vector<std::string> warnings;
     if (!records.state.empty()) {
@@ -116,8 +117,9 @@ LoadedMesh read_records(const ObjRecords& records, const std::string& name, cons
                                "program: " + reason + "; it is loaded as a plain mesh");
         }
     }
+    const std::size_t vertices = records.positions.size();
     LoadedMesh loaded = validate_mesh(records, name, options);
-    attach_file_tags(parse_tag_lines(records.tags, records.positions.size(), name), loaded, name);
+    attach_file_tags(parse_tag_lines(records.tags, vertices, name), loaded, name);
     loaded.warnings.insert(loaded.warnings.begin(), warnings.begin(), warnings.end());
     options.progress.done();
     return loaded;
@@ -145,7 +147,7 @@ LoadedMesh read_text(std::string_view text, FileText* owned, const std::string& 
     }
     const TextEnd end = text_end(records, text);
     try {
-        return read_records(records, name, rest, [owned] {
+        return read_records(std::move(records), name, rest, [owned] {
             if (owned) owned->release();
         });
     } catch (const ObjError& error) {
