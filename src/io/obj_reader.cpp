@@ -165,7 +165,15 @@ LoadedMesh read_obj_file(const std::string& path, const ReadOptions& options) {
     FileText text = read_file_text(path, options.progress.part(0.0, kRead));
     ReadOptions rest = options;
     rest.progress = options.progress.part(kRead, 1.0);
-    LoadedMesh loaded = read_text(text.view(), &text, path, rest);
+    LoadedMesh loaded;
+    try {
+        loaded = read_text(text.view(), &text, path, rest);
+    } catch (...) {
+        // Whatever the reader made of the zeros in place of a vanished end, the cause is the file's shrinking.
+        text.check_not_shrunk();
+        throw;
+    }
+    text.check_not_shrunk();
     loaded.materials = read_material_libraries(loaded.material_libraries, std::filesystem::path(path).parent_path(),
                                                loaded.face_materials, loaded.warnings);
     return loaded;
