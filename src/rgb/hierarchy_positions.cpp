@@ -17,9 +17,9 @@ namespace rgb {
 namespace {
 
 // Vertices ordered by level (what a vertex's values need is coarser), and within a level by base face
-// (its neighbours' table entries are then in cache).
+// (its neighbours' table entries are then in cache), each (level, face) in vertex order.
 std::vector<std::uint32_t> level_then_face_order(std::span<const SurfacePoint> points, std::size_t base_faces) {
-    // Two stable counting sorts: by face, then by level.
+    // Stable counting sorts (this runs on one thread while the others wait).
     auto counting_sort = [&](std::size_t count, std::size_t buckets, auto vertex, auto key) {
         std::vector<std::uint32_t> start(buckets + 1, 0), out(count);
         for (std::size_t i = 0; i < count; ++i) ++start[key(vertex(i)) + 1];
@@ -29,9 +29,16 @@ std::vector<std::uint32_t> level_then_face_order(std::span<const SurfacePoint> p
     };
     int top = 0;
     for (const SurfacePoint& p : points) top = std::max(top, p.level);
-    const auto by_face = counting_sort(points.size(), base_faces, [](std::size_t i) { return static_cast<std::uint32_t>(i); },
-                                       [&](std::uint32_t v) { return points[v].face; });
-    return counting_sort(points.size(), static_cast<std::size_t>(top) + 1, [&](std::size_t i) { return by_face[i]; },
+    const auto levels = static_cast<std::size_t>(top) + 1;
+    const auto vertex_itself = [](std::size_t i) { return static_cast<std::uint32_t>(i); };
+    // One sort by (level, face) where a bucket per pair costs less than the vertices do.
+    if (levels * base_faces <= points.size())
+        return counting_sort(points.size(), levels * base_faces, vertex_itself, [&](std::uint32_t v) {
+            return static_cast<std::uint32_t>(static_cast<std::size_t>(points[v].level) * base_faces + points[v].face);
+        });
+    // Else by face, then by level.
+    const auto by_face = counting_sort(points.size(), base_faces, vertex_itself, [&](std::uint32_t v) { return points[v].face; });
+    return counting_sort(points.size(), levels, [&](std::size_t i) { return by_face[i]; },
                          [&](std::uint32_t v) { return std::uint32_t(points[v].level); });
 }
 
