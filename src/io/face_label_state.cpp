@@ -35,13 +35,6 @@ const FaceLabels& table(const BaseFaceLabels& labels, int t) {
     return t == 0 ? labels.materials : (t == 1 ? labels.groups : labels.objects);
 }
 
-// Whether some f line carries a label (usemtl, g, o, or s other than off), known without looking at
-// every face: most saved files have none, and body_labels and label_mismatch cost a base face lookup per face.
-bool body_has_labels(const ObjPolygons& polygons) {
-    return polygons.has_labels(&ObjPolygon::material) || polygons.has_labels(&ObjPolygon::group) ||
-           polygons.has_labels(&ObjPolygon::object) || polygons.has_labels(&ObjPolygon::smoothing_group);
-}
-
 }  // namespace
 
 void append_face_label_section(const BaseFaceLabels& labels, std::size_t base_faces, std::string& out) {
@@ -134,7 +127,7 @@ BaseFaceLabels FaceLabelSectionReader::finish(std::size_t base_faces, const ObjS
 
 BaseFaceLabels body_labels(const rgb::Mesh& mesh, const ObjRecords& records) {
     BaseFaceLabels labels;
-    if (!body_has_labels(records.polygons)) return labels;
+    if (!records.polygons.has_any_labels()) return labels;
     const std::vector<std::string>* file_names[3] = {&records.material_names, &records.group_names, &records.object_names};
     std::uint32_t ObjPolygon::*field[3] = {&ObjPolygon::material, &ObjPolygon::group, &ObjPolygon::object};
     const std::size_t base_faces = mesh.base().num_faces();
@@ -166,7 +159,7 @@ std::optional<std::string> label_mismatch(const rgb::Mesh& mesh, const BaseFaceL
     const std::vector<std::string>* file_names[3] = {&records.material_names, &records.group_names, &records.object_names};
     std::uint32_t ObjPolygon::*field[3] = {&ObjPolygon::material, &ObjPolygon::group, &ObjPolygon::object};
     // Neither side has a label: every face agrees.
-    if (labels.empty() && !body_has_labels(records.polygons)) return std::nullopt;
+    if (labels.empty() && !records.polygons.has_any_labels()) return std::nullopt;
     auto name = [](const std::vector<std::string>& names, std::uint32_t i) { return i == kNoIndex ? std::string() : names[i]; };
     std::size_t slot = 0;
     for (rgb::FaceId f : mesh.faces()) {

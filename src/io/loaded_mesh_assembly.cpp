@@ -39,7 +39,7 @@ std::vector<std::string> skipped_content_warnings(const ObjRecords& records) {
 }
 
 // Keeps the vertices faces use, renumbered, and reports how many of the file's were unused.
-void compact_vertices(const ObjRecords& records, TriangleSoup& soup, LoadedMesh& mesh) {
+void compact_vertices(ObjRecords& records, TriangleSoup& soup, LoadedMesh& mesh) {
     std::vector<std::uint32_t> new_index(soup.vertex_origin.size(), kNoIndex);
     for (const rgb::Triangle& t : soup.triangles)
         for (std::uint32_t v : t) new_index[v] = 0;
@@ -48,7 +48,7 @@ void compact_vertices(const ObjRecords& records, TriangleSoup& soup, LoadedMesh&
     std::uint32_t expected = 0;
     if (soup.vertex_origin.size() == records.positions.size() && std::find(new_index.begin(), new_index.end(), kNoIndex) == new_index.end() &&
         std::all_of(soup.vertex_origin.begin(), soup.vertex_origin.end(), [&expected](std::uint32_t origin) { return origin == expected++; })) {
-        mesh.positions = records.positions;
+        mesh.positions = std::move(records.positions);
         mesh.file_vertex = soup.vertex_origin;
         mesh.triangles = std::move(soup.triangles);
         return;
@@ -131,7 +131,7 @@ FaceLabels labels(const ObjRecords& records, const TriangleSoup& soup, const std
 
 }  // namespace
 
-LoadedMesh assemble_loaded_mesh(const ObjRecords& records, TriangleSoup&& soup, std::vector<std::string>&& fixes) {
+LoadedMesh assemble_loaded_mesh(ObjRecords& records, TriangleSoup&& soup, std::vector<std::string>&& fixes) {
     LoadedMesh mesh;
     mesh.warnings = skipped_content_warnings(records);
     mesh.warnings.insert(mesh.warnings.end(), fixes.begin(), fixes.end());

@@ -146,7 +146,7 @@ void orient(TriangleSoup& soup, const std::vector<EdgeUse>& uses, const std::str
 
 }  // namespace
 
-LoadedMesh validate_mesh(const ObjRecords& records, const std::string& file, const ReadOptions& options) {
+LoadedMesh validate_mesh(ObjRecords& records, const std::string& file, const ReadOptions& options) {
     if (records.polygons.empty())
         throw ObjError(ObjProblem::NoFaces, file, 0,
                        "no faces: the file has " + std::to_string(records.positions.size()) + " vertices, " +
@@ -160,12 +160,15 @@ LoadedMesh validate_mesh(const ObjRecords& records, const std::string& file, con
     return assemble_loaded_mesh(records, std::move(soup), std::move(warnings));
 }
 
-LoadedMesh saved_mesh_content(const ObjRecords& records, std::vector<rgb::Triangle> triangles) {
+LoadedMesh saved_mesh_content(ObjRecords& records, std::vector<rgb::Triangle> triangles) {
     TriangleSoup soup = empty_soup(records);
-    // Lines stay empty: only repairs report them.
+    // Lines stay empty: only repairs report them. Each triangle is its own polygon, which only
+    // labels look up (none: no array of millions of indices for nothing).
     soup.triangles = std::move(triangles);
-    soup.polygons.resize(records.polygons.size());
-    std::iota(soup.polygons.begin(), soup.polygons.end(), 0u);
+    if (records.polygons.has_any_labels()) {
+        soup.polygons.resize(records.polygons.size());
+        std::iota(soup.polygons.begin(), soup.polygons.end(), 0u);
+    }
     if (records.polygons.has_texcoords()) {
         soup.texcoords.reserve(records.polygons.size());
         for (std::uint32_t p = 0; p < records.polygons.size(); ++p) soup.texcoords.push_back(corner_texcoords(records.polygons[p], {0, 1, 2}));

@@ -11,11 +11,13 @@
 namespace rgbio {
 
 // Throws ObjError (NoFaces, DegenerateFace, DuplicateFace, NonOrientable, ComplexPolygon; and
-// NonManifoldEdge, NonManifoldVertex when options.strict).
-LoadedMesh validate_mesh(const ObjRecords& records, const std::string& file, const ReadOptions& options = {});
+// NonManifoldEdge, NonManifoldVertex when options.strict). May take the records' positions
+// (assemble_loaded_mesh).
+LoadedMesh validate_mesh(ObjRecords& records, const std::string& file, const ReadOptions& options = {});
 
 // The faces of a file saved by rgbsub (all triangles, already clean) with their data, unchanged.
-// `triangles`: those faces' corners, which the caller has at hand already (one per face).
-LoadedMesh saved_mesh_content(const ObjRecords& records, std::vector<rgb::Triangle> triangles);
+// `triangles`: those faces' corners, which the caller has at hand already (one per face). Takes the
+// records' positions (assemble_loaded_mesh).
+LoadedMesh saved_mesh_content(ObjRecords& records, std::vector<rgb::Triangle> triangles);
 
 }  // namespace rgbio

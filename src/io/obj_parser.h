@@ -74,6 +74,9 @@ public:
     // field (material, group, object or smoothing_group), without looking at every face.
     bool has_texcoords() const { return !texcoords_.empty(); }
     bool has_labels(std::uint32_t ObjPolygon::*field) const;
+    // Whether some face has any label (usemtl, g, o, or s other than off): most saved files have none,
+    // and what labels need (a base face lookup per face, an index per face) is then skipped.
+    bool has_any_labels() const { return !material_.empty() || !group_.empty() || !object_.empty() || !smoothing_group_.empty(); }
     iterator begin() const { return {this, 0}; }
     iterator end() const { return {this, size()}; }
 
@@ -81,10 +84,14 @@ public:
     // `texcoords` is empty or has one entry per vertex (kNoIndex where a corner names none).
     void add(std::span<const std::uint32_t> vertices, std::span<const std::uint32_t> texcoords, std::size_t line,
              std::uint32_t material, std::uint32_t group, std::uint32_t object, std::uint32_t smoothing_group);
-    // Appends the faces of a later part of the file, their label ids mapped through the tables (the
-    // new id of each of `other`'s ids).
-    void append(const ObjPolygons& other, std::span<const std::uint32_t> material, std::span<const std::uint32_t> group,
-                std::span<const std::uint32_t> object);
+    // Appends the faces of a later part of the file in two parts that may run at the same time (on two
+    // threads: a large file's faces are about 100 MB): their corners (vertices, texture coordinates)
+    // and their per-face arrays (where their corners start, lines, labels with ids mapped through the
+    // tables: the new id of each of `other`'s ids). `corners_before`: all_vertices().size() before
+    // either part.
+    void append_corners(const ObjPolygons& other);
+    void append_faces(const ObjPolygons& other, std::size_t corners_before, std::span<const std::uint32_t> material,
+                      std::span<const std::uint32_t> group, std::span<const std::uint32_t> object);
 
 private:
     std::vector<std::uint32_t> start_{0};  // polygon i's corners are [start_[i], start_[i + 1])

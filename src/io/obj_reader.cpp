@@ -89,8 +89,9 @@ std::shared_ptr<rgb::Mesh> adaptive_mesh(SavedState& saved, const ObjRecords& re
 }
 
 // A state's mesh, or the plain mesh with a warning saying why the state was not used.
-// release_text() is called once a state is parsed: nothing after needs the text.
-LoadedMesh read_records(const ObjRecords& records, const std::string& name, const ReadOptions& options,
+// release_text() is called once a state is parsed: nothing after needs the text. The records are
+// used up (the positions move into the result).
+LoadedMesh read_records(ObjRecords&& records, const std::string& name, const ReadOptions& options,
                         const std::function<void()>& release_text) {
     std::vector<std::string> warnings;
     if (!records.state.empty()) {
@@ -116,8 +117,9 @@ LoadedMesh read_records(const ObjRecords& records, const std::string& name, cons
                                "program: " + reason + "; it is loaded as a plain mesh");
         }
     }
+    const std::size_t vertices = records.positions.size();
     LoadedMesh loaded = validate_mesh(records, name, options);
-    attach_file_tags(parse_tag_lines(records.tags, records.positions.size(), name), loaded, name);
+    attach_file_tags(parse_tag_lines(records.tags, vertices, name), loaded, name);
     loaded.warnings.insert(loaded.warnings.begin(), warnings.begin(), warnings.end());
     options.progress.done();
     return loaded;
@@ -145,7 +147,7 @@ LoadedMesh read_text(std::string_view text, FileText* owned, const std::string& 
     }
     const TextEnd end = text_end(records, text);
     try {
-        return read_records(records, name, rest, [owned] {
+        return read_records(std::move(records), name, rest, [owned] {
             if (owned) owned->release();
         });
     } catch (const ObjError& error) {
@@ -163,7 +165,15 @@ LoadedMesh read_obj_file(const std::string& path, const ReadOptions& options) {
     FileText text = read_file_text(path, options.progress.part(0.0, kRead));
     ReadOptions rest = options;
     rest.progress = options.progress.part(kRead, 1.0);
-    LoadedMesh loaded = read_text(text.view(), &text, path, rest);
+    LoadedMesh loaded;
+    try {
+        loaded = read_text(text.view(), &text, path, rest);
+    } catch (...) {
+        // Whatever the reader made of the zeros in place of a vanished end, the cause is the file's shrinking.
+        text.check_not_shrunk();
+        throw;
+    }
+    text.check_not_shrunk();
     loaded.materials = read_material_libraries(loaded.material_libraries, std::filesystem::path(path).parent_path(),
                                                loaded.face_materials, loaded.warnings);
     return loaded;

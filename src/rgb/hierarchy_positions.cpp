@@ -17,9 +17,9 @@ namespace rgb {
 namespace {
 
 // Vertices ordered by level (what a vertex's values need is coarser), and within a level by base face
-// (its neighbours' table entries are then in cache).
+// (its neighbours' table entries are then in cache), each (level, face) in vertex order.
 std::vector<std::uint32_t> level_then_face_order(std::span<const SurfacePoint> points, std::size_t base_faces) {
-    // Two stable counting sorts: by face, then by level.
+    // Stable counting sorts (this runs on one thread while the others wait).
     auto counting_sort = [&](std::size_t count, std::size_t buckets, auto vertex, auto key) {
         std::vector<std::uint32_t> start(buckets + 1, 0), out(count);
         for (std::size_t i = 0; i < count; ++i) ++start[key(vertex(i)) + 1];
@@ -29,9 +29,16 @@ std::vector<std::uint32_t> level_then_face_order(std::span<const SurfacePoint> p
     };
     int top = 0;
     for (const SurfacePoint& p : points) top = std::max(top, p.level);
-    const auto by_face = counting_sort(points.size(), base_faces, [](std::size_t i) { return static_cast<std::uint32_t>(i); },
-                                       [&](std::uint32_t v) { return points[v].face; });
-    return counting_sort(points.size(), static_cast<std::size_t>(top) + 1, [&](std::size_t i) { return by_face[i]; },
+    const auto levels = static_cast<std::size_t>(top) + 1;
+    const auto vertex_itself = [](std::size_t i) { return static_cast<std::uint32_t>(i); };
+    // One sort by (level, face) where a bucket per pair costs less than the vertices do.
+    if (levels * base_faces <= points.size())
+        return counting_sort(points.size(), levels * base_faces, vertex_itself, [&](std::uint32_t v) {
+            return static_cast<std::uint32_t>(static_cast<std::size_t>(points[v].level) * base_faces + points[v].face);
+        });
+    // Else by face, then by level.
+    const auto by_face = counting_sort(points.size(), base_faces, vertex_itself, [&](std::uint32_t v) { return points[v].face; });
+    return counting_sort(points.size(), levels, [&](std::size_t i) { return by_face[i]; },
                          [&](std::uint32_t v) { return std::uint32_t(points[v].level); });
 }
 
@@ -46,7 +53,7 @@ public:
     using Values = std::array<glm::dvec3, C>;
 
     Evaluation(std::array<const BaseMesh*, C> bases, std::span<const SurfacePoint> points, const AddressIndex& index)
-        : bases_(bases), base_(*bases[0]), points_(points), index_(index), insertion_(new Values[points.size()]),
+        : bases_(bases), base_(*bases[0]), points_(points), index_(index),
           limit_(new Values[points.size()]), limit_state_(new std::atomic<std::uint8_t>[points.size()]()),
           blocks_(parallel_blocks(points.size(), 1 << 14)) {
         if (base_.has_sharp_features()) {
@@ -57,19 +64,23 @@ public:
         for (std::uint32_t v = 0; v < base_.num_vertices(); ++v) base_gamma_[v] = loop_gamma(base_.valence(v), base_.is_boundary_vertex(v));
         for (std::size_t b = 0; b < blocks_; ++b)
             for (std::size_t c = 0; c < C; ++c) evaluators_.emplace_back(*bases[c]);
+        for (std::vector<glm::dvec3>& values : insertion_) values.resize(points.size());
     }
 
     // Every vertex's insertion value, coarsest level first; gives the order used.
     std::vector<std::uint32_t> insert_all() {
         for (std::uint32_t v = 0; v < base_.num_vertices(); ++v)
-            for (std::size_t c = 0; c < C; ++c) insertion_[v][c] = bases_[c]->position(v);
+            for (std::size_t c = 0; c < C; ++c) insertion_[c][v] = bases_[c]->position(v);
         std::vector<std::uint32_t> order = level_then_face_order(points_, base_.num_faces());
         for (std::size_t begin = 0, end; begin < order.size(); begin = end) {
             end = begin;
             while (end < order.size() && points_[order[end]].level == points_[order[begin]].level) ++end;
             if (points_[order[begin]].level > 0)
                 in_parallel(std::span<const std::uint32_t>(order).subspan(begin, end - begin),
-                            [&](std::uint32_t v, std::size_t block) { insertion_[v] = insertion_position(points_[v], block); });
+                            [&](std::uint32_t v, std::size_t block) {
+                                const Values value = insertion_position(points_[v], block);
+                                for (std::size_t c = 0; c < C; ++c) insertion_[c][v] = value[c];
+                            });
         }
         return order;
     }
@@ -87,7 +98,7 @@ public:
     // takes it from the evaluator, as loop_geometry does: the same bits as the operators' mesh.
     Values control_point(std::uint32_t v, int k, std::size_t block) {
         const int l = points_[v].level;
-        if (k <= l) return insertion_[v];
+        if (k <= l) return insertion(v);
         Values result;
         if (is_tagged(v)) {
             for (std::size_t c = 0; c < C; ++c) result[c] = evaluator(block, c).control_point(points_[v], k);
@@ -95,7 +106,7 @@ public:
         }
         const double gamma = v < base_gamma_.size() ? base_gamma_[v] : loop_gamma(6, is_boundary(base_, points_[v]));
         const Values limits = limit(v, block);
-        for (std::size_t c = 0; c < C; ++c) result[c] = closed_form(insertion_[v][c], limits[c], gamma, k - l);
+        for (std::size_t c = 0; c < C; ++c) result[c] = closed_form(insertion_[c][v], limits[c], gamma, k - l);
         return result;
     }
 
@@ -105,7 +116,7 @@ public:
     Values limit(std::uint32_t v, std::size_t block) {
         if (limit_state_[v].load(std::memory_order_acquire) == kKnown) return limit_[v];
         const SurfacePoint& p = points_[v];
-        const Values& centre = insertion_[v];
+        const Values centre = insertion(v);
         Values value;
         if (is_tagged(v)) {
             for (std::size_t c = 0; c < C; ++c) value[c] = evaluator(block, c).limit_position(p);
@@ -113,11 +124,11 @@ public:
             const std::vector<std::uint32_t> ring = base_.ring(v);
             for (std::size_t c = 0; c < C; ++c) {
                 if (base_.is_boundary_vertex(v)) {
-                    value[c] = boundary_limit(centre[c], insertion_[ring.front()][c], insertion_[ring.back()][c]);
+                    value[c] = boundary_limit(centre[c], insertion_[c][ring.front()], insertion_[c][ring.back()]);
                 } else {
                     std::vector<glm::dvec3> around;
                     around.reserve(ring.size());
-                    for (std::uint32_t u : ring) around.push_back(insertion_[u][c]);
+                    for (std::uint32_t u : ring) around.push_back(insertion_[c][u]);
                     value[c] = interior_limit(centre[c], around);
                 }
             }
@@ -159,13 +170,8 @@ public:
         return limits;
     }
 
-    // The insertion values of values set c.
-    std::vector<glm::dvec3> insertions(std::size_t c) const {
-        std::vector<glm::dvec3> values;
-        values.reserve(points_.size());
-        for (std::size_t v = 0; v < points_.size(); ++v) values.push_back(insertion_[v][c]);
-        return values;
-    }
+    // The insertion values of values set c, given up: the last use of the evaluation's values of c.
+    std::vector<glm::dvec3> take_insertions(std::size_t c) { return std::move(insertion_[c]); }
 
 private:
     static constexpr std::uint8_t kClaimed = 1, kKnown = 2;
@@ -201,10 +207,17 @@ private:
     const AddressIndex& index_;
     std::vector<bool> tagged_;  // per vertex, whether the tags change its rules; empty without tags
     std::vector<double> base_gamma_;
-    // Per vertex, left uninitialised (no pass zero-fills megabytes that are written anyway): every
-    // insertion value is written before it is read (coarser levels first), and a limit is read only
-    // once its state says known, so most of limit_'s pages are never touched at all.
-    std::unique_ptr<Values[]> insertion_;
+    Values insertion(std::uint32_t v) const {
+        Values values;
+        for (std::size_t c = 0; c < C; ++c) values[c] = insertion_[c][v];
+        return values;
+    }
+
+    // Per values set, per vertex: each set is the vector handed over at the end (a copy of the 3M
+    // values of a saved 6M-triangle mesh was 72 MB more at the load's peak, copied on one thread).
+    std::array<std::vector<glm::dvec3>, C> insertion_;
+    // Per vertex, left uninitialised (no pass zero-fills megabytes that are written anyway): a limit
+    // is read only once its state says known, so most of limit_'s pages are never touched at all.
     std::unique_ptr<Values[]> limit_;
     std::unique_ptr<std::atomic<std::uint8_t>[]> limit_state_;
     std::size_t blocks_;
@@ -236,7 +249,7 @@ HierarchyPositions positions(Evaluation<C>& evaluation, std::span<const std::uin
     for (std::uint32_t v : order)
         if (want_limit[v]) wanted.push_back(v);
     evaluation.in_parallel(wanted, [&](std::uint32_t v, std::size_t block) { evaluation.limit(v, block); });
-    return {evaluation.insertions(0), evaluation.known_limits(0), std::move(at_levels)};
+    return {evaluation.take_insertions(0), evaluation.known_limits(0), std::move(at_levels)};
 }
 
 }  // namespace

@@ -300,8 +300,10 @@ Mesh restore_state(const MeshState& s, const ProgressSpan& progress, RestoredCha
         [&] {
             out = matched_halfedges(s.faces, nv, m.opposite_);
             m.face_vertices_.resize(nf);
-            for (std::uint32_t f = 0; f < nf; ++f)
-                for (int c = 0; c < 3; ++c) m.face_vertices_[f][c] = VertexId(s.faces[f][c]);
+            parallel_for(nf, 1 << 16, [&](std::size_t begin, std::size_t end) {
+                for (std::size_t f = begin; f < end; ++f)
+                    for (int c = 0; c < 3; ++c) m.face_vertices_[f][c] = VertexId(s.faces[f][c]);
+            });
             m.face_code_.assign(nf, 0);  // live; typed below
             m.face_count_ = nf;
         });
