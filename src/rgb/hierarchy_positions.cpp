@@ -85,6 +85,8 @@ public:
         return order;
     }
 
+    int level(std::uint32_t v) const { return points_[v].level; }
+
     // f(vertex, block) for each vertex, in blocks_ parallel blocks.
     template <class F>
     void in_parallel(std::span<const std::uint32_t> vertices, const F& f) {
@@ -224,14 +226,22 @@ private:
     std::vector<HierarchyEvaluator> evaluators_;  // C per block (block * C + c): each caches as it goes
 };
 
-// Each vertex's value set c at levels[v] (kLimitLevel: its limit).
+// Each vertex's value set c at levels[v] (kLimitLevel: its limit). A value at a level finer than the
+// vertex's own needs its limit, and such vertices gather where the order puts them (the coarse
+// vertices of a uniformly refined mesh come first): they are cut into blocks of their own, as the
+// limits are below, or the first block gets most of the work (loading a saved 1M-triangle file:
+// 61 -> 50 ms).
 template <std::size_t C>
 std::vector<glm::dvec3> values_at(Evaluation<C>& evaluation, std::span<const std::uint32_t> order, std::span<const std::uint8_t> levels,
                                   std::size_t c) {
     std::vector<glm::dvec3> result(levels.size());
-    evaluation.in_parallel(order, [&](std::uint32_t v, std::size_t block) {
+    std::vector<std::uint32_t> finer, own;
+    for (std::uint32_t v : order) (levels[v] > evaluation.level(v) ? finer : own).push_back(v);
+    const auto value = [&](std::uint32_t v, std::size_t block) {
         result[v] = (levels[v] == kLimitLevel ? evaluation.limit(v, block) : evaluation.control_point(v, levels[v], block))[c];
-    });
+    };
+    evaluation.in_parallel(finer, value);
+    evaluation.in_parallel(own, value);
     return result;
 }
 
