@@ -3,15 +3,18 @@
 // results stay within the budget, are nested as the budget grows, ignore the mesh's history and
 // storage, and stop at the level cap saying so; the finest faces of a budget form a few solid patches.
 #include <algorithm>
+#include <memory>
 #include <set>
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
+#include "rgb/base_mesh.h"
 #include "rgb/invariants.h"
 #include "rgb/lod_driver.h"
 #include "rgb/mesh.h"
 #include "rgb/requests.h"
+#include "rgb/sharp_features.h"
 #include "support/clear_threshold.h"
 #include "support/identity_tracker.h"
 #include "support/request_oracle.h"
@@ -202,8 +205,9 @@ TEST(LodDriver, BudgetsBetweenLevelsRefineSolidPatches) {
 
 // What a uniform start (LodSettings::uniform_start) must not change: the mesh and the report of the
 // ordinary run with the same settings.
-void expect_uniform_start_changes_nothing(const TestMesh& base, rgb::LodSettings settings) {
-    rgb::Mesh ordinary = make_rgb_mesh(base), started = make_rgb_mesh(base);
+void expect_uniform_start_changes_nothing(const TestMesh& base, rgb::LodSettings settings, const rgb::SharpFeatures& features = {}) {
+    const auto tagged = std::make_shared<const rgb::BaseMesh>(base.positions, base.triangles, features);
+    rgb::Mesh ordinary(tagged), started(tagged);
     settings.uniform_start = false;
     rgb::LodDriver ordinary_run(ordinary, settings);
     ordinary_run.run();
@@ -236,6 +240,20 @@ TEST(LodDriver, AUniformStartGivesTheOrdinaryResult) {
             settings.max_triangles = times * base.triangles.size();
             expect_uniform_start_changes_nothing(base, settings);
         }
+}
+
+// With creases (two infinitely sharp edges and a semi-sharp one, so that rules change between levels)
+// the keys take the general way and refine_uniform the tagged rules: still the ordinary result.
+TEST(LodDriver, AUniformStartOnACreasedMeshGivesTheOrdinaryResult) {
+    const TestMesh base = icosahedron();
+    const rgb::Triangle& t = base.triangles.front();
+    rgb::SharpFeatures features;
+    features.edges = {{t[0], t[1], rgb::kInfiniteSharpness}, {t[1], t[2], rgb::kInfiniteSharpness}, {t[2], t[0], 2}};
+    for (std::size_t times : {4, 16, 23, 64}) {
+        rgb::LodSettings settings;
+        settings.max_triangles = times * base.triangles.size();
+        expect_uniform_start_changes_nothing(base, settings, features);
+    }
 }
 
 // A vertex of the uniform levels that is not wanted (its edge's value is not above the threshold:
