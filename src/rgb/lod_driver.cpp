@@ -144,12 +144,18 @@ void LodDriver::cache_limit_cheaply(VertexId v) {
 }
 
 // The limit of v, once known kept by slot (plain_edge_length_ only): found as prepare_limit and the
-// value would find it.
+// value would find it, with one probe of the mesh's table of limits.
 const glm::dvec3& LodDriver::limit_of(VertexId v) {
     if (!limit_known_[v.idx]) {
         limit_known_[v.idx] = 1;
-        cache_limit_cheaply(v);
-        limit_[v.idx] = limit_position(mesh_, v);  // cached by now, or the general way
+        if (const auto cached = mesh_.cached_limit(v)) {
+            limit_[v.idx] = *cached;
+        } else if (const auto limit = limit_from_completed_ring(mesh_, v)) {
+            mesh_.cache_limit(v, *limit);
+            limit_[v.idx] = *limit;
+        } else {
+            limit_[v.idx] = limit_position(mesh_, v);  // the general way, which caches it
+        }
     }
     return limit_[v.idx];
 }
@@ -301,9 +307,20 @@ void LodDriver::push_new_edges() {
             const EdgeType t = mesh_.edge_type(h);
             if (t.colour != Colour::Green) continue;
             const VertexId a = mesh_.from_vertex(h), b = mesh_.to_vertex(h);
-            if (const std::uint64_t key = edge_key(a, b, t.level)) push({key, a, b});
+            new_edges_.push_back({a, b, t.level});
+            for (VertexId v : {a, b}) {
+                __builtin_prefetch(&vertex_key_[v.idx]);
+                __builtin_prefetch(&base_space_[v.idx]);
+                __builtin_prefetch(&limit_known_[v.idx]);
+                if (plain_edge_length_) __builtin_prefetch(&limit_[v.idx]);
+            }
         }
     }
+    // Keyed once all are found: the data of their ends, mostly of coarser vertices not touched lately,
+    // is on its way meanwhile.
+    for (const NewEdge& e : new_edges_)
+        if (const std::uint64_t key = edge_key(e.a, e.b, e.level)) push({key, e.a, e.b});
+    new_edges_.clear();
 }
 
 // Splits the candidate's edge (with what it depends on) unless it is stale: split already as another's
@@ -345,7 +362,18 @@ std::optional<LodDriver::Candidate> LodDriver::next_candidate() {
             queue_.pop();
             return top;
         }
-        if (listed) return band[band_next_++];
+        if (listed) {
+            // What the next splits read first, while this one is made.
+            for (std::size_t ahead = 1; ahead <= 2 && band_next_ + ahead < band.size(); ++ahead) {
+                const Candidate& next = band[band_next_ + ahead];
+                for (VertexId v : {next.a, next.b}) {
+                    mesh_.prefetch(v, ahead == 1);
+                    __builtin_prefetch(&vertex_key_[v.idx]);
+                    __builtin_prefetch(&base_space_[v.idx]);
+                }
+            }
+            return band[band_next_++];
+        }
         std::vector<Candidate>().swap(band);
         band_next_ = 0;
         band_sorted_ = false;

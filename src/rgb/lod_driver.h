@@ -139,6 +139,11 @@ private:
     std::vector<FaceId> added_faces_;
     std::vector<std::uint8_t> face_added_;  // per face slot: in added_faces_
     std::vector<VertexId> added_vertices_;
+    struct NewEdge {
+        VertexId a, b;
+        int level;
+    };
+    std::vector<NewEdge> new_edges_;
     struct Unkeyed {
         VertexId v, a, b;  // a new vertex and its parent edge
     };

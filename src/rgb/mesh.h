@@ -138,6 +138,18 @@ public:
 
     // ---- vertices ----
     HalfedgeId vertex_halfedge(VertexId v) const { return vertex_halfedge_[v.idx]; }
+    // Asks the processor for what a walk around v reads first (its halfedge, level and position; with
+    // `around`, the first face too, which needs the halfedge loaded), for a caller that knows which
+    // vertices it visits next.
+    void prefetch(VertexId v, bool around) const {
+        __builtin_prefetch(&vertex_halfedge_[v.idx]);
+        __builtin_prefetch(&vertex_info_[v.idx]);
+        __builtin_prefetch(&insertion_position_[v.idx]);
+        if (around && vertex_halfedge_[v.idx].valid()) {
+            __builtin_prefetch(&face_vertices_[vertex_halfedge_[v.idx].idx / 3]);
+            __builtin_prefetch(&opposite_[vertex_halfedge_[v.idx].idx]);
+        }
+    }
     int level(VertexId v) const { return vertex_info_[v.idx] & kLevelMask; }
     bool is_boundary(VertexId v) const { return (vertex_info_[v.idx] & kBoundaryBit) != 0; }
     bool is_base_vertex(VertexId v) const { return v.idx < base_->num_vertices(); }
