@@ -311,8 +311,9 @@ void LodDriver::push_new_edges() {
             for (VertexId v : {a, b}) {
                 __builtin_prefetch(&vertex_key_[v.idx]);
                 __builtin_prefetch(&base_space_[v.idx]);
-                __builtin_prefetch(&limit_known_[v.idx]);
-                if (plain_edge_length_) __builtin_prefetch(&limit_[v.idx]);
+                if (!plain_edge_length_ || mesh_.level(v) >= t.level) continue;
+                __builtin_prefetch(&limit_[v.idx]);
+                if (!limit_known_[v.idx]) mesh_.prefetch_limit(v);  // to be found or cached there
             }
         }
     }

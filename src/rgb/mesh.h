@@ -173,6 +173,8 @@ public:
         if (!has_cached_limit(v)) return std::nullopt;
         return limits_.find(v.idx);
     }
+    // Asks the processor for where the table of limits keeps (or will keep) v's, ahead of a lookup.
+    void prefetch_limit(VertexId v) const { limits_.prefetch(v.idx); }
     // Whether cached_limit has a value, from the flag alone: for callers that only ask.
     bool has_cached_limit(VertexId v) const { return (vertex_info_[v.idx] & kLimitBit) != 0; }
     // Number of neighbours in the uniform mesh of the vertex's own level (base valence or 6).
