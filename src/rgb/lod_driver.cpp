@@ -9,6 +9,7 @@
 #include <glm/geometric.hpp>
 
 #include "rgb/completed_ring.h"
+#include "rgb/half_octave.h"
 #include "rgb/loop_geometry.h"
 #include "rgb/operators.h"
 #include "rgb/refine.h"
@@ -32,20 +33,13 @@ std::uint64_t spread(std::uint64_t x) {
     return x;
 }
 
-// The criterion's band: half octaves of the value, floor(2 log2 value), biased to 1..65535 (0 means
-// "not wanted"). Exact, from the value's binary exponent and whether its significand reaches the
-// square root of two (a sign the fused multiply-add gets right, as m^2 - 1/2 is never zero), where
-// std::log2 cost a call per key and could round across a band's edge.
+// The criterion's band: half octaves of the value, biased to 1..65535 (0 means "not wanted").
 std::uint64_t band(double value) {
     static_assert(kBandsPerOctave == 2);
     if (!(value > 0.0)) return 1;
     if (!std::isfinite(value)) return 65535;
-    int exponent = 0;
-    const double m = std::frexp(value, &exponent);  // value = m 2^exponent, 1/2 <= m < 1
-    const long b = 2L * (exponent - 1) + (std::fma(m, m, -0.5) > 0.0 ? 1 : 0);
-    return static_cast<std::uint64_t>(std::clamp(b, -32767L, 32767L) + 32768L);
+    return static_cast<std::uint64_t>(std::clamp(half_octave(value), -32767L, 32767L) + 32768L);
 }
-
 
 // The vertices above the base, coarsest first: taken from the back (finest first), each is removable
 // when its turn comes.
