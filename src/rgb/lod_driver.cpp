@@ -12,6 +12,7 @@
 #include "rgb/half_octave.h"
 #include "rgb/loop_geometry.h"
 #include "rgb/operators.h"
+#include "rgb/parallel.h"
 #include "rgb/refine.h"
 
 namespace rgb {
@@ -101,25 +102,66 @@ bool LodDriver::outranks(const Candidate& x, const Candidate& y) const {
 }
 
 std::uint64_t LodDriver::edge_key(VertexId a, VertexId b, int level) {
-    const std::uint64_t inherited = std::min(key_of(a), key_of(b));
-    if (inherited == 0) return 0;
+    if (std::min(key_of(a), key_of(b)) == 0) return 0;
     double value = 0.0;
     if (plain_edge_length_) {
-        value = glm::distance(control_point_of(a, level), control_point_of(b, level));  // edge_length's bits
+        for (VertexId v : {a, b})
+            if (level > mesh_.level(v)) learn_limit(v);
+        value = plain_edge_length(a, b, level);
     } else {
         prepare_limit(a, level);
         prepare_limit(b, level);
         value = settings_.value(mesh_, a, b, level);
     }
+    bool level_capped = false;
+    const std::uint64_t key = key_from_value(a, b, level, value, level_capped);
+    if (level_capped) report_.level_cap_bound = true;
+    return key;
+}
+
+// The keys of many edges of the mesh as it is: one by one with a criterion of the caller's (which
+// may keep caches); with the default value, the limits the keys need learnt first, then the keys,
+// which then only read, on all cores.
+std::vector<std::uint64_t> LodDriver::edge_keys(std::span<const Edge> edges) {
+    std::vector<std::uint64_t> keys(edges.size());
+    if (!plain_edge_length_) {
+        for (std::size_t i = 0; i < edges.size(); ++i) keys[i] = edge_key(edges[i].a, edges[i].b, edges[i].level);
+        return keys;
+    }
+    for (const Edge& e : edges)
+        for (VertexId v : {e.a, e.b})
+            if (e.level > mesh_.level(v)) learn_limit(v);
+    const std::size_t blocks = parallel_blocks(edges.size(), 8192);
+    std::vector<std::uint8_t> capped(blocks, 0);
+    parallel_blocks_for(edges.size(), blocks, [&](std::size_t block, std::size_t begin, std::size_t end) {
+        bool level_capped = false;
+        for (std::size_t i = begin; i < end; ++i) {
+            const Edge& e = edges[i];
+            if (std::min(key_of(e.a), key_of(e.b)) == 0) continue;
+            keys[i] = key_from_value(e.a, e.b, e.level, plain_edge_length(e.a, e.b, e.level), level_capped);
+        }
+        capped[block] = level_capped;
+    });
+    if (std::find(capped.begin(), capped.end(), 1) != capped.end()) report_.level_cap_bound = true;
+    return keys;
+}
+
+// Only reads, so that keys can be computed on several threads.
+std::uint64_t LodDriver::key_from_value(VertexId a, VertexId b, int level, double value, bool& level_capped) const {
     if (!(value > settings_.threshold)) return 0;
     if (level >= settings_.max_level) {
-        report_.level_cap_bound = true;
+        level_capped = true;
         return 0;
     }
     const glm::dvec3 mid = (0.5 * (base_space_[a.idx] + base_space_[b.idx]) - box_lo_) * box_scale_;
     std::uint64_t morton = 0;
     for (int i = 0; i < 3; ++i) morton |= spread(static_cast<std::uint64_t>(std::clamp(mid[i], 0.0, 65535.0))) << (2 - i);
-    return std::min((band(value) << 48) | morton, inherited);
+    return std::min((band(value) << 48) | morton, std::min(key_of(a), key_of(b)));
+}
+
+// edge_length's bits, from the limits kept by slot (known for both ends where the level needs them).
+double LodDriver::plain_edge_length(VertexId a, VertexId b, int level) const {
+    return glm::distance(known_control_point(a, level), known_control_point(b, level));
 }
 
 // A value at `level` needs the limit of an endpoint coarser than that. Most such limits the mesh
@@ -137,26 +179,44 @@ void LodDriver::cache_limit_cheaply(VertexId v) {
     if (const auto limit = limit_from_completed_ring(mesh_, v)) mesh_.cache_limit(v, *limit);
 }
 
-// The limit of v, once known kept by slot (plain_edge_length_ only): found as prepare_limit and the
-// value would find it, with one probe of the mesh's table of limits.
-const glm::dvec3& LodDriver::limit_of(VertexId v) {
-    if (!limit_known_[v.idx]) {
-        limit_known_[v.idx] = 1;
-        if (const auto cached = mesh_.cached_limit(v)) {
-            limit_[v.idx] = *cached;
-        } else if (const auto limit = limit_from_completed_ring(mesh_, v)) {
-            mesh_.cache_limit(v, *limit);
-            limit_[v.idx] = *limit;
-        } else {
-            limit_[v.idx] = limit_position(mesh_, v);  // the general way, which caches it
-        }
+// Keeps the limit of v by slot (plain_edge_length_ only), found as prepare_limit and the value would
+// find it, with one probe of the mesh's table of limits.
+void LodDriver::learn_limit(VertexId v) {
+    if (limit_known_[v.idx]) return;
+    limit_known_[v.idx] = 1;
+    if (const auto cached = mesh_.cached_limit(v)) {
+        limit_[v.idx] = *cached;
+    } else if (const auto limit = limit_from_completed_ring(mesh_, v)) {
+        mesh_.cache_limit(v, *limit);
+        limit_[v.idx] = *limit;
+    } else {
+        limit_[v.idx] = limit_position(mesh_, v);  // the general way, which caches it
     }
-    return limit_[v.idx];
 }
 
-glm::dvec3 LodDriver::control_point_of(VertexId v, int level) {
+// Right after refine_uniform, the limits of every vertex up to `level`, coarsest first, each level
+// on all cores: a vertex's ring at its own level is then its neighbours, and the coarser ones among
+// them have their limits cached already, so that computing a limit only reads the mesh (the table
+// is filled between levels, in slot order, which keeps its lines in cache). The keys of the start's
+// edges need the coarser ones; the splits after it, the finest.
+void LodDriver::learn_uniform_limits(int level) {
+    std::vector<std::vector<VertexId>> by_level(static_cast<std::size_t>(level) + 1);
+    for (VertexId v : mesh_.vertices())
+        if (mesh_.level(v) <= level && !limit_known_[v.idx]) by_level[static_cast<std::size_t>(mesh_.level(v))].push_back(v);
+    for (const std::vector<VertexId>& vertices : by_level) {
+        parallel_for(vertices.size(), 4096, [&](std::size_t begin, std::size_t end) {
+            for (std::size_t i = begin; i < end; ++i) limit_[vertices[i].idx] = limit_position_uncached(mesh_, vertices[i]);
+        });
+        for (VertexId v : vertices) {
+            limit_known_[v.idx] = 1;
+            if (!mesh_.has_cached_limit(v)) mesh_.cache_limit(v, limit_[v.idx]);
+        }
+    }
+}
+
+glm::dvec3 LodDriver::known_control_point(VertexId v, int level) const {
     if (level <= mesh_.level(v)) return mesh_.insertion_position(v);
-    return control_point(mesh_, v, level, limit_of(v));
+    return control_point(mesh_, v, level, limit_[v.idx]);
 }
 
 void LodDriver::vertex_added(const Mesh&, VertexId v, VertexId a, VertexId b) {
@@ -201,16 +261,18 @@ void LodDriver::start_refining() {
     }
     report_before_start_ = report_;
     if (settings_.uniform_start && settings_.threshold <= 0.0 && !uniform_start_failed_) refine_uniform_start();
+    std::vector<Edge> edges;
     for (FaceId f : mesh_.faces())
         for (int i = 0; i < 3; ++i) {
             const HalfedgeId h = Mesh::halfedge(f, i);
             const HalfedgeId o = mesh_.opposite(h);
             if (o.valid() && o < h) continue;  // each edge once
             const EdgeType t = mesh_.edge_type(h);
-            if (t.colour != Colour::Green) continue;
-            const VertexId a = mesh_.from_vertex(h), b = mesh_.to_vertex(h);
-            if (const std::uint64_t key = edge_key(a, b, t.level)) push({key, a, b});
+            if (t.colour == Colour::Green) edges.push_back({mesh_.from_vertex(h), mesh_.to_vertex(h), t.level});
         }
+    const std::vector<std::uint64_t> keys = edge_keys(edges);
+    for (std::size_t i = 0; i < edges.size(); ++i)
+        if (keys[i]) push({keys[i], edges[i].a, edges[i].b});
     band_ = bands_.size() - 1;
     while (band_ > 0 && bands_[band_].empty()) --band_;
 }
@@ -236,12 +298,22 @@ void LodDriver::refine_uniform_start() {
     keys_wait_ = true;
     refine_uniform(mesh_, level);
     keys_wait_ = false;
+    if (plain_edge_length_) learn_uniform_limits(level);
+    // Level by level (refine_uniform makes them in that order): a vertex's key needs its parents'.
     std::optional<Candidate> lowest;
-    for (const Unkeyed& n : unkeyed_) {
-        const std::uint64_t key = edge_key(n.a, n.b, mesh_.level(n.v) - 1);
-        vertex_key_[n.v.idx] = key;
-        const Candidate c{key, n.a, n.b};
-        if (!lowest || outranks(*lowest, c)) lowest = c;
+    for (std::size_t first = 0; first < unkeyed_.size();) {
+        const int parent_level = mesh_.level(unkeyed_[first].v) - 1;
+        std::vector<Edge> parents;
+        for (std::size_t i = first; i < unkeyed_.size() && mesh_.level(unkeyed_[i].v) - 1 == parent_level; ++i)
+            parents.push_back({unkeyed_[i].a, unkeyed_[i].b, parent_level});
+        const std::vector<std::uint64_t> keys = edge_keys(parents);
+        for (std::size_t i = 0; i < keys.size(); ++i) {
+            const Unkeyed& n = unkeyed_[first + i];
+            vertex_key_[n.v.idx] = keys[i];
+            const Candidate c{keys[i], n.a, n.b};
+            if (!lowest || outranks(*lowest, c)) lowest = c;
+        }
+        first += keys.size();
     }
     steps_ += unkeyed_.size();
     unkeyed_.clear();
@@ -313,7 +385,7 @@ void LodDriver::push_new_edges() {
     }
     // Keyed once all are found: the data of their ends, mostly of coarser vertices not touched lately,
     // is on its way meanwhile.
-    for (const NewEdge& e : new_edges_)
+    for (const Edge& e : new_edges_)
         if (const std::uint64_t key = edge_key(e.a, e.b, e.level)) push({key, e.a, e.b});
     new_edges_.clear();
 }

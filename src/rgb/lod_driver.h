@@ -17,6 +17,7 @@
 #include <functional>
 #include <optional>
 #include <queue>
+#include <span>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -93,12 +94,21 @@ private:
     void face_added(const Mesh&, FaceId f) override;
 
     bool outranks(const Candidate& x, const Candidate& y) const;
+    // An edge of the mesh, with its level (the finer end's).
+    struct Edge {
+        VertexId a, b;
+        int level;
+    };
     std::uint64_t edge_key(VertexId a, VertexId b, int level);
+    std::vector<std::uint64_t> edge_keys(std::span<const Edge> edges);
+    std::uint64_t key_from_value(VertexId a, VertexId b, int level, double value, bool& level_capped) const;
+    double plain_edge_length(VertexId a, VertexId b, int level) const;
     std::uint64_t key_of(VertexId v) const { return v.idx < vertex_key_.size() ? vertex_key_[v.idx] : 0; }
     void prepare_limit(VertexId v, int level);
     void cache_limit_cheaply(VertexId v);
-    const glm::dvec3& limit_of(VertexId v);
-    glm::dvec3 control_point_of(VertexId v, int level);
+    void learn_limit(VertexId v);
+    void learn_uniform_limits(int level);
+    glm::dvec3 known_control_point(VertexId v, int level) const;
     void grow_vertex_arrays(std::size_t size);
     void clear_added_faces();
     void key_new_vertices();
@@ -139,11 +149,7 @@ private:
     std::vector<FaceId> added_faces_;
     std::vector<std::uint8_t> face_added_;  // per face slot: in added_faces_
     std::vector<VertexId> added_vertices_;
-    struct NewEdge {
-        VertexId a, b;
-        int level;
-    };
-    std::vector<NewEdge> new_edges_;
+    std::vector<Edge> new_edges_;
     struct Unkeyed {
         VertexId v, a, b;  // a new vertex and its parent edge
     };

@@ -240,6 +240,13 @@ TEST(LodDriver, AUniformStartGivesTheOrdinaryResult) {
             settings.max_triangles = times * base.triangles.size();
             expect_uniform_start_changes_nothing(base, settings);
         }
+    // Large enough that the start's limits and keys are computed on several threads (levels of more
+    // than 8192 vertices, more than 16384 edges), where there are several cores.
+    for (std::size_t times : {4, 64}) {
+        rgb::LodSettings settings;
+        settings.max_triangles = times * bunny().triangles.size();
+        expect_uniform_start_changes_nothing(bunny(), settings);
+    }
 }
 
 // With creases (two infinitely sharp edges and a semi-sharp one, so that rules change between levels)
