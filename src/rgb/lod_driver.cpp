@@ -414,13 +414,26 @@ void LodDriver::undo(const std::vector<VertexId>& vertices) {
         if (mesh_.is_live(*it)) remove_with_dependents(mesh_, *it);
 }
 
+// Highest first. A long list in two halves on two cores, then merged (equal candidates are the same
+// edge queued twice, so the order among them does not matter).
+void LodDriver::sort_band(std::vector<Candidate>& band) const {
+    auto higher = [this](const Candidate& x, const Candidate& y) { return outranks(x, y); };
+    const auto middle = band.begin() + static_cast<std::ptrdiff_t>(band.size() / 2);
+    if (parallel_blocks(band.size(), 16384) < 2) {
+        std::sort(band.begin(), band.end(), higher);
+        return;
+    }
+    parallel_invoke([&] { std::sort(band.begin(), middle, higher); }, [&] { std::sort(middle, band.end(), higher); });
+    std::inplace_merge(band.begin(), middle, band.end(), higher);
+}
+
 // The highest candidate left: the next of the current band's sorted list or of the band's heap of
 // newcomers, moving down to the next band when both are empty.
 std::optional<LodDriver::Candidate> LodDriver::next_candidate() {
     for (;;) {
         std::vector<Candidate>& band = bands_[band_];
         if (!band_sorted_) {
-            std::sort(band.begin(), band.end(), [this](const Candidate& x, const Candidate& y) { return outranks(x, y); });
+            sort_band(band);
             band_sorted_ = true;
         }
         const bool listed = band_next_ < band.size();

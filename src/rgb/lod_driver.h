@@ -120,6 +120,7 @@ private:
     void undo_uniform_start();
     bool split(const Candidate& c);
     void undo(const std::vector<VertexId>& vertices);
+    void sort_band(std::vector<Candidate>& band) const;
     std::optional<Candidate> next_candidate();
     bool split_next();
 
