@@ -82,10 +82,16 @@ for _ in $(seq "$repeat"); do
 done
 budget=$(median < "$work/budget.s"); level3=$(median < "$work/level3.s")
 budget_cpu=$(median < "$work/budget.cpu"); level3_cpu=$(median < "$work/level3.cpu")
-printf 'budget 1500000 on 52k triangles: %.0f ns per output triangle, level 3 %.0f ns, ratio %.2f\n' \
-    "$(echo "$budget * 1000000000" | bc -l)" "$(echo "$level3 * 1000000000" | bc -l)" "$(echo "$budget / $level3" | bc -l)"
-printf 'the same in CPU time: %.0f ns per output triangle, level 3 %.0f ns, ratio %.2f\n' \
-    "$(echo "$budget_cpu * 1000000000" | bc -l)" "$(echo "$level3_cpu * 1000000000" | bc -l)" "$(echo "$budget_cpu / $level3_cpu" | bc -l)"
+# Each budget run is paired with the level-3 run next to it: the median of those ratios follows the
+# machine's drift from minute to minute better than the ratio of the two medians; the range shows it.
+pair_ratios() { paste "$1" "$2" | awk '{ print $1 / $2 }' | sort -g; }
+ratio_summary() { local r; r=$(pair_ratios "$1" "$2"); printf '%.2f (pairs %.2f-%.2f)' "$(median <<< "$r")" "$(head -1 <<< "$r")" "$(tail -1 <<< "$r")"; }
+printf 'budget 1500000 on 52k triangles: %.0f ns per output triangle, level 3 %.0f ns, ratio %.2f, median of pair ratios %s\n' \
+    "$(echo "$budget * 1000000000" | bc -l)" "$(echo "$level3 * 1000000000" | bc -l)" "$(echo "$budget / $level3" | bc -l)" \
+    "$(ratio_summary "$work/budget.s" "$work/level3.s")"
+printf 'the same in CPU time: %.0f ns per output triangle, level 3 %.0f ns, ratio %.2f, median of pair ratios %s\n' \
+    "$(echo "$budget_cpu * 1000000000" | bc -l)" "$(echo "$level3_cpu * 1000000000" | bc -l)" "$(echo "$budget_cpu / $level3_cpu" | bc -l)" \
+    "$(ratio_summary "$work/budget.cpu" "$work/level3.cpu")"
 
 # 4. A region request that touches nothing, on 819k triangles: the first builds the spatial index.
 "$rgbsub" apply "$work/torus819k.obj" "$work/miss.txt" -o "$work/miss.obj" --timings > "$work/t.txt"
