@@ -128,9 +128,11 @@ std::vector<std::uint64_t> LodDriver::edge_keys(std::span<const Edge> edges) {
         for (std::size_t i = 0; i < edges.size(); ++i) keys[i] = edge_key(edges[i].a, edges[i].b, edges[i].level);
         return keys;
     }
-    for (const Edge& e : edges)
+    for (const Edge& e : edges) {
+        if (std::min(key_of(e.a), key_of(e.b)) == 0) continue;  // no value needed, as in edge_key
         for (VertexId v : {e.a, e.b})
             if (e.level > mesh_.level(v)) learn_limit(v);
+    }
     const std::size_t blocks = parallel_blocks(edges.size(), 8192);
     std::vector<std::uint8_t> capped(blocks, 0);
     parallel_blocks_for(edges.size(), blocks, [&](std::size_t block, std::size_t begin, std::size_t end) {
