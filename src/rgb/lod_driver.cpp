@@ -77,7 +77,7 @@ LodDriver::LodDriver(Mesh& mesh, LodSettings settings)
     grow_vertex_arrays(mesh_.vertex_capacity());
     std::fill(vertex_key_.begin(), vertex_key_.begin() + base.num_vertices(), kBaseKey);
     for (std::uint32_t v = 0; v < base.num_vertices(); ++v) base_space_[v] = base.position(v);
-    face_added_.assign(mesh_.face_capacity(), 0);
+    face_added_.resize(mesh_.face_capacity());
     mesh_.add_observer(this);
 }
 
@@ -86,9 +86,9 @@ LodDriver::~LodDriver() { mesh_.remove_observer(this); }
 // New slots start unkeyed, with no limit known.
 void LodDriver::grow_vertex_arrays(std::size_t size) {
     if (size <= vertex_key_.size()) return;
-    vertex_key_.resize(size, 0);
+    vertex_key_.resize(size);
     base_space_.resize(size);
-    limit_known_.resize(size, 0);
+    limit_known_.resize(size);
     if (plain_edge_length_) limit_.resize(size);
 }
 
@@ -254,15 +254,17 @@ void LodDriver::start_refining() {
     if (settings_.threshold <= 0.0) {
         const std::size_t faces = settings_.max_triangles + settings_.max_triangles / 64 + 64;
         const std::size_t vertices = faces / 2 + mesh_.num_vertices();
+        reserved_ = {faces, vertices};
         mesh_.reserve(faces, vertices);
         // The coarser vertices get their limits cached (finer splits and keys need them): 268k for
         // a budget of 1.5M triangles on a torus, so a quarter of the budget leaves room to spare.
         mesh_.reserve_limits(settings_.max_triangles / 4);
         grow_vertex_arrays(vertices);
-        face_added_.resize(std::max(face_added_.size(), faces), 0);
+        face_added_.resize(std::max(face_added_.size(), faces));
     }
     report_before_start_ = report_;
     if (settings_.uniform_start && settings_.threshold <= 0.0 && !uniform_start_failed_) refine_uniform_start();
+    if (settings_.threshold <= 0.0 && !prefault_) prefault_room();
     std::vector<Edge> edges;
     for (FaceId f : mesh_.faces())
         for (int i = 0; i < 3; ++i) {
@@ -275,8 +277,34 @@ void LodDriver::start_refining() {
     const std::vector<std::uint64_t> keys = edge_keys(edges);
     for (std::size_t i = 0; i < edges.size(); ++i)
         if (keys[i]) push({keys[i], edges[i].a, edges[i].b});
-    band_ = bands_.size() - 1;
-    while (band_ > 0 && bands_[band_].empty()) --band_;
+    band_ = bands_.num_bands() - 1;
+    while (band_ > 0 && bands_.empty(band_)) --band_;
+}
+
+// The room reserved for the run, in the mesh and in the driver's arrays, faulted in on another core
+// ahead of the splits that fill it (after the uniform start, which has its own and uses all cores).
+void LodDriver::prefault_room() {
+    const auto [faces, vertices] = reserved_;
+    auto more = [](std::size_t total, std::size_t used) { return total > used ? total - used : 0; };
+    std::vector<std::span<std::byte>> room =
+        mesh_.room_ahead(more(faces, mesh_.face_capacity()), more(vertices, mesh_.vertex_capacity()));
+    const std::size_t used = mesh_.vertex_capacity();
+    auto tail = [&room](auto& array, std::size_t from) {
+        if (from < array.size()) room.push_back(std::as_writable_bytes(std::span(array).subspan(from)));
+    };
+    tail(vertex_key_, used);
+    tail(base_space_, used);
+    tail(limit_known_, used);
+    tail(limit_, used);
+    tail(face_added_, mesh_.face_capacity());
+    // The candidates queued at once: the run queues each green edge its splits make, about 1.7 per
+    // triangle it adds (2.4M on the way to 1.5M triangles on a torus), and hands back the chunks of
+    // each band it works off; 1.5 per triangle of the budget is enough for the most held at once.
+    room.push_back(bands_.reserve(faces + faces / 2));
+    // The longest band: 457k candidates there (30% of the budget).
+    band_list_.reserve(faces / 2);
+    room.push_back(std::as_writable_bytes(std::span(band_list_.data(), band_list_.capacity())));
+    prefault_ = std::make_unique<Prefault>(std::move(room));
 }
 
 // The finest uniform level whose triangles fill at most a quarter of the budget: a budget that could
@@ -331,7 +359,8 @@ void LodDriver::undo_uniform_start() {
     uniform_lowest_.reset();
     const std::vector<VertexId> detail = detail_coarsest_first(mesh_);
     for (auto it = detail.rbegin(); it != detail.rend(); ++it) remove_vertex(mesh_, *it);
-    for (std::vector<Candidate>& band : bands_) std::vector<Candidate>().swap(band);
+    bands_.clear();
+    band_list_.clear();
     queue_ = decltype(queue_)(Lower{this});
     band_next_ = 0;
     band_sorted_ = false;
@@ -345,12 +374,12 @@ void LodDriver::push(const Candidate& c) {
     if (band_sorted_ && band == band_)
         queue_.push(c);
     else
-        bands_[band].push_back(c);
+        bands_.push(band, c);
 }
 
 void LodDriver::face_added(const Mesh&, FaceId f) {
     if (keys_wait_) return;  // the uniform start pushes every edge afterwards
-    if (f.idx >= face_added_.size()) face_added_.resize(std::max<std::size_t>(f.idx + 1, 2 * face_added_.size()), 0);
+    if (f.idx >= face_added_.size()) face_added_.resize(std::max<std::size_t>(f.idx + 1, 2 * face_added_.size()));
     if (face_added_[f.idx]) return;  // a slot freed and taken again within the step
     face_added_[f.idx] = 1;
     added_faces_.push_back(f);
@@ -418,7 +447,7 @@ void LodDriver::undo(const std::vector<VertexId>& vertices) {
 
 // Highest first. A long list in two halves on two cores, then merged (equal candidates are the same
 // edge queued twice, so the order among them does not matter).
-void LodDriver::sort_band(std::vector<Candidate>& band) const {
+void LodDriver::sort_band(ZeroedVector<Candidate>& band) const {
     auto higher = [this](const Candidate& x, const Candidate& y) { return outranks(x, y); };
     const auto middle = band.begin() + static_cast<std::ptrdiff_t>(band.size() / 2);
     if (parallel_blocks(band.size(), 16384) < 2) {
@@ -433,8 +462,9 @@ void LodDriver::sort_band(std::vector<Candidate>& band) const {
 // newcomers, moving down to the next band when both are empty.
 std::optional<LodDriver::Candidate> LodDriver::next_candidate() {
     for (;;) {
-        std::vector<Candidate>& band = bands_[band_];
+        ZeroedVector<Candidate>& band = band_list_;
         if (!band_sorted_) {
+            bands_.take(band_, band);
             sort_band(band);
             band_sorted_ = true;
         }
@@ -456,13 +486,13 @@ std::optional<LodDriver::Candidate> LodDriver::next_candidate() {
             }
             return band[band_next_++];
         }
-        std::vector<Candidate>().swap(band);
+        band.clear();
         band_next_ = 0;
         band_sorted_ = false;
         do {
             if (band_ == 0) return std::nullopt;
             --band_;
-        } while (bands_[band_].empty());
+        } while (bands_.empty(band_));
     }
 }
 
@@ -487,8 +517,9 @@ bool LodDriver::split_next() {
 
 std::size_t LodDriver::pending() const {
     std::size_t n = queue_.size() + doomed_.size();
-    for (std::size_t b = 0; b <= band_ && b < bands_.size(); ++b) n += bands_[b].size();
-    return n - band_next_;
+    for (std::size_t b = 0; b <= band_ && b < bands_.num_bands(); ++b) n += bands_.size(b);
+    if (band_sorted_) n += band_list_.size() - band_next_;
+    return n;
 }
 
 bool LodDriver::step() {

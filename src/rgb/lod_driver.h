@@ -15,16 +15,21 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <queue>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
+#include "rgb/band_lists.h"
 #include "rgb/handles.h"
 #include "rgb/mesh.h"
 #include "rgb/observer.h"
+#include "rgb/prefault.h"
+#include "rgb/zeroed_vector.h"
 
 namespace rgb {
 
@@ -115,12 +120,13 @@ private:
     void push(const Candidate& c);
     void push_new_edges();
     void start_refining();
+    void prefault_room();
     int uniform_start_level() const;
     void refine_uniform_start();
     void undo_uniform_start();
     bool split(const Candidate& c);
     void undo(const std::vector<VertexId>& vertices);
-    void sort_band(std::vector<Candidate>& band) const;
+    void sort_band(ZeroedVector<Candidate>& band) const;
     std::optional<Candidate> next_candidate();
     bool split_next();
 
@@ -128,27 +134,28 @@ private:
     LodSettings settings_;
     glm::dvec3 box_lo_, box_scale_;  // base-space box, for Morton codes
     std::vector<VertexId> doomed_;   // old detail, coarsest first (removed from the back)
-    std::vector<std::uint64_t> vertex_key_;
+    ZeroedVector<std::uint64_t> vertex_key_;
     // Base-space positions by midpoint recursion from the base (a canonical value, cheaper than
     // evaluating each vertex's address), for Morton codes and ties.
-    std::vector<glm::dvec3> base_space_;
+    ZeroedVector<glm::dvec3> base_space_;
     // Per vertex slot: whether its limit is known to be cached (prepare_limit), so that the check
     // costs a byte rather than a probe of the mesh's limit table; and, with the default value on a
     // mesh without sharp features, the limit itself (limit_), read by slot rather than looked up.
-    std::vector<std::uint8_t> limit_known_;
-    std::vector<glm::dvec3> limit_;
+    ZeroedVector<std::uint8_t> limit_known_;
+    ZeroedVector<glm::dvec3> limit_;
     bool plain_edge_length_ = false;  // the value is edge_length and every vertex follows Loop's rules
     // Candidates by band (the key's top 16 bits), worked off band by band in key order: a band's list
     // is sorted once when its turn comes (sequential, cheap), and the few candidates a split adds to
     // the band being worked off wait in a small heap merged with that list. So every split comes in
     // the canonical order and a budget stops at exactly the right one, without a heap over everything.
-    std::vector<std::vector<Candidate>> bands_;
+    BandLists<Candidate> bands_;
+    ZeroedVector<Candidate> band_list_;  // the current band's, once sorted
     std::size_t band_ = 0, band_next_ = 0;
     bool band_sorted_ = false;
     std::priority_queue<Candidate, std::vector<Candidate>, Lower> queue_;
     const Candidate* splitting_ = nullptr;
     std::vector<FaceId> added_faces_;
-    std::vector<std::uint8_t> face_added_;  // per face slot: in added_faces_
+    ZeroedVector<std::uint8_t> face_added_;  // per face slot: in added_faces_
     std::vector<VertexId> added_vertices_;
     std::vector<Edge> new_edges_;
     struct Unkeyed {
@@ -162,6 +169,10 @@ private:
     // wrong), whether it proved wrong, and whether refine_uniform is running (keys wait for its end).
     std::optional<Candidate> uniform_lowest_;
     bool uniform_start_failed_ = false, keys_wait_ = false;
+    // A run with every split wanted reserves room for its budget (face and vertex slots) and has it
+    // faulted in ahead of its writes. The Prefault is last, so that it stops before the arrays go.
+    std::pair<std::size_t, std::size_t> reserved_;
+    std::unique_ptr<Prefault> prefault_;
 };
 
 }  // namespace rgb

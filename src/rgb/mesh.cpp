@@ -163,6 +163,22 @@ void Mesh::reserve(std::size_t faces, std::size_t vertices) {
     up_to(address_, vertices);
 }
 
+std::vector<std::span<std::byte>> Mesh::room_ahead(std::size_t faces, std::size_t vertices) {
+    std::vector<std::span<std::byte>> room;
+    const auto ahead = [&room](auto& v, std::size_t n) {
+        const std::size_t count = std::min(n, v.capacity() - v.size());
+        room.push_back(std::as_writable_bytes(std::span(v.data() + v.size(), count)));
+    };
+    ahead(face_vertices_, faces);
+    ahead(face_code_, faces);
+    ahead(opposite_, 3 * faces);
+    ahead(insertion_position_, vertices);
+    ahead(vertex_halfedge_, vertices);
+    ahead(vertex_info_, vertices);
+    ahead(address_, vertices);
+    return room;
+}
+
 void Mesh::add_observer(MeshObserver* o) { observers_.push_back(o); }
 
 void Mesh::remove_observer(MeshObserver* o) { std::erase(observers_, o); }

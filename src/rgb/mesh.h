@@ -11,6 +11,7 @@
 // This class owns storage and navigation only. The operators (operators.h), refinement (refine.h)
 // and Loop geometry (loop_geometry.h) are free functions on top of it.
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -183,6 +184,9 @@ public:
 
     // Room for this many face and vertex slots, so that a large refinement does not regrow the arrays.
     void reserve(std::size_t faces, std::size_t vertices);
+    // The reserved memory that appending this many face and vertex slots will write first, per array
+    // (for Prefault).
+    std::vector<std::span<std::byte>> room_ahead(std::size_t faces, std::size_t vertices);
 
     // ---- observers ----
     void add_observer(MeshObserver* o);

@@ -1,0 +1,93 @@
+// Prefault and ZeroedVector: memory faulted in on another thread keeps every value written to it,
+// whatever the timing, and ends up resident; arrays that only grow read zero where never written.
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <span>
+#include <vector>
+
+#include <sys/mman.h>
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+
+#include "rgb/prefault.h"
+#include "rgb/zeroed_vector.h"
+
+namespace rgbtest {
+namespace {
+
+// Pages of [p, p + n) that are resident, by mincore.
+std::size_t resident_pages(std::byte* p, std::size_t n) {
+    const auto page = static_cast<std::uintptr_t>(::sysconf(_SC_PAGESIZE));
+    const std::uintptr_t begin = reinterpret_cast<std::uintptr_t>(p) & ~(page - 1);
+    const std::uintptr_t end = (reinterpret_cast<std::uintptr_t>(p) + n + page - 1) & ~(page - 1);
+    std::vector<unsigned char> in_core((end - begin) / page);
+    EXPECT_EQ(::mincore(reinterpret_cast<void*>(begin), end - begin, in_core.data()), 0);
+    std::size_t resident = 0;
+    for (unsigned char c : in_core) resident += c & 1;
+    return resident;
+}
+
+struct Mapping {
+    explicit Mapping(std::size_t size) : size(size) {
+        void* p = ::mmap(nullptr, size, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+        EXPECT_NE(p, MAP_FAILED);
+        bytes = static_cast<std::byte*>(p);
+    }
+    ~Mapping() { ::munmap(bytes, size); }
+    std::span<std::byte> span() const { return {bytes, size}; }
+    std::byte* bytes;
+    std::size_t size;
+};
+
+TEST(Prefault, LeavesRangesResidentAndUnchanged) {
+    constexpr std::size_t kSize = 8u << 20;
+    Mapping a(kSize), b(kSize / 2);
+    a.bytes[12345] = std::byte{7};
+    ASSERT_LT(resident_pages(a.bytes, kSize), 16u);
+    {
+        const rgb::Prefault prefault({a.span(), b.span()});
+        // Joined only at the end of the scope: wait for the pages here as a user of them would not.
+        for (int i = 0; i < 2000 && resident_pages(b.bytes, b.size) * 4096 < b.size; ++i) ::usleep(1000);
+    }
+    EXPECT_EQ(resident_pages(a.bytes, kSize) * 4096, kSize);
+    EXPECT_EQ(resident_pages(b.bytes, b.size) * 4096, b.size);
+    for (std::size_t i = 0; i < kSize; ++i) ASSERT_EQ(a.bytes[i], std::byte(i == 12345 ? 7 : 0)) << i;
+}
+
+// The owner writes while the other thread faults the same pages in: every write stays.
+TEST(Prefault, KeepsWhatTheOwnerWritesMeanwhile) {
+    constexpr std::size_t kSize = 32u << 20;
+    Mapping m(kSize);
+    {
+        const rgb::Prefault prefault({m.span()});
+        for (std::size_t i = 0; i < kSize; i += 1000) m.bytes[i] = std::byte(i / 1000 % 251 + 1);
+    }
+    for (std::size_t i = 0; i < kSize; ++i) ASSERT_EQ(m.bytes[i], i % 1000 ? std::byte{0} : std::byte(i / 1000 % 251 + 1)) << i;
+}
+
+// Empty, tiny and unaligned ranges, and a stop before anything was done.
+TEST(Prefault, TakesAnyRangesAndStopsAtOnce) {
+    Mapping m(4u << 20);
+    { const rgb::Prefault none({}); }
+    { const rgb::Prefault small({m.span().subspan(1, 100), m.span().subspan(3, 0)}); }
+    { const rgb::Prefault unaligned({m.span().subspan(17, m.size - 40)}); }
+    for (std::size_t i = 0; i < m.size; ++i) ASSERT_EQ(m.bytes[i], std::byte{0});
+}
+
+TEST(ZeroedVector, GrowsWithZeros) {
+    rgb::ZeroedVector<std::uint64_t> v;
+    for (std::size_t size : {std::size_t(10), std::size_t(1000), std::size_t(1) << 20, std::size_t(3) << 20}) {
+        const std::size_t old = v.size();
+        for (std::size_t i = 0; i < old; ++i) ASSERT_EQ(v[i], i * 3 + 1);
+        v.resize(size);
+        for (std::size_t i = old; i < size; ++i) ASSERT_EQ(v[i], 0u) << i;
+        for (std::size_t i = 0; i < size; ++i) v[i] = i * 3 + 1;
+    }
+    v.push_back(5);
+    EXPECT_EQ(v.back(), 5u);
+}
+
+}  // namespace
+}  // namespace rgbtest
