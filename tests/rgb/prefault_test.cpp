@@ -33,6 +33,8 @@ struct Mapping {
     explicit Mapping(std::size_t size) : size(size) {
         void* p = ::mmap(nullptr, size, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
         EXPECT_NE(p, MAP_FAILED);
+        // Small pages, so that what one write makes resident does not depend on the system's setting.
+        ::madvise(p, size, MADV_NOHUGEPAGE);
         bytes = static_cast<std::byte*>(p);
     }
     ~Mapping() { ::munmap(bytes, size); }
