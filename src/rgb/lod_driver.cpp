@@ -252,7 +252,7 @@ void LodDriver::start_refining() {
     // The room holds the split that crosses the budget too (undone at once): without it the mesh's
     // arrays doubled for those few faces, a copy of the whole mesh at the last step.
     if (settings_.threshold <= 0.0) {
-        const std::size_t faces = settings_.max_triangles + settings_.max_triangles / 64 + 64;
+        const std::size_t faces = room_for_run();
         const std::size_t vertices = faces / 2 + mesh_.num_vertices();
         reserved_ = {faces, vertices};
         mesh_.reserve(faces, vertices);
@@ -279,6 +279,15 @@ void LodDriver::start_refining() {
         if (keys[i]) push({keys[i], edges[i].a, edges[i].b});
     band_ = bands_.num_bands() - 1;
     while (band_ > 0 && bands_.empty(band_)) --band_;
+}
+
+// Face slots a run with every split wanted may fill, from the base: its budget and the split that
+// crosses it, or, where the level cap binds first, the uniform mesh at the cap (room reserved and
+// faulted in for a budget the run cannot reach would only take memory).
+std::size_t LodDriver::room_for_run() const {
+    const std::size_t budget = settings_.max_triangles + settings_.max_triangles / 64 + 64;
+    if (settings_.max_level >= 16) return budget;
+    return std::min(budget, mesh_.num_faces() << (2 * std::max(settings_.max_level, 0)));
 }
 
 // The room reserved for the run, in the mesh and in the driver's arrays, faulted in on another core

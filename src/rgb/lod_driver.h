@@ -120,6 +120,7 @@ private:
     void push(const Candidate& c);
     void push_new_edges();
     void start_refining();
+    std::size_t room_for_run() const;
     void prefault_room();
     int uniform_start_level() const;
     void refine_uniform_start();

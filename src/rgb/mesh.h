@@ -87,6 +87,8 @@ public:
     std::size_t num_faces() const { return face_count_; }
     std::size_t vertex_capacity() const { return vertex_info_.size(); }
     std::size_t face_capacity() const { return face_code_.size(); }
+    // Face slots the arrays hold without growing (reserve).
+    std::size_t reserved_face_slots() const { return face_code_.capacity(); }
     std::size_t num_base_vertices() const { return base_->num_vertices(); }
     bool is_live(VertexId v) const { return v.idx < vertex_info_.size() && vertex_info_[v.idx] != kDead; }
     bool is_live(FaceId f) const { return f.idx < face_code_.size() && face_code_[f.idx] != kDead; }

@@ -129,6 +129,8 @@ TEST(LodDriver, StopsAtTheLevelCapAndSaysSo) {
     EXPECT_FALSE(capped.budget_bound);
     EXPECT_EQ(mesh.num_faces(), 20u * 16u);  // uniform level 2: every edge is wanted
     EXPECT_EQ(mesh.max_vertex_level(), 2);
+    // Room for what the cap allows, not for a budget of a million.
+    EXPECT_LT(mesh.reserved_face_slots(), 1000u);
     const rgb::LodReport free = run_budget(mesh, 1000);
     EXPECT_FALSE(free.level_cap_bound);
     EXPECT_TRUE(free.budget_bound);
