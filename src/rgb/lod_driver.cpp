@@ -251,10 +251,10 @@ void LodDriver::start_refining() {
     // not regrow on the way (a split adds a vertex per two triangles, one per triangle on a boundary).
     // The room holds the split that crosses the budget too (undone at once): without it the mesh's
     // arrays doubled for those few faces, a copy of the whole mesh at the last step.
+    std::size_t faces = 0, vertices = 0;
     if (settings_.threshold <= 0.0) {
-        const std::size_t faces = room_for_run();
-        const std::size_t vertices = faces / 2 + mesh_.num_vertices();
-        reserved_ = {faces, vertices};
+        faces = room_for_run();
+        vertices = faces / 2 + mesh_.num_vertices();
         mesh_.reserve(faces, vertices);
         // The coarser vertices get their limits cached (finer splits and keys need them): 268k for
         // a budget of 1.5M triangles on a torus, so a quarter of the budget leaves room to spare.
@@ -264,7 +264,7 @@ void LodDriver::start_refining() {
     }
     report_before_start_ = report_;
     if (settings_.uniform_start && settings_.threshold <= 0.0 && !uniform_start_failed_) refine_uniform_start();
-    if (settings_.threshold <= 0.0 && !prefault_) prefault_room();
+    if (settings_.threshold <= 0.0 && !prefault_) prefault_room(faces, vertices);
     std::vector<Edge> edges;
     for (FaceId f : mesh_.faces())
         for (int i = 0; i < 3; ++i) {
@@ -290,10 +290,10 @@ std::size_t LodDriver::room_for_run() const {
     return std::min(budget, mesh_.num_faces() << (2 * std::max(settings_.max_level, 0)));
 }
 
-// The room reserved for the run, in the mesh and in the driver's arrays, faulted in on another core
-// ahead of the splits that fill it (after the uniform start, which has its own and uses all cores).
-void LodDriver::prefault_room() {
-    const auto [faces, vertices] = reserved_;
+// The room reserved for the run (face and vertex slots), in the mesh and in the driver's arrays, and
+// room for its candidates, faulted in on another core ahead of the splits that fill it (after the
+// uniform start, which has its own and uses all cores).
+void LodDriver::prefault_room(std::size_t faces, std::size_t vertices) {
     auto more = [](std::size_t total, std::size_t used) { return total > used ? total - used : 0; };
     std::vector<std::span<std::byte>> room =
         mesh_.room_ahead(more(faces, mesh_.face_capacity()), more(vertices, mesh_.vertex_capacity()));

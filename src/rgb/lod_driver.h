@@ -19,7 +19,6 @@
 #include <optional>
 #include <queue>
 #include <span>
-#include <utility>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -121,7 +120,7 @@ private:
     void push_new_edges();
     void start_refining();
     std::size_t room_for_run() const;
-    void prefault_room();
+    void prefault_room(std::size_t faces, std::size_t vertices);
     int uniform_start_level() const;
     void refine_uniform_start();
     void undo_uniform_start();
@@ -170,9 +169,8 @@ private:
     // wrong), whether it proved wrong, and whether refine_uniform is running (keys wait for its end).
     std::optional<Candidate> uniform_lowest_;
     bool uniform_start_failed_ = false, keys_wait_ = false;
-    // A run with every split wanted reserves room for its budget (face and vertex slots) and has it
-    // faulted in ahead of its writes. The Prefault is last, so that it stops before the arrays go.
-    std::pair<std::size_t, std::size_t> reserved_;
+    // A run with every split wanted has the room it reserved faulted in ahead of its writes. Last, so
+    // that it stops before the arrays go.
     std::unique_ptr<Prefault> prefault_;
 };
 
