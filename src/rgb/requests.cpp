@@ -13,6 +13,7 @@
 #include "rgb/loop_geometry.h"
 #include "rgb/mesh.h"
 #include "rgb/operators.h"
+#include "rgb/prefault.h"
 #include "rgb/refine.h"
 #include "rgb/triangle_geometry.h"
 
@@ -285,12 +286,13 @@ private:
 
 // Room for what the request may add at once (estimated_triangles, an upper estimate), so that a large
 // request does not regrow the arrays on the way (Mesh::reserve grows geometrically, so small requests
-// after one another keep the amortised cost of doubling).
-void reserve_for(Mesh& mesh, const LevelRequest& request) {
+// after one another keep the amortised cost of doubling). Returns the faces it may add.
+std::size_t reserve_for(Mesh& mesh, const LevelRequest& request) {
     const double estimate = estimated_triangles(mesh, request);
-    if (!(estimate > static_cast<double>(mesh.face_capacity()))) return;
+    if (!(estimate > static_cast<double>(mesh.num_faces()))) return 0;
     const std::size_t added = static_cast<std::size_t>(estimate) - mesh.num_faces();
-    mesh.reserve(mesh.num_faces() + added, mesh.num_vertices() + added / 2);
+    if (estimate > static_cast<double>(mesh.face_capacity())) mesh.reserve(mesh.num_faces() + added, mesh.num_vertices() + added / 2);
+    return added;
 }
 
 // Level by level, like uniform refinement: a request for level N is the requests for levels 1..N in
@@ -305,7 +307,10 @@ void refine_region(Mesh& mesh, const LevelRequest& request, RequestLog& log, std
     for (const LevelBand& band : request.taper) finest = std::max(finest, band.level);
     std::vector<FaceId> pending =
         known ? std::move(*known) : region_faces(mesh, bands.outer(), starting_faces(mesh, bands.outer(), request));
-    reserve_for(mesh, request);
+    // A large request has its room faulted in on another core ahead of the splits (a brush dab's is
+    // too small for that to pay, and Prefault leaves it).
+    const std::size_t added = reserve_for(mesh, request);
+    const Prefault room_ahead(mesh.room_ahead(added, added / 2));
     std::vector<FaceId> stack, next;
     for (int pass = 1; pass <= finest && !pending.empty(); ++pass) {
         // In slot order (the stack pops from the back), as uniform refinement sweeps: a split's new
