@@ -8,7 +8,7 @@ namespace rgb {
 std::size_t LimitCache::slot_in_new(std::uint32_t vertex) const {
     const std::size_t n = entries_.size();
     for (std::size_t i = home(vertex, n);; i = next(i, n)) {
-        if (entries_[i].key == vertex) return i;
+        if (entries_[i].key == key_of(vertex)) return i;
         // Never at 7/8 full when the key is there: an empty slot ends its probe run.
         if (entries_[i].key == kEmpty) return n;
     }
@@ -16,7 +16,7 @@ std::size_t LimitCache::slot_in_new(std::uint32_t vertex) const {
 
 std::size_t LimitCache::slot_in_old(std::uint32_t vertex) const {
     std::size_t i = home(vertex, moving_.size());
-    while (moving_[i].key != vertex) i = next(i, moving_.size());
+    while (moving_[i].key != key_of(vertex)) i = next(i, moving_.size());
     return i;
 }
 
@@ -36,7 +36,7 @@ void LimitCache::insert(std::uint32_t vertex, const glm::dvec3& limit) {
 void LimitCache::place(std::uint32_t vertex, double x, double y, double z) {
     std::size_t i = home(vertex, entries_.size());
     while (entries_[i].key != kEmpty) i = next(i, entries_.size());
-    entries_[i] = {vertex, x, y, z};
+    entries_[i] = {key_of(vertex), x, y, z};
 }
 
 void LimitCache::erase(std::uint32_t vertex) {
@@ -52,7 +52,7 @@ void LimitCache::erase(std::uint32_t vertex) {
 void LimitCache::erase_slot(std::size_t i) {
     const std::size_t n = entries_.size();
     for (std::size_t j = next(i, n); entries_[j].key != kEmpty; j = next(j, n)) {
-        const std::size_t h = home(entries_[j].key, n);
+        const std::size_t h = home(entries_[j].key - 1, n);
         // Entry j may fill the hole at i unless its home lies cyclically in (i, j].
         const bool home_between = i <= j ? (h > i && h <= j) : (h > i || h <= j);
         if (!home_between) {
@@ -78,7 +78,7 @@ void LimitCache::reserve(std::size_t entries) {
 }
 
 void LimitCache::start_moving_into(std::size_t slots) {
-    moving_ = std::exchange(entries_, std::vector<Entry>(slots));
+    moving_ = std::exchange(entries_, ZeroedVector<Entry>(slots));
     moved_ = 0;
 }
 
@@ -88,11 +88,11 @@ void LimitCache::move_some(std::size_t slots) {
     for (; moved_ < end; ++moved_) {
         Entry& e = moving_[moved_];
         if (e.key == kEmpty || e.key == kGone) continue;
-        place(e.key, e.x, e.y, e.z);
+        place(e.key - 1, e.x, e.y, e.z);
         e.key = kGone;
     }
     if (moved_ == moving_.size()) {
-        std::vector<Entry>().swap(moving_);
+        ZeroedVector<Entry>().swap(moving_);
         moved_ = 0;
     }
 }

@@ -171,7 +171,7 @@ private:
     bool uniform_start_failed_ = false, keys_wait_ = false;
     // A run with every split wanted has the room it reserved faulted in ahead of its writes. Last, so
     // that it stops before the arrays go.
-    std::unique_ptr<Prefault> prefault_;
+    std::unique_ptr<Prefault> prefault_, limit_prefault_;
 };
 
 }  // namespace rgb

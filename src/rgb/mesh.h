@@ -216,6 +216,8 @@ public:
     // Room for `count` cached limits in all, made at once (a growth moves the entries a few at a time
     // over later inserts, each a cache miss): for a caller that knows about how many it will cache.
     void reserve_limits(std::size_t count) const { limits_.reserve(count); }
+    // The table of limits' memory, to be faulted in ahead (Prefault) while it is still untouched.
+    std::span<std::byte> limit_table() const { return limits_.table(); }
     // Delete `old_faces` (and the listed vertices, which must be used by no new face), add `added` (in
     // slot next_vertex_slot()) and create `new_faces` over the same region. Adjacency with the outside
     // is rebuilt by matching edges. Observers hear of it in the order observer.h states. Returns the
