@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
+
+#include <dlfcn.h>
 
 // <GL/osmesa.h> needs the GLAPI macros that <glad/gl.h> provides (toolchain.md, pitfall 6).
 #include <glad/gl.h>
@@ -12,6 +15,36 @@ namespace render {
 namespace {
 
 OSMesaContext as_osmesa(void* context) { return static_cast<OSMesaContext>(context); }
+
+// libOSMesa, opened on first use rather than linked: linking loads it, and the LLVM it pulls in,
+// into every run of the CLI, which cost 70 ms of each command's start (most commands draw nothing).
+// It stays loaded for the life of the process, as a linked library would.
+struct OsmesaLibrary {
+    decltype(&OSMesaCreateContextAttribs) create_context_attribs = nullptr;
+    decltype(&OSMesaDestroyContext) destroy_context = nullptr;
+    decltype(&OSMesaMakeCurrent) make_current = nullptr;
+    decltype(&OSMesaGetProcAddress) get_proc_address = nullptr;
+};
+
+const OsmesaLibrary& osmesa() {
+    static const OsmesaLibrary library = [] {
+        void* handle = nullptr;
+        for (const char* name : {"libOSMesa.so.8", "libOSMesa.so"})
+            if ((handle = dlopen(name, RTLD_NOW | RTLD_LOCAL)) != nullptr) break;
+        if (handle == nullptr) throw std::runtime_error(std::string("cannot load OSMesa (libOSMesa.so.8): ") + dlerror());
+        OsmesaLibrary l;
+        auto find = [handle](auto& function, const char* name) {
+            if ((function = reinterpret_cast<std::remove_reference_t<decltype(function)>>(dlsym(handle, name))) == nullptr)
+                throw std::runtime_error(std::string("libOSMesa has no ") + name);
+        };
+        find(l.create_context_attribs, "OSMesaCreateContextAttribs");
+        find(l.destroy_context, "OSMesaDestroyContext");
+        find(l.make_current, "OSMesaMakeCurrent");
+        find(l.get_proc_address, "OSMesaGetProcAddress");
+        return l;
+    }();
+    return library;
+}
 
 }  // namespace
 
@@ -30,20 +63,20 @@ OffscreenContext::OffscreenContext(int width, int height) : width_(width), heigh
         throw std::runtime_error("offscreen size must be positive, got " + std::to_string(width) + "x" + std::to_string(height));
     const int attributes[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24, OSMESA_PROFILE, OSMESA_CORE_PROFILE,
                               OSMESA_CONTEXT_MAJOR_VERSION, 3, OSMESA_CONTEXT_MINOR_VERSION, 3, 0};
-    context_ = OSMesaCreateContextAttribs(attributes, nullptr);
+    context_ = osmesa().create_context_attribs(attributes, nullptr);
     if (context_ == nullptr) throw std::runtime_error("OSMesa could not create an OpenGL 3.3 core context");
     buffer_.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
     make_current();
-    if (gladLoadGL(reinterpret_cast<GLADloadfunc>(OSMesaGetProcAddress)) == 0) {
-        OSMesaDestroyContext(as_osmesa(context_));
+    if (gladLoadGL(reinterpret_cast<GLADloadfunc>(osmesa().get_proc_address)) == 0) {
+        osmesa().destroy_context(as_osmesa(context_));
         throw std::runtime_error("could not load OpenGL 3.3 entry points from OSMesa");
     }
 }
 
-OffscreenContext::~OffscreenContext() { OSMesaDestroyContext(as_osmesa(context_)); }
+OffscreenContext::~OffscreenContext() { osmesa().destroy_context(as_osmesa(context_)); }
 
 void OffscreenContext::make_current() {
-    if (OSMesaMakeCurrent(as_osmesa(context_), buffer_.data(), GL_UNSIGNED_BYTE, width_, height_) == 0)
+    if (osmesa().make_current(as_osmesa(context_), buffer_.data(), GL_UNSIGNED_BYTE, width_, height_) == 0)
         throw std::runtime_error("OSMesaMakeCurrent failed");
 }
 
