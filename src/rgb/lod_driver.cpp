@@ -269,6 +269,7 @@ void LodDriver::start_refining() {
     if (settings_.uniform_start && settings_.threshold <= 0.0 && !uniform_start_failed_) refine_uniform_start();
     if (settings_.threshold <= 0.0 && !prefault_) prefault_room(faces, vertices);
     std::vector<Edge> edges;
+    edges.reserve(3 * mesh_.num_faces() / 2);  // a closed mesh's edges: no regrowth (and its page faults)
     for (FaceId f : mesh_.faces())
         for (int i = 0; i < 3; ++i) {
             const HalfedgeId h = Mesh::halfedge(f, i);
