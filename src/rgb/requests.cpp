@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -307,10 +308,13 @@ void refine_region(Mesh& mesh, const LevelRequest& request, RequestLog& log, std
     for (const LevelBand& band : request.taper) finest = std::max(finest, band.level);
     std::vector<FaceId> pending =
         known ? std::move(*known) : region_faces(mesh, bands.outer(), starting_faces(mesh, bands.outer(), request));
-    // A large request has its room faulted in on another core ahead of the splits (a brush dab's is
-    // too small for that to pay, and Prefault leaves it).
+    // A large request has its room faulted in on another core ahead of the splits. Not a small one (a
+    // brush dab, an editor frame's piece of a request): its splits take a few milliseconds, which a
+    // thread's start and a join within a step of faulting would eat into.
     const std::size_t added = reserve_for(mesh, request);
-    const Prefault room_ahead(mesh.room_ahead(added, added / 2));
+    constexpr std::size_t kFacesWorthFaultingAhead = 1 << 17;
+    std::optional<Prefault> room_ahead;
+    if (added >= kFacesWorthFaultingAhead) room_ahead.emplace(mesh.room_ahead(added, added / 2));
     std::vector<FaceId> stack, next;
     for (int pass = 1; pass <= finest && !pending.empty(); ++pass) {
         // In slot order (the stack pops from the back), as uniform refinement sweeps: a split's new
