@@ -119,14 +119,14 @@ std::uint64_t LodDriver::edge_key(VertexId a, VertexId b, int level) {
     return key;
 }
 
-// The keys of many edges of the mesh as it is: one by one with a criterion of the caller's (which
-// may keep caches); with the default value, the limits the keys need learnt first, then the keys,
-// which then only read, on all cores.
-std::vector<std::uint64_t> LodDriver::edge_keys(std::span<const Edge> edges) {
-    std::vector<std::uint64_t> keys(edges.size());
+// The keys of many edges of the mesh as it is, into `keys` (a caller's array, reused): one by one
+// with a criterion of the caller's (which may keep caches); with the default value, the limits the
+// keys need learnt first, then the keys, which then only read, on all cores.
+void LodDriver::edge_keys(std::span<const Edge> edges, std::vector<std::uint64_t>& keys) {
+    keys.assign(edges.size(), 0);
     if (!plain_edge_length_) {
         for (std::size_t i = 0; i < edges.size(); ++i) keys[i] = edge_key(edges[i].a, edges[i].b, edges[i].level);
-        return keys;
+        return;
     }
     for (const Edge& e : edges) {
         if (std::min(key_of(e.a), key_of(e.b)) == 0) continue;  // no value needed, as in edge_key
@@ -145,7 +145,6 @@ std::vector<std::uint64_t> LodDriver::edge_keys(std::span<const Edge> edges) {
         capped[block] = level_capped;
     });
     if (std::find(capped.begin(), capped.end(), 1) != capped.end()) report_.level_cap_bound = true;
-    return keys;
 }
 
 // Only reads, so that keys can be computed on several threads.
@@ -266,11 +265,21 @@ void LodDriver::start_refining() {
         face_added_.resize(std::max(face_added_.size(), faces));
     }
     report_before_start_ = report_;
-    if (settings_.uniform_start && settings_.threshold <= 0.0 && !uniform_start_failed_) refine_uniform_start();
     if (settings_.threshold <= 0.0 && !prefault_) prefault_room(faces, vertices);
+    if (settings_.uniform_start && settings_.threshold <= 0.0 && !uniform_start_failed_) refine_uniform_start();
+    // The green edges keyed and queued a block at a time, so that the lists stay small and in cache
+    // (for the whole mesh they were megabytes of fresh memory: a page fault per 4 KiB written).
+    constexpr std::size_t kEdgesPerBlock = 1 << 15;
     std::vector<Edge> edges;
-    edges.reserve(3 * mesh_.num_faces() / 2);  // a closed mesh's edges: no regrowth (and its page faults)
-    for (FaceId f : mesh_.faces())
+    std::vector<std::uint64_t> keys;
+    edges.reserve(kEdgesPerBlock + 3);
+    auto key_and_push = [&] {
+        edge_keys(edges, keys);
+        for (std::size_t i = 0; i < edges.size(); ++i)
+            if (keys[i]) push({keys[i], edges[i].a, edges[i].b});
+        edges.clear();
+    };
+    for (FaceId f : mesh_.faces()) {
         for (int i = 0; i < 3; ++i) {
             const HalfedgeId h = Mesh::halfedge(f, i);
             const HalfedgeId o = mesh_.opposite(h);
@@ -278,9 +287,9 @@ void LodDriver::start_refining() {
             const EdgeType t = mesh_.edge_type(h);
             if (t.colour == Colour::Green) edges.push_back({mesh_.from_vertex(h), mesh_.to_vertex(h), t.level});
         }
-    const std::vector<std::uint64_t> keys = edge_keys(edges);
-    for (std::size_t i = 0; i < edges.size(); ++i)
-        if (keys[i]) push({keys[i], edges[i].a, edges[i].b});
+        if (edges.size() >= kEdgesPerBlock) key_and_push();
+    }
+    key_and_push();
     band_ = bands_.num_bands() - 1;
     while (band_ > 0 && bands_.empty(band_)) --band_;
 }
@@ -349,7 +358,8 @@ void LodDriver::refine_uniform_start() {
         std::vector<Edge> parents;
         for (std::size_t i = first; i < unkeyed_.size() && mesh_.level(unkeyed_[i].v) - 1 == parent_level; ++i)
             parents.push_back({unkeyed_[i].a, unkeyed_[i].b, parent_level});
-        const std::vector<std::uint64_t> keys = edge_keys(parents);
+        std::vector<std::uint64_t> keys;
+        edge_keys(parents, keys);
         for (std::size_t i = 0; i < keys.size(); ++i) {
             const Unkeyed& n = unkeyed_[first + i];
             vertex_key_[n.v.idx] = keys[i];

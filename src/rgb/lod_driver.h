@@ -104,7 +104,7 @@ private:
         int level;
     };
     std::uint64_t edge_key(VertexId a, VertexId b, int level);
-    std::vector<std::uint64_t> edge_keys(std::span<const Edge> edges);
+    void edge_keys(std::span<const Edge> edges, std::vector<std::uint64_t>& keys);
     std::uint64_t key_from_value(VertexId a, VertexId b, int level, double value, bool& level_capped) const;
     double plain_edge_length(VertexId a, VertexId b, int level) const;
     std::uint64_t key_of(VertexId v) const { return v.idx < vertex_key_.size() ? vertex_key_[v.idx] : 0; }
