@@ -304,8 +304,9 @@ std::size_t LodDriver::room_for_run() const {
 }
 
 // The room reserved for the run (face and vertex slots), in the mesh and in the driver's arrays, and
-// room for its candidates, faulted in on another core ahead of the splits that fill it (after the
-// uniform start, which has its own and uses all cores).
+// room for its candidates, faulted in on another core ahead of the splits that fill it. Before the
+// uniform start, whose new vertices fill the driver's arrays too (refine_uniform faults in the mesh's
+// part as well: the second pass over those pages finds them present).
 void LodDriver::prefault_room(std::size_t faces, std::size_t vertices) {
     auto more = [](std::size_t total, std::size_t used) { return total > used ? total - used : 0; };
     std::vector<std::span<std::byte>> room =
