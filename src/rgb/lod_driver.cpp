@@ -322,10 +322,12 @@ void LodDriver::prefault_room(std::size_t faces, std::size_t vertices) {
     tail(face_added_, mesh_.face_capacity());
     // The candidates queued at once: the run queues each green edge its splits make, about 1.7 per
     // triangle it adds (2.4M on the way to 1.5M triangles on a torus), and hands back the chunks of
-    // each band it works off; 1.5 per triangle of the budget is enough for the most held at once.
-    room.push_back(bands_.reserve(faces + faces / 2));
-    // The longest band: 457k candidates there (30% of the budget).
-    band_list_.reserve(faces / 2);
+    // each band it works off; at most 1.0 per triangle of the budget are held at once there (1.51M),
+    // so 1.25 leaves room to spare without faulting in pages never used (a third of the pool was).
+    // More than that grows the pool, whose new chunks then fault in as they are written.
+    room.push_back(bands_.reserve(faces + faces / 4));
+    // The longest band: 457k candidates there (30% of the budget); a longer one grows the list.
+    band_list_.reserve(faces * 2 / 5);
     room.push_back(std::as_writable_bytes(std::span(band_list_.data(), band_list_.capacity())));
     prefault_ = std::make_unique<Prefault>(std::move(room));
 }
