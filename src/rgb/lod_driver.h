@@ -169,8 +169,8 @@ private:
     // wrong), whether it proved wrong, and whether refine_uniform is running (keys wait for its end).
     std::optional<Candidate> uniform_lowest_;
     bool uniform_start_failed_ = false, keys_wait_ = false;
-    // A run with every split wanted has the room it reserved faulted in ahead of its writes. Last, so
-    // that it stops before the arrays go.
+    // A run with every split wanted has the room it reserved, and the mesh's table of limits, faulted
+    // in ahead of its writes. Last, so that they stop before the arrays go.
     std::unique_ptr<Prefault> prefault_, limit_prefault_;
 };
 
