@@ -1,7 +1,10 @@
 // The limit cache against a plain map: every present key finds its value through growths, while the
 // entries move from the table grown from a few at a time, and after erasures in both tables.
+#include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <random>
+#include <span>
 #include <unordered_map>
 #include <vector>
 
@@ -93,6 +96,24 @@ TEST(LimitCache, ReservedTableTakesItsCountWithoutGrowing) {
     EXPECT_EQ(cache.memory_bytes(), 28u * 1152);
     cache.insert(1000, value_of(1000));  // 8 x 1001 <= 7 x 1152: the room left is the rounding's
     EXPECT_EQ(cache.memory_bytes(), 28u * 1152);
+}
+
+// The table's memory, which the LOD driver faults in ahead, is the whole table; an empty slot is all
+// zero bytes (so a new table is calloc's untouched memory), and the encoding that makes it so takes
+// every vertex id a mesh can have, the highest included (the two ids above it are never vertices).
+TEST(LimitCache, TableMemoryIsTheWholeTableAndZeroWhenEmpty) {
+    rgb::LimitCache cache;
+    cache.reserve(1000);
+    const std::span<std::byte> table = cache.table();
+    EXPECT_EQ(table.size(), 28u * 1152);
+    EXPECT_TRUE(std::all_of(table.begin(), table.end(), [](std::byte b) { return b == std::byte{0}; }));
+    const std::uint32_t highest = 0xfffffffdu;
+    for (std::uint32_t k : {0u, 1u, highest}) cache.insert(k, value_of(k));
+    for (std::uint32_t k : {0u, 1u, highest}) EXPECT_EQ(cache.find(k), value_of(k)) << "key " << k;
+    cache.erase(highest);
+    cache.erase(0);
+    EXPECT_EQ(cache.find(1), value_of(1));
+    EXPECT_EQ(cache.size(), 1u);
 }
 
 }  // namespace
