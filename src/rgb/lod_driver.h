@@ -170,7 +170,9 @@ private:
     std::optional<Candidate> uniform_lowest_;
     bool uniform_start_failed_ = false, keys_wait_ = false;
     // A run with every split wanted has the room it reserved, and the mesh's table of limits, faulted
-    // in ahead of its writes. Last, so that they stop before the arrays go.
+    // in ahead of its writes. Two threads: the room fills front to back, all ranges in step, but the
+    // table all over at once (the uniform start's limits), so it cannot wait its turn among them.
+    // Last, so that they stop before the arrays go.
     std::unique_ptr<Prefault> prefault_, limit_prefault_;
 };
 
