@@ -3,7 +3,8 @@
 // one at a time and taken whole, a band at a time. Items live in fixed chunks from a shared pool, and
 // the chunks of a band taken go back to the pool: the memory the lists touch is about the most they
 // hold at once, not the sum of every list's doublings, and a run that knows how many it will hold can
-// have that room faulted in ahead (reserve).
+// have that room faulted in ahead (reserve). Only the bands used have a list: a run touches a dozen of
+// its 65536 bands, whose list headers written at once were 2 MiB of page faults.
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
@@ -17,12 +18,13 @@ namespace rgb {
 template <class Item>
 class BandLists {
 public:
-    explicit BandLists(std::size_t bands) : bands_(bands) {}
+    explicit BandLists(std::size_t bands) : list_of_band_(bands) {}
 
-    std::size_t num_bands() const { return bands_.size(); }
-    bool empty(std::size_t band) const { return bands_[band].chunks.empty(); }
+    std::size_t num_bands() const { return list_of_band_.size(); }
+    bool empty(std::size_t band) const { return size(band) == 0; }
     std::size_t size(std::size_t band) const {
-        const Band& b = bands_[band];
+        if (list_of_band_[band] == 0) return 0;
+        const Band& b = lists_[list_of_band_[band] - 1];
         return b.chunks.empty() ? 0 : (b.chunks.size() - 1) * kChunk + b.fill;
     }
 
@@ -34,7 +36,7 @@ public:
     }
 
     void push(std::size_t band, const Item& item) {
-        Band& b = bands_[band];
+        Band& b = list(band);
         if (b.fill == kChunk) {
             b.chunks.push_back(new_chunk());
             b.fill = 0;
@@ -55,8 +57,9 @@ public:
     // The band's items, in the order pushed, into `out` (replacing what it held); the band is empty after.
     template <class Vector>
     void take(std::size_t band, Vector& out) {
-        Band& b = bands_[band];
         out.clear();
+        if (list_of_band_[band] == 0) return;
+        Band& b = lists_[list_of_band_[band] - 1];
         out.reserve(size(band));
         for (std::size_t i = 0; i < b.chunks.size(); ++i) {
             const std::size_t n = i + 1 < b.chunks.size() ? kChunk : b.fill;
@@ -67,9 +70,9 @@ public:
     }
 
     void clear() {
-        for (std::size_t band = 0; band < bands_.size(); ++band) {
-            for (Item* chunk : bands_[band].chunks) free_.push_back(chunk);
-            bands_[band] = Band();
+        for (Band& b : lists_) {
+            for (Item* chunk : b.chunks) free_.push_back(chunk);
+            b = Band();
         }
     }
 
@@ -81,6 +84,16 @@ private:
         std::vector<Item*> chunks;
         std::uint32_t fill = kChunk;  // items in the last chunk; kChunk when there is none
     };
+
+    // The band's list, made at its first push (an index of 0 means none).
+    Band& list(std::size_t band) {
+        std::uint32_t& index = list_of_band_[band];
+        if (index == 0) {
+            lists_.emplace_back();
+            index = static_cast<std::uint32_t>(lists_.size());
+        }
+        return lists_[index - 1];
+    }
 
     Item* new_chunk() {
         if (free_.empty()) add_block(std::max<std::size_t>(16, blocks_.size() * 16));
@@ -95,7 +108,8 @@ private:
         for (std::size_t i = chunks; i-- > 0;) free_.push_back(block.data() + i * kChunk);
     }
 
-    std::vector<Band> bands_;
+    ZeroedVector<std::uint32_t> list_of_band_;  // 1 + the index of the band's list in lists_, or 0
+    std::vector<Band> lists_;
     std::vector<ZeroedVector<Item>> blocks_;
     std::vector<Item*> free_;
 };

@@ -74,14 +74,20 @@ LodDriver::LodDriver(Mesh& mesh, LodSettings settings)
     // caller's, or sharp features (whose vertices need no limit for some values), take the general way.
     const auto* value = settings_.value.target<double (*)(const Mesh&, VertexId, VertexId, int)>();
     plain_edge_length_ = value && *value == &edge_length && !base.has_sharp_features();
-    grow_vertex_arrays(mesh_.vertex_capacity());
-    std::fill(vertex_key_.begin(), vertex_key_.begin() + base.num_vertices(), kBaseKey);
-    for (std::uint32_t v = 0; v < base.num_vertices(); ++v) base_space_[v] = base.position(v);
     face_added_.resize(mesh_.face_capacity());
     mesh_.add_observer(this);
 }
 
 LodDriver::~LodDriver() { mesh_.remove_observer(this); }
+
+// Once the old detail is gone, the per-vertex arrays, at the size the run needs (grown later, they
+// would copy themselves), and the base vertices' entries.
+void LodDriver::key_base_vertices(std::size_t vertices) {
+    const BaseMesh& base = mesh_.base();
+    grow_vertex_arrays(std::max(vertices, mesh_.vertex_capacity()));
+    std::fill(vertex_key_.begin(), vertex_key_.begin() + base.num_vertices(), kBaseKey);
+    for (std::uint32_t v = 0; v < base.num_vertices(); ++v) base_space_[v] = base.position(v);
+}
 
 // New slots start unkeyed, with no limit known.
 void LodDriver::grow_vertex_arrays(std::size_t size) {
@@ -261,9 +267,9 @@ void LodDriver::start_refining() {
         // The start's limits then land all over the table: its pages are faulted in on another core
         // meanwhile (33 ms of the main thread's time at 1.5M on a machine with slow page faults).
         limit_prefault_ = std::make_unique<Prefault>(std::vector{mesh_.limit_table()});
-        grow_vertex_arrays(vertices);
         face_added_.resize(std::max(face_added_.size(), faces));
     }
+    key_base_vertices(vertices);
     report_before_start_ = report_;
     if (settings_.threshold <= 0.0 && !prefault_) prefault_room(faces, vertices);
     if (settings_.uniform_start && settings_.threshold <= 0.0 && !uniform_start_failed_) refine_uniform_start();
@@ -327,8 +333,10 @@ void LodDriver::prefault_room(std::size_t faces, std::size_t vertices) {
     // More than that grows the pool, whose new chunks then fault in as they are written.
     room.push_back(bands_.reserve(faces + faces / 4));
     // The longest band: 457k candidates there (30% of the budget); a longer one grows the list.
-    band_list_.reserve(faces * 2 / 5);
-    room.push_back(std::as_writable_bytes(std::span(band_list_.data(), band_list_.capacity())));
+    for (ZeroedVector<Candidate>* list : {&band_list_, &merged_}) {
+        list->reserve(faces * 2 / 5);
+        room.push_back(std::as_writable_bytes(std::span(list->data(), list->capacity())));
+    }
     prefault_ = std::make_unique<Prefault>(std::move(room));
 }
 
@@ -473,7 +481,7 @@ void LodDriver::undo(const std::vector<VertexId>& vertices) {
 
 // Highest first. A long list in two halves on two cores, then merged (equal candidates are the same
 // edge queued twice, so the order among them does not matter).
-void LodDriver::sort_band(ZeroedVector<Candidate>& band) const {
+void LodDriver::sort_band(ZeroedVector<Candidate>& band) {
     auto higher = [this](const Candidate& x, const Candidate& y) { return outranks(x, y); };
     const auto middle = band.begin() + static_cast<std::ptrdiff_t>(band.size() / 2);
     if (parallel_blocks(band.size(), 16384) < 2) {
@@ -481,7 +489,11 @@ void LodDriver::sort_band(ZeroedVector<Candidate>& band) const {
         return;
     }
     parallel_invoke([&] { std::sort(band.begin(), middle, higher); }, [&] { std::sort(middle, band.end(), higher); });
-    std::inplace_merge(band.begin(), middle, band.end(), higher);
+    // Merged into an array of the driver's rather than in place: inplace_merge takes a buffer of
+    // half the band from the heap each time, megabytes of fresh pages.
+    merged_.resize(band.size());
+    std::merge(band.begin(), middle, middle, band.end(), merged_.begin(), higher);
+    band.swap(merged_);
 }
 
 // The highest candidate left: the next of the current band's sorted list or of the band's heap of

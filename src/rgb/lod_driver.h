@@ -113,6 +113,7 @@ private:
     void learn_limit(VertexId v);
     void learn_uniform_limits(int level);
     glm::dvec3 known_control_point(VertexId v, int level) const;
+    void key_base_vertices(std::size_t vertices);
     void grow_vertex_arrays(std::size_t size);
     void clear_added_faces();
     void key_new_vertices();
@@ -126,7 +127,7 @@ private:
     void undo_uniform_start();
     bool split(const Candidate& c);
     void undo(const std::vector<VertexId>& vertices);
-    void sort_band(ZeroedVector<Candidate>& band) const;
+    void sort_band(ZeroedVector<Candidate>& band);
     std::optional<Candidate> next_candidate();
     bool split_next();
 
@@ -150,6 +151,7 @@ private:
     // the canonical order and a budget stops at exactly the right one, without a heap over everything.
     BandLists<Candidate> bands_;
     ZeroedVector<Candidate> band_list_;  // the current band's, once sorted
+    ZeroedVector<Candidate> merged_;     // where a long band's sorted halves are merged
     std::size_t band_ = 0, band_next_ = 0;
     bool band_sorted_ = false;
     std::priority_queue<Candidate, std::vector<Candidate>, Lower> queue_;
