@@ -84,6 +84,9 @@ AtomicFileWriter::AtomicFileWriter(const std::string& path)
     } else if (::fchmod(fd, 0666 & ~current_umask()) != 0) {  // mkstemp made it 0600
         fail(named_, "cannot set permissions", errno);
     }
+    // At its full size at once, with room for the record that crosses it: grown by doubling, the
+    // buffer took fresh pages at each step (twice its size in page faults).
+    buffer_.reserve(kBufferBytes + kRecordRoom);
 }
 
 AtomicFileWriter::~AtomicFileWriter() = default;

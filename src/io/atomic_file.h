@@ -29,6 +29,8 @@ class AtomicFileWriter {
 public:
     // Write out the buffer once it holds this much: a few large writes, little memory.
     static constexpr std::size_t kBufferBytes = std::size_t{4} << 20;
+    // What a record appended past kBufferBytes before flush_if_full usually needs.
+    static constexpr std::size_t kRecordRoom = std::size_t{64} << 10;
 
     // Resolves the target and creates the temporary file. Throws SaveError.
     explicit AtomicFileWriter(const std::string& path);
