@@ -49,7 +49,7 @@ public:
 private:
 #pragma pack(push, 4)
     // 28 bytes rather than 32: the doubles need no 8-byte alignment on the targets we build for.
-    // The key is the vertex + 1, so that an empty slot is all zeros: a new table comes from calloc
+    // The key is the vertex + 1, so that an empty slot is all zeros: a new table comes from fresh pages
     // untouched rather than written through (12 MB for a budget of 1.5M triangles).
     struct Entry {
         std::uint32_t key = kEmpty;
