@@ -479,21 +479,23 @@ void LodDriver::undo(const std::vector<VertexId>& vertices) {
         if (mesh_.is_live(*it)) remove_with_dependents(mesh_, *it);
 }
 
-// Highest first. A long list in two halves on two cores, then merged (equal candidates are the same
-// edge queued twice, so the order among them does not matter).
-void LodDriver::sort_band(ZeroedVector<Candidate>& band) {
+// The current band's list, highest first. A long list in two halves on two cores, then merged into
+// the driver's second list, which the two then swap (equal candidates are the same edge queued
+// twice, so the order among them does not matter).
+void LodDriver::sort_band_list() {
     auto higher = [this](const Candidate& x, const Candidate& y) { return outranks(x, y); };
-    const auto middle = band.begin() + static_cast<std::ptrdiff_t>(band.size() / 2);
-    if (parallel_blocks(band.size(), 16384) < 2) {
-        std::sort(band.begin(), band.end(), higher);
+    const auto middle = band_list_.begin() + static_cast<std::ptrdiff_t>(band_list_.size() / 2);
+    if (parallel_blocks(band_list_.size(), 16384) < 2) {
+        std::sort(band_list_.begin(), band_list_.end(), higher);
         return;
     }
-    parallel_invoke([&] { std::sort(band.begin(), middle, higher); }, [&] { std::sort(middle, band.end(), higher); });
-    // Merged into an array of the driver's rather than in place: inplace_merge takes a buffer of
-    // half the band from the heap each time, megabytes of fresh pages.
-    merged_.resize(band.size());
-    std::merge(band.begin(), middle, middle, band.end(), merged_.begin(), higher);
-    band.swap(merged_);
+    parallel_invoke([&] { std::sort(band_list_.begin(), middle, higher); },
+                    [&] { std::sort(middle, band_list_.end(), higher); });
+    // Not in place: inplace_merge takes a buffer of half the band from the heap each time, megabytes
+    // of fresh pages; the second list was reserved and faulted in with the first.
+    merged_.resize(band_list_.size());
+    std::merge(band_list_.begin(), middle, middle, band_list_.end(), merged_.begin(), higher);
+    band_list_.swap(merged_);
 }
 
 // The highest candidate left: the next of the current band's sorted list or of the band's heap of
@@ -503,7 +505,7 @@ std::optional<LodDriver::Candidate> LodDriver::next_candidate() {
         ZeroedVector<Candidate>& band = band_list_;
         if (!band_sorted_) {
             bands_.take(band_, band);
-            sort_band(band);
+            sort_band_list();
             band_sorted_ = true;
         }
         const bool listed = band_next_ < band.size();

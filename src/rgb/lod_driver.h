@@ -127,7 +127,7 @@ private:
     void undo_uniform_start();
     bool split(const Candidate& c);
     void undo(const std::vector<VertexId>& vertices);
-    void sort_band(ZeroedVector<Candidate>& band);
+    void sort_band_list();
     std::optional<Candidate> next_candidate();
     bool split_next();
 

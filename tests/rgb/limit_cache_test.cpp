@@ -99,7 +99,7 @@ TEST(LimitCache, ReservedTableTakesItsCountWithoutGrowing) {
 }
 
 // The table's memory, which the LOD driver faults in ahead, is the whole table; an empty slot is all
-// zero bytes (so a new table is calloc's untouched memory), and the encoding that makes it so takes
+// zero bytes (so a new table is untouched fresh memory), and the encoding that makes it so takes
 // every vertex id a mesh can have, the highest included (the two ids above it are never vertices).
 TEST(LimitCache, TableMemoryIsTheWholeTableAndZeroWhenEmpty) {
     rgb::LimitCache cache;
