@@ -163,13 +163,19 @@ void write_obj(const rgb::Mesh& mesh, const SaveOptions& options, const std::str
         out += 'f';
         const rgb::FaceId f = order.faces[i];
         for (int c = 0; c < 3; ++c) {
-            const std::string index = std::to_string(std::size_t(obj_index[mesh.face_vertices(f)[c].idx]) + 1);
+            const std::uint64_t index = std::uint64_t(obj_index[mesh.face_vertices(f)[c].idx]) + 1;
             std::uint32_t uv = kNoIndex;
             if (options.uvs) uv = uvs.corners[f.idx][c] == rgb::MeshUvs::kNone ? kNoIndex : uvs.corners[f.idx][c];
             else if (texcoords) uv = base_corner_texcoord(mesh, *attributes, f, c);
-            out += ' ' + index;
-            if (uv != kNoIndex) out += '/' + std::to_string(std::size_t(uv) + 1);
-            if (options.normals) out += (uv != kNoIndex ? "/" : "//") + index;
+            append_integer(out, index);
+            if (uv != kNoIndex) {
+                out += '/';
+                append_digits(out, std::uint64_t(uv) + 1);
+            }
+            if (options.normals) {
+                out += uv != kNoIndex ? "/" : "//";
+                append_digits(out, index);
+            }
         }
         out += '\n';
         output.flush_if_full();

@@ -11,11 +11,15 @@ void append_double(std::string& out, double x) {
     out.append(buffer, result.ptr);
 }
 
-void append_integer(std::string& out, std::uint64_t x) {
+void append_digits(std::string& out, std::uint64_t x) {
     char buffer[20];  // 18446744073709551615 has 20 digits
     const auto result = std::to_chars(buffer, buffer + sizeof buffer, x);
-    out += ' ';
     out.append(buffer, result.ptr);
+}
+
+void append_integer(std::string& out, std::uint64_t x) {
+    out += ' ';
+    append_digits(out, x);
 }
 
 }  // namespace rgbio
