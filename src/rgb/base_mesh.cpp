@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <atomic>
+#include <functional>
 #include <stdexcept>
 #include <string>
 
 #include <glm/geometric.hpp>
 
 #include "rgb/base_face_index.h"
+#include "rgb/bucket_sort.h"
 
 namespace rgb {
 
@@ -32,26 +34,36 @@ BaseMesh::BaseMesh(std::span<const glm::dvec3> positions, std::span<const Triang
     : serial_(next_serial++), positions_(positions.begin(), positions.end()), faces_(triangles.begin(), triangles.end()) {
     const auto nv = static_cast<std::uint32_t>(positions_.size());
     if (positions_.size() >= kNone || 3 * faces_.size() >= kNone) reject("the mesh is too large");
-    std::vector<Directed> directed;
-    directed.reserve(3 * faces_.size());
     for (std::uint32_t f = 0; f < faces_.size(); ++f) {
         const Triangle& t = faces_[f];
         for (int i = 0; i < 3; ++i)
             if (t[i] >= nv) reject("triangle " + std::to_string(f) + " uses missing vertex " + std::to_string(t[i]));
         if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) reject("triangle " + std::to_string(f) + " repeats a vertex");
-        for (std::uint32_t i = 0; i < 3; ++i)
-            directed.push_back({(std::uint64_t(t[i]) << 32) | t[(i + 1) % 3], 3 * f + i});
     }
-    std::sort(directed.begin(), directed.end());
+    // Sorted, the halfedges leaving a vertex are one run: the reverse of a -> b is searched for among
+    // b's few (a search over all of them missed the cache at every step: a fifth of loading 819k
+    // triangles).
+    const auto [directed, first_out] = sorted_by_bucket<Directed>(
+        nv,
+        [this](auto&& emit) {
+            for (std::uint32_t f = 0; f < faces_.size(); ++f)
+                for (std::uint32_t i = 0; i < 3; ++i) {
+                    const std::uint32_t from = faces_[f][i];
+                    emit(from, Directed{(std::uint64_t(from) << 32) | faces_[f][(i + 1) % 3], 3 * f + i});
+                }
+        },
+        std::less<Directed>());
     for (std::size_t i = 1; i < directed.size(); ++i)
         if (directed[i].key == directed[i - 1].key)
             reject("edge " + edge_name(std::uint32_t(directed[i].key >> 32), std::uint32_t(directed[i].key)) +
                    " is used twice in the same direction (non-manifold or inconsistent orientation)");
     opposite_.assign(directed.size(), kNone);
     for (const Directed& d : directed) {
+        const auto to = static_cast<std::uint32_t>(d.key);
         const std::uint64_t reverse = (d.key << 32) | (d.key >> 32);
-        const auto it = std::lower_bound(directed.begin(), directed.end(), Directed{reverse, 0});
-        if (it != directed.end() && it->key == reverse) opposite_[d.halfedge] = it->halfedge;
+        const auto end = directed.begin() + first_out[to + 1];
+        const auto it = std::lower_bound(directed.begin() + first_out[to], end, Directed{reverse, 0});
+        if (it != end && it->key == reverse) opposite_[d.halfedge] = it->halfedge;
     }
     // Two faces over the same three vertices (a "pillow") pair every edge with each other and close
     // up a two-triangle sphere that no split can handle.
