@@ -1,6 +1,9 @@
 #include "io/triangle_soup.h"
 
 #include <algorithm>
+#include <functional>
+
+#include "rgb/bucket_sort.h"
 
 namespace rgbio {
 
@@ -15,15 +18,17 @@ std::uint32_t TriangleSoup::copy_vertex(std::uint32_t v) {
 }
 
 std::vector<EdgeUse> edge_uses(const std::vector<rgb::Triangle>& triangles) {
-    std::vector<EdgeUse> uses;
-    uses.reserve(3 * triangles.size());
-    for (std::uint32_t t = 0; t < triangles.size(); ++t)
-        for (int i = 0; i < 3; ++i) {
-            const std::uint32_t p = triangles[t][i], q = triangles[t][(i + 1) % 3];
-            uses.push_back({std::min(p, q), std::max(p, q), t});
-        }
-    std::sort(uses.begin(), uses.end());
-    return uses;
+    std::size_t vertices = 0;
+    for (const rgb::Triangle& t : triangles)
+        for (std::uint32_t v : t) vertices = std::max<std::size_t>(vertices, std::size_t(v) + 1);
+    auto uses = [&](auto&& emit) {
+        for (std::uint32_t t = 0; t < triangles.size(); ++t)
+            for (int i = 0; i < 3; ++i) {
+                const std::uint32_t p = triangles[t][i], q = triangles[t][(i + 1) % 3];
+                emit(std::min(p, q), EdgeUse{std::min(p, q), std::max(p, q), t});
+            }
+    };
+    return rgb::sorted_by_bucket<EdgeUse>(vertices, uses, std::less<EdgeUse>()).items;
 }
 
 }  // namespace rgbio
