@@ -1,12 +1,15 @@
 #include "io/mesh_validation.h"
 
 #include <algorithm>
+#include <array>
+#include <functional>
 #include <numeric>
 
 #include "io/loaded_mesh_assembly.h"
 #include "io/manifold_repair.h"
 #include "io/obj_error.h"
 #include "io/polygon_triangulation.h"
+#include "rgb/bucket_sort.h"
 
 namespace rgbio {
 
@@ -42,6 +45,13 @@ void add_triangle(TriangleSoup& soup, const ObjRecords& records, bool with_texco
 TriangleSoup triangulate(const ObjRecords& records, const std::string& file, std::vector<std::string>& warnings) {
     TriangleSoup soup = empty_soup(records);
     const bool with_texcoords = records.polygons.has_texcoords();
+    // A triangle per polygon at least (all of them for a triangle mesh): grown by doubling, the four
+    // arrays were copied some twenty times each on the way to a million.
+    const std::size_t polygons = records.polygons.size();
+    soup.triangles.reserve(polygons);
+    if (with_texcoords) soup.texcoords.reserve(polygons);
+    soup.polygons.reserve(polygons);
+    soup.lines.reserve(polygons);
     std::size_t quads = 0, ngons = 0, from_polygons = 0;
     std::vector<std::uint32_t> sorted;
     for (std::uint32_t p = 0; p < records.polygons.size(); ++p) {
@@ -76,13 +86,15 @@ TriangleSoup triangulate(const ObjRecords& records, const std::string& file, std
 }
 
 void check_duplicates(const TriangleSoup& soup, const std::string& file) {
-    std::vector<std::pair<rgb::Triangle, std::size_t>> keys(soup.triangles.size());
-    for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
-        rgb::Triangle k = soup.triangles[t];
-        std::sort(k.begin(), k.end());
-        keys[t] = {k, t};
-    }
-    std::sort(keys.begin(), keys.end());
+    using Key = std::pair<rgb::Triangle, std::size_t>;  // the triangle's corners sorted, its index
+    auto each_key = [&](auto&& emit) {
+        for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
+            rgb::Triangle k = soup.triangles[t];
+            std::sort(k.begin(), k.end());
+            emit(k[0], Key{k, t});
+        }
+    };
+    const std::vector<Key> keys = rgb::sorted_by_bucket<Key>(soup.vertex_origin.size(), each_key, std::less<Key>()).items;
     for (std::size_t i = 1; i < keys.size(); ++i)
         if (keys[i].first == keys[i - 1].first) {
             const std::size_t first = std::min(soup.lines[keys[i - 1].second], soup.lines[keys[i].second]);
@@ -100,14 +112,20 @@ void check_duplicates(const TriangleSoup& soup, const std::string& file) {
 void orient(TriangleSoup& soup, const std::vector<EdgeUse>& uses, const std::string& file, std::vector<std::string>& warnings) {
     const auto& tris = soup.triangles;
     const std::size_t n = tris.size();
-    // For each triangle, its neighbours across interior edges and whether they agree in direction.
-    std::vector<std::vector<std::pair<std::uint32_t, bool>>> neighbours(n);
+    // For each triangle, its neighbours across interior edges (at most three, in three slots: a list
+    // per triangle was a heap allocation each) and whether they agree in direction.
+    struct Neighbour {
+        std::uint32_t triangle;
+        bool same;
+    };
+    std::vector<std::array<Neighbour, 3>> neighbours(n);
+    std::vector<std::uint8_t> neighbour_count(n, 0);
     for_each_edge(uses, [&](std::size_t i, std::size_t j) {
         if (j - i != 2) return;
         const std::uint32_t t1 = uses[i].triangle, t2 = uses[i + 1].triangle;
         const bool same = has_directed_edge(tris[t1], uses[i].a, uses[i].b) == has_directed_edge(tris[t2], uses[i].a, uses[i].b);
-        neighbours[t1].push_back({t2, same});
-        neighbours[t2].push_back({t1, same});
+        neighbours[t1][neighbour_count[t1]++] = {t2, same};
+        neighbours[t2][neighbour_count[t2]++] = {t1, same};
     });
     constexpr std::uint8_t kUnvisited = 2;
     std::vector<std::uint8_t> flip(n, kUnvisited);
@@ -118,7 +136,8 @@ void orient(TriangleSoup& soup, const std::vector<EdgeUse>& uses, const std::str
         flip[seed] = 0;
         for (std::size_t k = 0; k < component.size(); ++k) {
             const std::uint32_t t = component[k];
-            for (const auto& [u, same] : neighbours[t]) {
+            for (std::uint8_t k = 0; k < neighbour_count[t]; ++k) {
+                const auto [u, same] = neighbours[t][k];
                 const std::uint8_t wanted = flip[t] ^ static_cast<std::uint8_t>(same);
                 if (flip[u] == kUnvisited) {
                     flip[u] = wanted;
