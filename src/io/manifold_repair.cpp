@@ -108,14 +108,14 @@ private:
     BowTies find_bow_ties(const std::vector<EdgeUse>& uses) const {
         UnionFind corners = corner_fans(uses, true);
         BowTies found;
-        std::vector<std::size_t> first_root(soup_.vertex_origin.size(), SIZE_MAX);
+        std::vector<std::uint32_t> first_root(soup_.vertex_origin.size(), UINT32_MAX);
         std::vector<std::uint8_t> root_seen(3 * tris_.size(), 0);
         std::vector<std::uint8_t> is_bow_tie(soup_.vertex_origin.size(), 0);
         for (std::uint32_t t = 0; t < tris_.size(); ++t)
             for (int i = 0; i < 3; ++i) {
                 const std::uint32_t v = tris_[t][i];
-                const std::size_t root = corners.find(3 * t + i);
-                if (first_root[v] == SIZE_MAX) first_root[v] = root;
+                const std::uint32_t root = corners.find(3 * t + static_cast<std::uint32_t>(i));
+                if (first_root[v] == UINT32_MAX) first_root[v] = root;
                 if (root_seen[root]) continue;
                 root_seen[root] = 1;
                 if (root == first_root[v]) continue;
@@ -137,13 +137,13 @@ private:
     // One vertex per fan: the fan of a vertex's first corner keeps it, later fans get copies.
     void split_fans(const std::vector<EdgeUse>& uses) {
         UnionFind corners = corner_fans(uses, false);
-        std::vector<std::size_t> first_root(soup_.vertex_origin.size(), SIZE_MAX);
+        std::vector<std::uint32_t> first_root(soup_.vertex_origin.size(), UINT32_MAX);
         std::vector<std::uint32_t> copy_of_root(3 * tris_.size(), kNoCopy);
         for (std::uint32_t t = 0; t < tris_.size(); ++t)
             for (int i = 0; i < 3; ++i) {
                 std::uint32_t& v = tris_[t][i];
-                const std::size_t root = corners.find(3 * t + i);
-                if (first_root[v] == SIZE_MAX) first_root[v] = root;
+                const std::uint32_t root = corners.find(3 * t + static_cast<std::uint32_t>(i));
+                if (first_root[v] == UINT32_MAX) first_root[v] = root;
                 if (root == first_root[v]) continue;
                 if (copy_of_root[root] == kNoCopy) copy_of_root[root] = soup_.copy_vertex(v);
                 v = copy_of_root[root];
