@@ -136,8 +136,8 @@ void orient(TriangleSoup& soup, const std::vector<EdgeUse>& uses, const std::str
         flip[seed] = 0;
         for (std::size_t k = 0; k < component.size(); ++k) {
             const std::uint32_t t = component[k];
-            for (std::uint8_t k = 0; k < neighbour_count[t]; ++k) {
-                const auto [u, same] = neighbours[t][k];
+            for (std::uint8_t slot = 0; slot < neighbour_count[t]; ++slot) {
+                const auto [u, same] = neighbours[t][slot];
                 const std::uint8_t wanted = flip[t] ^ static_cast<std::uint8_t>(same);
                 if (flip[u] == kUnvisited) {
                     flip[u] = wanted;
