@@ -2,14 +2,13 @@
 
 #include <algorithm>
 #include <atomic>
-#include <functional>
 #include <stdexcept>
 #include <string>
 
 #include <glm/geometric.hpp>
 
 #include "rgb/base_face_index.h"
-#include "rgb/bucket_sort.h"
+#include "rgb/outgoing_halfedges.h"
 
 namespace rgb {
 
@@ -18,12 +17,6 @@ namespace {
 [[noreturn]] void reject(const std::string& what) { throw std::invalid_argument(what); }
 
 std::string edge_name(std::uint32_t a, std::uint32_t b) { return std::to_string(a) + "-" + std::to_string(b); }
-
-struct Directed {
-    std::uint64_t key;  // from << 32 | to
-    std::uint32_t halfedge;
-    bool operator<(const Directed& o) const { return key < o.key; }
-};
 
 std::atomic<std::uint64_t> next_serial{1};
 
@@ -40,31 +33,14 @@ BaseMesh::BaseMesh(std::span<const glm::dvec3> positions, std::span<const Triang
             if (t[i] >= nv) reject("triangle " + std::to_string(f) + " uses missing vertex " + std::to_string(t[i]));
         if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) reject("triangle " + std::to_string(f) + " repeats a vertex");
     }
-    // Sorted, the halfedges leaving a vertex are one run: the reverse of a -> b is searched for among
-    // b's few (a search over all of them missed the cache at every step: a fifth of loading 819k
-    // triangles).
-    const auto [directed, first_out] = sorted_by_bucket<Directed>(
-        nv,
-        [this](auto&& emit) {
-            for (std::uint32_t f = 0; f < faces_.size(); ++f)
-                for (std::uint32_t i = 0; i < 3; ++i) {
-                    const std::uint32_t from = faces_[f][i];
-                    emit(from, Directed{(std::uint64_t(from) << 32) | faces_[f][(i + 1) % 3], 3 * f + i});
-                }
-        },
-        std::less<Directed>());
-    for (std::size_t i = 1; i < directed.size(); ++i)
-        if (directed[i].key == directed[i - 1].key)
-            reject("edge " + edge_name(std::uint32_t(directed[i].key >> 32), std::uint32_t(directed[i].key)) +
-                   " is used twice in the same direction (non-manifold or inconsistent orientation)");
-    opposite_.assign(directed.size(), kNone);
-    for (const Directed& d : directed) {
-        const auto to = static_cast<std::uint32_t>(d.key);
-        const std::uint64_t reverse = (d.key << 32) | (d.key >> 32);
-        const auto end = directed.begin() + first_out[to + 1];
-        const auto it = std::lower_bound(directed.begin() + first_out[to], end, Directed{reverse, 0});
-        if (it != end && it->key == reverse) opposite_[d.halfedge] = it->halfedge;
-    }
+    // Grouped by start vertex, as a restored mesh state's are (a binary search over all halfedges
+    // missed the cache at every step: a fifth of loading 819k triangles).
+    const OutgoingHalfedges out = outgoing_halfedges(faces_, nv);
+    if (out.repeating)
+        reject("edge " + edge_name(out.repeating->from, out.repeating->to) +
+               " is used twice in the same direction (non-manifold or inconsistent orientation)");
+    opposite_.assign(3 * faces_.size(), kNone);
+    pair_halfedges(out, nv, [this](std::uint32_t h, std::uint32_t reverse) { opposite_[h] = reverse; });
     // Two faces over the same three vertices (a "pillow") pair every edge with each other and close
     // up a two-triangle sphere that no split can handle.
     for (std::uint32_t f = 0; f < faces_.size(); ++f) {

@@ -14,6 +14,7 @@
 #include "rgb/invariants.h"
 #include "rgb/loop_geometry.h"
 #include "rgb/mesh.h"
+#include "rgb/outgoing_halfedges.h"
 #include "rgb/parallel.h"
 
 namespace rgb {
@@ -52,57 +53,6 @@ std::optional<std::string> address_problem(const BaseMesh& base, std::uint32_t i
     if (base_slot != (p.level == 0) || (base_slot && base_vertex(base, p) != i))
         return name() + ": the base vertices come first, in base order, and only they have level 0";
     return std::nullopt;
-}
-
-// Outgoing halfedges grouped by their start vertex, each group sorted by end vertex: an entry is
-// (end << 32) | halfedge. Matching a halfedge a->b with b->a is then a search in b's short group.
-struct OutgoingHalfedges {
-    std::vector<std::uint32_t> start;          // vertex v's entries are [start[v], start[v + 1])
-    std::unique_ptr<std::uint64_t[]> entries;  // 3 per face, each written once: nothing zero-fills them first
-    std::optional<std::uint32_t> repeating_face;  // the face of the first repeated directed edge, by start vertex
-
-    static std::uint32_t end_vertex(std::uint64_t e) { return static_cast<std::uint32_t>(e >> 32); }
-    static HalfedgeId halfedge(std::uint64_t e) { return HalfedgeId(static_cast<std::uint32_t>(e)); }
-    std::span<const std::uint64_t> of(std::uint32_t v) const { return {entries.get() + start[v], start[v + 1] - start[v]}; }
-};
-
-// Grouped in parallel blocks of start vertices: each block's thread reads all the faces, in order,
-// and keeps the corners at its own vertices, so that counting and filling (random writes over 8
-// bytes per corner, the slow part) run on all cores and no thread writes where another does. Faces
-// must use vertices below nv only.
-OutgoingHalfedges outgoing_halfedges(const std::vector<Triangle>& faces, std::size_t nv) {
-    OutgoingHalfedges out;
-    out.start.assign(nv + 1, 0);
-    const std::size_t blocks = parallel_blocks(nv, 1 << 16);
-    auto for_corners_at = [&faces](std::size_t begin, std::size_t end, const auto& f) {
-        const auto first = static_cast<std::uint32_t>(begin), count = static_cast<std::uint32_t>(end - begin);
-        for (std::uint32_t face = 0; face < faces.size(); ++face)
-            for (int c = 0; c < 3; ++c)
-                if (faces[face][c] - first < count) f(face, c);
-    };
-    parallel_blocks_for(nv, blocks, [&](std::size_t, std::size_t begin, std::size_t end) {
-        for_corners_at(begin, end, [&](std::uint32_t f, int c) { ++out.start[faces[f][c] + 1]; });
-    });
-    for (std::size_t v = 0; v < nv; ++v) out.start[v + 1] += out.start[v];
-    out.entries.reset(new std::uint64_t[3 * faces.size()]);
-    std::vector<std::optional<std::uint32_t>> repeating(blocks);
-    parallel_blocks_for(nv, blocks, [&](std::size_t b, std::size_t begin, std::size_t end) {
-        std::vector<std::uint32_t> cursor(out.start.begin() + static_cast<std::ptrdiff_t>(begin), out.start.begin() + static_cast<std::ptrdiff_t>(end));
-        for_corners_at(begin, end, [&](std::uint32_t f, int c) {
-            out.entries[cursor[faces[f][c] - begin]++] = std::uint64_t(faces[f][(c + 1) % 3]) << 32 | Mesh::halfedge(FaceId(f), c).idx;
-        });
-        for (std::size_t v = begin; v < end; ++v) {
-            std::sort(out.entries.get() + out.start[v], out.entries.get() + out.start[v + 1]);
-            const auto group = out.of(static_cast<std::uint32_t>(v));
-            for (std::size_t k = 1; k < group.size() && !repeating[b]; ++k)
-                if (OutgoingHalfedges::end_vertex(group[k]) == OutgoingHalfedges::end_vertex(group[k - 1]))
-                    repeating[b] = Mesh::face(OutgoingHalfedges::halfedge(group[k])).idx;
-            if (repeating[b]) break;
-        }
-    });
-    for (const std::optional<std::uint32_t>& face : repeating)
-        if (face && !out.repeating_face) out.repeating_face = face;
-    return out;
 }
 
 // Spec §1.3: a green face of level l is a triangle of Σl; a red one has two corners of the triangle of
@@ -210,18 +160,9 @@ OutgoingHalfedges matched_halfedges(const std::vector<Triangle>& faces, std::siz
     for (std::uint32_t f : repeating)
         if (f != BaseMesh::kNone) fail("face " + std::to_string(f) + " repeats a vertex");
     OutgoingHalfedges out = outgoing_halfedges(faces, nv);
-    if (out.repeating_face) fail("face " + std::to_string(*out.repeating_face) + " repeats a directed edge (non-manifold)");
+    if (out.repeating) fail("face " + std::to_string(out.repeating->face) + " repeats a directed edge (non-manifold)");
     opposite.assign(3 * nf, HalfedgeId());
-    parallel_for(nv, 1 << 15, [&](std::size_t begin, std::size_t end) {
-        for (std::size_t a = begin; a < end; ++a)
-            for (std::uint64_t e : out.of(static_cast<std::uint32_t>(a))) {
-                const auto back = out.of(OutgoingHalfedges::end_vertex(e));
-                const std::uint64_t key = std::uint64_t(a) << 32;
-                const auto it = std::lower_bound(back.begin(), back.end(), key);
-                if (it != back.end() && OutgoingHalfedges::end_vertex(*it) == a)
-                    opposite[OutgoingHalfedges::halfedge(e).idx] = OutgoingHalfedges::halfedge(*it);
-            }
-    });
+    pair_halfedges(out, nv, [&](std::uint32_t h, std::uint32_t reverse) { opposite[h] = HalfedgeId(reverse); });
     return out;
 }
 
@@ -315,7 +256,7 @@ Mesh restore_state(const MeshState& s, const ProgressSpan& progress, RestoredCha
             const auto v = static_cast<std::uint32_t>(i);
             const auto group = out.of(v);
             if (group.empty()) fail("vertex " + std::to_string(v) + " is used by no face");
-            m.set_vertex_halfedge(VertexId(v), OutgoingHalfedges::halfedge(group.front()));
+            m.set_vertex_halfedge(VertexId(v), HalfedgeId(OutgoingHalfedges::halfedge(group.front())));
         }
     });
     out = {};
