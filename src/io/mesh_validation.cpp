@@ -94,7 +94,7 @@ void check_duplicates(const TriangleSoup& soup, const std::string& file) {
             emit(k[0], Key{k, t});
         }
     };
-    const std::vector<Key> keys = rgb::sorted_by_bucket<Key>(soup.vertex_origin.size(), each_key, std::less<Key>()).items;
+    const std::vector<Key> keys = rgb::sorted_by_bucket<Key>(soup.vertex_origin.size(), each_key, std::less<Key>());
     for (std::size_t i = 1; i < keys.size(); ++i)
         if (keys[i].first == keys[i - 1].first) {
             const std::size_t first = std::min(soup.lines[keys[i - 1].second], soup.lines[keys[i].second]);

@@ -28,7 +28,7 @@ std::vector<EdgeUse> edge_uses(const std::vector<rgb::Triangle>& triangles) {
                 emit(std::min(p, q), EdgeUse{std::min(p, q), std::max(p, q), t});
             }
     };
-    return rgb::sorted_by_bucket<EdgeUse>(vertices, uses, std::less<EdgeUse>()).items;
+    return rgb::sorted_by_bucket<EdgeUse>(vertices, uses, std::less<EdgeUse>());
 }
 
 }  // namespace rgbio

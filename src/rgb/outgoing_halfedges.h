@@ -17,7 +17,7 @@
 namespace rgb {
 
 struct OutgoingHalfedges {
-    std::vector<std::uint32_t> start;          // vertex v's entries are [start[v], start[v + 1])
+    std::vector<std::size_t> start;            // vertex v's entries are [start[v], start[v + 1])
     std::unique_ptr<std::uint64_t[]> entries;  // (end << 32) | halfedge; 3 per face, each written once: nothing zero-fills them first
     // The first directed edge used twice, by start vertex, then end vertex.
     struct Repeat {
