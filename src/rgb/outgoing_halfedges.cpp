@@ -1,10 +1,23 @@
 #include "rgb/outgoing_halfedges.h"
 
 #include <atomic>
+#include <functional>
+#include <optional>
 
 #include "rgb/bucket_sort.h"
 
 namespace rgb {
+
+namespace {
+
+// Where a start vertex's group (sorted by end vertex) first holds an end vertex twice, if it does.
+std::optional<std::size_t> repeated_end(std::span<const std::uint64_t> group) {
+    for (std::size_t k = 1; k < group.size(); ++k)
+        if (OutgoingHalfedges::end_vertex(group[k]) == OutgoingHalfedges::end_vertex(group[k - 1])) return k;
+    return std::nullopt;
+}
+
+}  // namespace
 
 OutgoingHalfedges outgoing_halfedges(std::span<const Triangle> faces, std::size_t nv) {
     auto each_halfedge = [&faces](const auto& emit) {
@@ -19,19 +32,15 @@ OutgoingHalfedges outgoing_halfedges(std::span<const Triangle> faces, std::size_
     std::atomic<std::size_t> first_repeating(nv);
     place_in_buckets(std::span<const std::size_t>(out.start), each_halfedge, std::less<std::uint64_t>(), out.entries.get(),
                      [&](std::size_t v, std::span<const std::uint64_t> group) {
-                         for (std::size_t k = 1; k < group.size(); ++k)
-                             if (OutgoingHalfedges::end_vertex(group[k]) == OutgoingHalfedges::end_vertex(group[k - 1])) {
-                                 std::size_t lowest = first_repeating.load();
-                                 while (v < lowest && !first_repeating.compare_exchange_weak(lowest, v)) {
-                                 }
-                                 return;
-                             }
+                         if (!repeated_end(group)) return;
+                         std::size_t lowest = first_repeating.load();
+                         while (v < lowest && !first_repeating.compare_exchange_weak(lowest, v)) {
+                         }
                      });
     if (const std::size_t v = first_repeating.load(); v < nv) {
         const auto group = out.of(static_cast<std::uint32_t>(v));
-        for (std::size_t k = 1; k < group.size() && !out.repeating; ++k)
-            if (OutgoingHalfedges::end_vertex(group[k]) == OutgoingHalfedges::end_vertex(group[k - 1]))
-                out.repeating = {static_cast<std::uint32_t>(v), OutgoingHalfedges::end_vertex(group[k]), OutgoingHalfedges::halfedge(group[k]) / 3};
+        const std::size_t k = *repeated_end(group);
+        out.repeating = {static_cast<std::uint32_t>(v), OutgoingHalfedges::end_vertex(group[k]), OutgoingHalfedges::halfedge(group[k]) / 3};
     }
     return out;
 }
