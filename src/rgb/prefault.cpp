@@ -28,6 +28,16 @@ bool populate(std::uintptr_t begin, std::uintptr_t end) {
 #endif
 }
 
+// Reads a byte of each page of [begin, end). Where the machine is a virtual one, a page the guest
+// kernel has just handed over may not be backed by the host yet (the kernel knew it zeroed and did
+// not write it): the first access to it then costs the host's fault, about 5 us a 4 KiB page on the
+// build machine, whoever makes it. Made here, on this thread, it is not the writer's. A read only,
+// since the owner may be writing the page already (the value is dropped, so a write that races it
+// changes nothing).
+void touch(std::uintptr_t begin, std::uintptr_t end) {
+    for (std::uintptr_t page = begin; page < end; page += kPage) (void)*reinterpret_cast<const volatile std::byte*>(page);
+}
+
 }  // namespace
 
 Prefault::Prefault(std::vector<std::span<std::byte>> ranges) {
@@ -69,6 +79,7 @@ void Prefault::run(std::vector<std::span<std::byte>> ranges) {
             if (f.next >= f.end) continue;
             const std::uintptr_t to = std::min(f.end, f.next + f.share);
             if (!populate(f.next, to)) return;
+            touch(f.next, to);
             f.next = to;
             left = true;
         }

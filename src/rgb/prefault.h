@@ -1,8 +1,9 @@
 #pragma once
 // The first write to a page the process has not touched costs a page fault (the kernel finds and
-// zeroes a page): about 2.5 us a 4 KiB page on the build machine, a sixth of a budget run's time. A
-// bulk refinement knows how much memory it is about to fill; it asks for those pages on another core
-// while it works, front to back as it will write them.
+// zeroes a page): 2.5 to 6 us a 4 KiB page on the build machines, a sixth of a budget run's time. On
+// a virtual machine the first access to that page may cost as much again, the host's own fault
+// (prefault.cpp). A bulk refinement knows how much memory it is about to fill; it asks for those
+// pages, and touches them, on another core while it works, front to back as it will write them.
 #include <atomic>
 #include <cstddef>
 #include <span>
