@@ -28,7 +28,7 @@ glm::dvec3 LimitCache::find(std::uint32_t vertex) const {
 
 void LimitCache::insert(std::uint32_t vertex, const glm::dvec3& limit) {
     move_some(kMovedPerChange);
-    if (8 * (size_ + 1) > 7 * entries_.size()) grow();
+    if (insert_grows()) grow();
     place(vertex, limit.x, limit.y, limit.z);
     ++size_;
 }
@@ -69,8 +69,7 @@ void LimitCache::grow() {
 }
 
 void LimitCache::reserve(std::size_t entries) {
-    // The fewest slots, a multiple of 16, that hold `entries` at 7/8 full.
-    const std::size_t slots = ((8 * entries + 6) / 7 + 15) / 16 * 16;
+    const std::size_t slots = slots_for(entries);
     if (slots <= entries_.size()) return;
     move_some(moving_.size());
     start_moving_into(slots);

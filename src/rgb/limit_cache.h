@@ -32,6 +32,9 @@ public:
         if (!entries_.empty()) __builtin_prefetch(&entries_[home(vertex, entries_.size())]);
     }
     void insert(std::uint32_t vertex, const glm::dvec3& limit);
+    // Whether the next insert, or reserving room for `entries`, moves the table (table() to another).
+    bool insert_grows() const { return 8 * (size_ + 1) > 7 * entries_.size(); }
+    bool reserve_grows(std::size_t entries) const { return slots_for(entries) > entries_.size(); }
     void erase(std::uint32_t vertex);
     // Room for `entries` in all without growing (a restore knows its count: growing step by step
     // moved every entry about four times over). Moves any growth under way to its end and rehashes
@@ -69,6 +72,8 @@ private:
         return 16 * run + (key & 15u);
     }
     static std::size_t next(std::size_t i, std::size_t table_size) { return i + 1 == table_size ? 0 : i + 1; }
+    // The fewest slots, a multiple of 16, that hold `entries` at 7/8 full.
+    static std::size_t slots_for(std::size_t entries) { return ((8 * entries + 6) / 7 + 15) / 16 * 16; }
     // The slot of `vertex` in entries_, or entries_.size() if it is not there (then it is in moving_).
     std::size_t slot_in_new(std::uint32_t vertex) const;
     // The slot of `vertex` in moving_, where it must be.

@@ -96,6 +96,7 @@ private:
     void vertex_added(const Mesh&, VertexId v, VertexId a, VertexId b) override;
     void vertex_removed(const Mesh&, VertexId) override { ++report_.removals; }
     void face_added(const Mesh&, FaceId f) override;
+    void arrays_moving(const Mesh&) override;
 
     bool outranks(const Candidate& x, const Candidate& y) const;
     // An edge of the mesh, with its level (the finer end's).
@@ -121,6 +122,7 @@ private:
     void push_new_edges();
     void start_refining();
     std::size_t room_for_run() const;
+    void stop_touching_room();
     void prefault_room(std::size_t faces, std::size_t vertices);
     int uniform_start_level() const;
     void refine_uniform_start();

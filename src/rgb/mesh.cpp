@@ -145,15 +145,28 @@ int Mesh::valence(VertexId v) const {
 namespace {
 // Capacity for `more` elements beyond the size, growing geometrically like push_back would.
 template <class Vector>
-void room_for(Vector& v, std::size_t more) {
+void grow_for(Vector& v, std::size_t more) {
     if (v.capacity() - v.size() < more) v.reserve(std::max(2 * v.capacity(), v.size() + more));
 }
 }  // namespace
 
+// The same for the face and vertex arrays (those room_ahead hands out), whose observers hear first
+// that they move.
+template <class Vector>
+void Mesh::room_for(Vector& v, std::size_t more) {
+    if (v.capacity() - v.size() >= more) return;
+    announce_arrays_moving();
+    grow_for(v, more);
+}
+
+void Mesh::announce_arrays_moving() const {
+    for (MeshObserver* o : observers_) o->arrays_moving(*this);
+}
+
 // Geometric like the rest: a string of reservations a little larger each time (one per brush dab)
 // must not copy the whole mesh each time.
 void Mesh::reserve(std::size_t faces, std::size_t vertices) {
-    const auto up_to = [](auto& v, std::size_t n) { room_for(v, n > v.size() ? n - v.size() : 0); };
+    const auto up_to = [this](auto& v, std::size_t n) { room_for(v, n > v.size() ? n - v.size() : 0); };
     up_to(face_vertices_, faces);
     up_to(face_code_, faces);
     up_to(opposite_, 3 * faces);
@@ -208,8 +221,8 @@ SurfacePoint Mesh::new_vertex_address(const NewVertex& added) const {
 
 
 void Mesh::make_room(std::size_t faces_released, std::size_t faces_added, std::size_t vertices_released, bool vertex_added) {
-    room_for(free_faces_, faces_released);
-    if (vertices_released > 0) room_for(free_vertices_, vertices_released);
+    grow_for(free_faces_, faces_released);
+    if (vertices_released > 0) grow_for(free_vertices_, vertices_released);
     const std::size_t reusable = free_faces_.size() + faces_released;
     if (faces_added > reusable) {
         const std::size_t appended_faces = faces_added - reusable;

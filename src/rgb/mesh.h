@@ -187,7 +187,7 @@ public:
     // Room for this many face and vertex slots, so that a large refinement does not regrow the arrays.
     void reserve(std::size_t faces, std::size_t vertices);
     // The reserved memory that appending this many face and vertex slots will write first, per array
-    // (for Prefault).
+    // (for Prefault; valid until observers hear arrays_moving).
     std::vector<std::span<std::byte>> room_ahead(std::size_t faces, std::size_t vertices);
 
     // ---- observers ----
@@ -210,12 +210,16 @@ public:
     // never changes what the mesh means.
     void cache_limit(VertexId v, const glm::dvec3& p) const {
         if (vertex_info_[v.idx] & kLimitBit) return;
+        if (limits_.insert_grows()) announce_arrays_moving();
         limits_.insert(v.idx, p);
         vertex_info_[v.idx] |= kLimitBit;
     }
     // Room for `count` cached limits in all, made at once (a growth moves the entries a few at a time
     // over later inserts, each a cache miss): for a caller that knows about how many it will cache.
-    void reserve_limits(std::size_t count) const { limits_.reserve(count); }
+    void reserve_limits(std::size_t count) const {
+        if (limits_.reserve_grows(count)) announce_arrays_moving();
+        limits_.reserve(count);
+    }
     // The table of limits' memory, to be faulted in ahead (Prefault) while it is still untouched.
     std::span<std::byte> limit_table() const { return limits_.table(); }
     // Delete `old_faces` (and the listed vertices, which must be used by no new face), add `added` (in
@@ -268,6 +272,10 @@ private:
     SurfacePoint new_vertex_address(const NewVertex& added) const;
     // Grows the arrays so that a replacement of this size cannot fail for lack of memory half-way.
     void make_room(std::size_t faces_released, std::size_t faces_added, std::size_t vertices_released, bool vertex_added);
+    template <class Vector>
+    void room_for(Vector& v, std::size_t more);
+    // Tells the observers that the face or vertex arrays or the table of limits are about to move.
+    void announce_arrays_moving() const;
     VertexId allocate_vertex(const NewVertex& added, const SurfacePoint& address);
     FaceId allocate_face();
     void release_face(FaceId f);

@@ -28,23 +28,23 @@ bool populate(std::uintptr_t begin, std::uintptr_t end) {
 #endif
 }
 
-// Reads a byte of each page of [begin, end). Where the machine is a virtual one, a page the guest
-// kernel has just handed over may not be backed by the host yet (the kernel knew it zeroed and did
-// not write it): the first access to it then costs the host's fault, about 5 us a 4 KiB page on the
-// build machine, whoever makes it. Made here, on this thread, it is not the writer's. A read only,
-// since the owner may be writing the page already (the value is dropped, so a write that races it
-// changes nothing).
-void touch(std::uintptr_t begin, std::uintptr_t end) {
+// Reads a byte of each page of [begin, end). On the build machine, a virtual one, the first access
+// to a page from user code costs about 5 us more, a fault the guest kernel never sees (populating
+// the page, or reading it from the kernel, does not spare it): made here, on this thread, it is not
+// the writer's. A read, since the owner may be writing the page already (the value is dropped, so a
+// write that races it changes nothing). Unlike populating, which fails on memory gone, a read of
+// memory unmapped meanwhile would crash: hence Touch::yes only where the owner keeps the ranges.
+void read_pages(std::uintptr_t begin, std::uintptr_t end) {
     for (std::uintptr_t page = begin; page < end; page += kPage) (void)*reinterpret_cast<const volatile std::byte*>(page);
 }
 
 }  // namespace
 
-Prefault::Prefault(std::vector<std::span<std::byte>> ranges) {
+Prefault::Prefault(std::vector<std::span<std::byte>> ranges, Touch touch) {
     std::erase_if(ranges, [](std::span<std::byte> r) { return r.size() < kStep; });
     if (ranges.empty()) return;
     try {
-        thread_ = std::thread([this, ranges = std::move(ranges)] { run(ranges); });
+        thread_ = std::thread([this, ranges = std::move(ranges), touch] { run(ranges, touch); });
     } catch (const std::system_error&) {
         // No thread: the pages fault in as they are written, as without this.
     }
@@ -55,7 +55,7 @@ Prefault::~Prefault() {
     if (thread_.joinable()) thread_.join();
 }
 
-void Prefault::run(std::vector<std::span<std::byte>> ranges) {
+void Prefault::run(std::vector<std::span<std::byte>> ranges, Touch touch) {
     struct Front {
         std::uintptr_t next, end, share;
     };
@@ -79,7 +79,7 @@ void Prefault::run(std::vector<std::span<std::byte>> ranges) {
             if (f.next >= f.end) continue;
             const std::uintptr_t to = std::min(f.end, f.next + f.share);
             if (!populate(f.next, to)) return;
-            touch(f.next, to);
+            if (touch == Touch::yes) read_pages(f.next, to);
             f.next = to;
             left = true;
         }

@@ -14,17 +14,20 @@ namespace rgb {
 
 class Prefault {
 public:
+    // Whether the thread also reads each page it faulted in (prefault.cpp). Only for ranges that stay
+    // mapped while this object lives: their owner destroys it before it frees or moves them.
+    enum class Touch { no, yes };
     // Starts faulting in the whole pages inside `ranges` on a thread of its own, all ranges advancing
     // together (their owners fill them side by side). Does nothing where the platform cannot (no
     // such call, or no thread to spare).
-    explicit Prefault(std::vector<std::span<std::byte>> ranges);
+    explicit Prefault(std::vector<std::span<std::byte>> ranges, Touch touch = Touch::no);
     // Stops at the next step (within about 0.1 ms) and joins.
     ~Prefault();
     Prefault(const Prefault&) = delete;
     Prefault& operator=(const Prefault&) = delete;
 
 private:
-    void run(std::vector<std::span<std::byte>> ranges);
+    void run(std::vector<std::span<std::byte>> ranges, Touch touch);
 
     std::atomic<bool> stop_{false};
     std::thread thread_;

@@ -13,8 +13,8 @@
 #include "rgb/face_location.h"
 #include "rgb/loop_geometry.h"
 #include "rgb/mesh.h"
+#include "rgb/mesh_room_prefault.h"
 #include "rgb/operators.h"
-#include "rgb/prefault.h"
 #include "rgb/refine.h"
 #include "rgb/triangle_geometry.h"
 
@@ -313,8 +313,8 @@ void refine_region(Mesh& mesh, const LevelRequest& request, RequestLog& log, std
     // thread's start and a join within a step of faulting would eat into.
     const std::size_t added = reserve_for(mesh, request);
     constexpr std::size_t kFacesWorthFaultingAhead = 1 << 17;
-    std::optional<Prefault> room_ahead;
-    if (added >= kFacesWorthFaultingAhead) room_ahead.emplace(mesh.room_ahead(added, added / 2));
+    std::optional<MeshRoomPrefault> room_ahead;
+    if (added >= kFacesWorthFaultingAhead) room_ahead.emplace(mesh, added, added / 2);
     std::vector<FaceId> stack, next;
     for (int pass = 1; pass <= finest && !pending.empty(); ++pass) {
         // In slot order (the stack pops from the back), as uniform refinement sweeps: a split's new

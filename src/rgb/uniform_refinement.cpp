@@ -6,7 +6,7 @@
 #include "rgb/loop_geometry.h"
 #include "rgb/mesh.h"
 #include "rgb/operators.h"
-#include "rgb/prefault.h"
+#include "rgb/mesh_room_prefault.h"
 #include "rgb/refine.h"
 
 namespace rgb {
@@ -23,7 +23,7 @@ void refine_uniform(Mesh& mesh, int level) {
             if (mesh.is_boundary(Mesh::halfedge(f, c))) new_boundary_vertices += (std::size_t(1) << steps) - 1;
     }
     mesh.reserve(mesh.face_capacity() + new_faces, mesh.vertex_capacity() + new_faces / 2 + new_boundary_vertices);
-    const Prefault room_ahead(mesh.room_ahead(new_faces, new_faces / 2 + new_boundary_vertices));
+    const MeshRoomPrefault room_ahead(mesh, new_faces, new_faces / 2 + new_boundary_vertices);
     std::vector<FaceId> front;
     for (int l = 0; l < level; ++l) {
         // The vertices of level l are stencil points of the splits of every later pass, and right now,

@@ -12,8 +12,12 @@
 
 #include <gtest/gtest.h>
 
+#include "rgb/mesh_room_prefault.h"
 #include "rgb/prefault.h"
+#include "rgb/refine.h"
 #include "rgb/zeroed_vector.h"
+#include "support/same_mesh.h"
+#include "support/test_meshes.h"
 
 namespace rgbtest {
 namespace {
@@ -77,6 +81,26 @@ TEST(Prefault, TakesAnyRangesAndStopsAtOnce) {
     { const rgb::Prefault small({m.span().subspan(1, 100), m.span().subspan(3, 0)}); }
     { const rgb::Prefault unaligned({m.span().subspan(17, m.size - 40)}); }
     for (std::size_t i = 0; i < m.size; ++i) ASSERT_EQ(m.bytes[i], std::byte{0});
+}
+
+// The room's thread is part way through reading a large room when the mesh outgrows it: it stops
+// before the arrays move (a read of the freed arrays would crash, or be reported under
+// AddressSanitizer), and the mesh is the one refined without it.
+TEST(MeshRoomPrefault, StopsBeforeTheMeshOutgrowsItsRoom) {
+    constexpr std::size_t kFaces = std::size_t(1) << 21, kVertices = kFaces / 2;
+    rgb::Mesh mesh = make_rgb_mesh(octahedron());
+    mesh.reserve(kFaces, kVertices);
+    const std::span<std::byte> faces_room = mesh.room_ahead(kFaces, kVertices).front();
+    {
+        const rgb::MeshRoomPrefault room(mesh, kFaces, kVertices);
+        for (int i = 0; i < 2000 && resident_pages(faces_room.data(), faces_room.size()) < 64; ++i) ::usleep(100);
+        ASSERT_LT(resident_pages(faces_room.data(), faces_room.size()) * 4096, faces_room.size());
+        mesh.reserve(2 * kFaces, 2 * kVertices);
+        rgb::refine_uniform(mesh, 3);
+    }
+    rgb::Mesh plain = make_rgb_mesh(octahedron());
+    rgb::refine_uniform(plain, 3);
+    EXPECT_TRUE(same_mesh(plain, mesh));
 }
 
 TEST(ZeroedVector, GrowsWithZeros) {
