@@ -19,8 +19,10 @@ Mesh::Mesh(const Mesh& other) { *this = other; }
 
 Mesh::Mesh(Mesh&& other) noexcept { *this = std::move(other); }
 
+// An assignment frees or hands over the arrays: observers of both meshes hear of it first.
 Mesh& Mesh::operator=(const Mesh& other) {
     if (this == &other) return *this;
+    announce_arrays_moving();
     auto observers = std::move(observers_);
     base_ = other.base_;
     face_vertices_ = other.face_vertices_;
@@ -41,6 +43,8 @@ Mesh& Mesh::operator=(const Mesh& other) {
 
 Mesh& Mesh::operator=(Mesh&& other) noexcept {
     if (this == &other) return *this;
+    announce_arrays_moving();
+    other.announce_arrays_moving();
     auto observers = std::move(observers_);
     base_ = std::move(other.base_);
     face_vertices_ = std::move(other.face_vertices_);

@@ -23,9 +23,9 @@ public:
     virtual void face_added(const Mesh&, FaceId) {}
     virtual void face_removed(const Mesh&, FaceId) {}
     // The mesh is about to move its face or vertex arrays or its table of limits into larger ones (an
-    // operation past the room reserved): memory handed out for them (Mesh::room_ahead, limit_table)
-    // is freed after. Outside the order above: it comes before anything of the operation that needs
-    // the room has changed.
+    // operation past the room reserved), or to be assigned to or moved from: memory handed out for
+    // them (Mesh::room_ahead, limit_table) may be freed after. Outside the order above: it comes
+    // before anything of the operation that needs the room has changed.
     virtual void arrays_moving(const Mesh&) {}
 };
 

@@ -2,6 +2,7 @@
 // MeshRoomPrefault, whose thread must stop reading them first: prefault_test.cpp).
 #include <algorithm>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -77,6 +78,18 @@ TEST(ArraysMoving, AnnouncedBeforeTheTableOfLimitsMoves) {
     EXPECT_NE(mesh.limit_table().data(), table);
     ASSERT_EQ(recorder.tables.size(), moves + 1);
     EXPECT_EQ(recorder.tables.back(), table);
+}
+
+TEST(ArraysMoving, AnnouncedToBothMeshesOfAnAssignment) {
+    rgb::Mesh a = make_rgb_mesh(octahedron()), b = make_rgb_mesh(icosahedron());
+    MoveRecorder heard_by_a(a);
+    a = b;  // a's arrays are freed
+    EXPECT_EQ(heard_by_a.tables.size(), 1u);
+    rgb::Mesh c = make_rgb_mesh(tetrahedron());
+    MoveRecorder heard_by_c(c);
+    c = std::move(a);  // c's arrays are freed, a's handed over
+    EXPECT_EQ(heard_by_c.tables.size(), 1u);
+    EXPECT_EQ(heard_by_a.tables.size(), 2u);
 }
 
 }  // namespace
