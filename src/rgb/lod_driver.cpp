@@ -92,7 +92,7 @@ void LodDriver::key_base_vertices(std::size_t vertices) {
 // New slots start unkeyed, with no limit known.
 void LodDriver::grow_vertex_arrays(std::size_t size) {
     if (size <= vertex_key_.size()) return;
-    stop_touching_room();
+    stop_room_prefault();
     vertex_key_.resize(size);
     base_space_.resize(size);
     limit_known_.resize(size);
@@ -267,7 +267,7 @@ void LodDriver::start_refining() {
         mesh_.reserve_limits(settings_.max_triangles / 4);
         // The start's limits then land all over the table: its pages are faulted in on another core
         // meanwhile (33 ms of the main thread's time at 1.5M on a machine with slow page faults).
-        limit_prefault_ = std::make_unique<Prefault>(std::vector{mesh_.limit_table()}, Prefault::Touch::yes);
+        limit_prefault_ = std::make_unique<Prefault>(std::vector{mesh_.limit_table()});
         face_added_.resize(std::max(face_added_.size(), faces));
     }
     key_base_vertices(vertices);
@@ -338,13 +338,13 @@ void LodDriver::prefault_room(std::size_t faces, std::size_t vertices) {
         list->reserve(faces * 2 / 5);
         room.push_back(std::as_writable_bytes(std::span(list->data(), list->capacity())));
     }
-    prefault_ = std::make_unique<Prefault>(std::move(room), Prefault::Touch::yes);
+    prefault_ = std::make_unique<Prefault>(std::move(room));
 }
 
 // The threads read the pages they fault in (prefault.h), so they stop before any of the arrays they
 // cover moves: a run past the room reserved, which only slows what follows. The room's covers the
 // driver's arrays and the mesh's; the table's, only the mesh's table of limits.
-void LodDriver::stop_touching_room() { prefault_.reset(); }
+void LodDriver::stop_room_prefault() { prefault_.reset(); }
 
 void LodDriver::arrays_moving(const Mesh&) {
     prefault_.reset();
@@ -425,7 +425,7 @@ void LodDriver::push(const Candidate& c) {
 void LodDriver::face_added(const Mesh&, FaceId f) {
     if (keys_wait_) return;  // the uniform start pushes every edge afterwards
     if (f.idx >= face_added_.size()) {
-        stop_touching_room();
+        stop_room_prefault();
         face_added_.resize(std::max<std::size_t>(f.idx + 1, 2 * face_added_.size()));
     }
     if (face_added_[f.idx]) return;  // a slot freed and taken again within the step
@@ -507,7 +507,7 @@ void LodDriver::sort_band_list() {
                     [&] { std::sort(middle, band_list_.end(), higher); });
     // Not in place: inplace_merge takes a buffer of half the band from the heap each time, megabytes
     // of fresh pages; the second list was reserved and faulted in with the first.
-    if (band_list_.size() > merged_.capacity()) stop_touching_room();
+    if (band_list_.size() > merged_.capacity()) stop_room_prefault();
     merged_.resize(band_list_.size());
     std::merge(band_list_.begin(), middle, middle, band_list_.end(), merged_.begin(), higher);
     band_list_.swap(merged_);
@@ -519,7 +519,7 @@ std::optional<LodDriver::Candidate> LodDriver::next_candidate() {
     for (;;) {
         ZeroedVector<Candidate>& band = band_list_;
         if (!band_sorted_) {
-            if (bands_.size(band_) > band.capacity()) stop_touching_room();
+            if (bands_.size(band_) > band.capacity()) stop_room_prefault();
             bands_.take(band_, band);
             sort_band_list();
             band_sorted_ = true;

@@ -122,7 +122,7 @@ private:
     void push_new_edges();
     void start_refining();
     std::size_t room_for_run() const;
-    void stop_touching_room();
+    void stop_room_prefault();
     void prefault_room(std::size_t faces, std::size_t vertices);
     int uniform_start_level() const;
     void refine_uniform_start();

@@ -4,7 +4,7 @@ namespace rgb {
 
 MeshRoomPrefault::MeshRoomPrefault(Mesh& mesh, std::size_t faces, std::size_t vertices) : mesh_(mesh) {
     mesh_.add_observer(this);
-    prefault_.emplace(mesh_.room_ahead(faces, vertices), Prefault::Touch::yes);
+    prefault_.emplace(mesh_.room_ahead(faces, vertices));
 }
 
 MeshRoomPrefault::~MeshRoomPrefault() {

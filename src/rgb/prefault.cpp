@@ -33,18 +33,18 @@ bool populate(std::uintptr_t begin, std::uintptr_t end) {
 // the page, or reading it from the kernel, does not spare it): made here, on this thread, it is not
 // the writer's. A read, since the owner may be writing the page already (the value is dropped, so a
 // write that races it changes nothing). Unlike populating, which fails on memory gone, a read of
-// memory unmapped meanwhile would crash: hence Touch::yes only where the owner keeps the ranges.
+// memory unmapped meanwhile would crash: hence the owner keeps the ranges (prefault.h).
 void read_pages(std::uintptr_t begin, std::uintptr_t end) {
     for (std::uintptr_t page = begin; page < end; page += kPage) (void)*reinterpret_cast<const volatile std::byte*>(page);
 }
 
 }  // namespace
 
-Prefault::Prefault(std::vector<std::span<std::byte>> ranges, Touch touch) {
+Prefault::Prefault(std::vector<std::span<std::byte>> ranges) {
     std::erase_if(ranges, [](std::span<std::byte> r) { return r.size() < kStep; });
     if (ranges.empty()) return;
     try {
-        thread_ = std::thread([this, ranges = std::move(ranges), touch] { run(ranges, touch); });
+        thread_ = std::thread([this, ranges = std::move(ranges)] { run(ranges); });
     } catch (const std::system_error&) {
         // No thread: the pages fault in as they are written, as without this.
     }
@@ -55,7 +55,7 @@ Prefault::~Prefault() {
     if (thread_.joinable()) thread_.join();
 }
 
-void Prefault::run(std::vector<std::span<std::byte>> ranges, Touch touch) {
+void Prefault::run(std::vector<std::span<std::byte>> ranges) {
     struct Front {
         std::uintptr_t next, end, share;
     };
@@ -79,7 +79,7 @@ void Prefault::run(std::vector<std::span<std::byte>> ranges, Touch touch) {
             if (f.next >= f.end) continue;
             const std::uintptr_t to = std::min(f.end, f.next + f.share);
             if (!populate(f.next, to)) return;
-            if (touch == Touch::yes) read_pages(f.next, to);
+            read_pages(f.next, to);
             f.next = to;
             left = true;
         }
