@@ -50,7 +50,8 @@ std::shared_ptr<rgb::Mesh> adaptive_mesh(SavedState& saved, const ObjRecords& re
     }
     // All triangles: their corners are the faces, three by three.
     saved.mesh.faces.resize(records.polygons.size());
-    std::memcpy(saved.mesh.faces.data(), corners.data(), corners.size_bytes());
+    // Not with none: a file without faces is refused later, and memcpy takes no null pointers.
+    if (!corners.empty()) std::memcpy(saved.mesh.faces.data(), corners.data(), corners.size_bytes());
     // Colours removed elsewhere stay removed; colours changed elsewhere win over the state, as positions do.
     const bool body_colours =
         !records.colours.empty() && std::find(records.has_colour.begin(), records.has_colour.end(), 0) == records.has_colour.end();

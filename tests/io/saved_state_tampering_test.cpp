@@ -153,6 +153,21 @@ TEST(SavedStateTampering, TheUntouchedFileRestores) {
     EXPECT_TRUE(rgbtest::same_mesh(*loaded.adaptive, mesh));
 }
 
+// Found by the fuzz test: the state read with no faces at all (a null array copied). The header's
+// counts, which would call the file truncated, are made unreadable as the fuzzer made them.
+TEST(SavedStateTampering, AFileWithoutItsFaceLinesIsRefused) {
+    SavedFile file(format_obj(adaptive_octahedron(), {}));
+    std::erase_if(file.lines, [](const std::string& line) { return line.starts_with("f "); });
+    ASSERT_TRUE(file.lines[0].starts_with("# rgbsub mesh: "));
+    file.lines[0].insert(9, ";");
+    try {
+        read_obj_text(file.text(), "edited.obj");
+        ADD_FAILURE() << "a file without faces loaded";
+    } catch (const ObjError& e) {
+        EXPECT_NE(std::string(e.what()).find("no faces"), std::string::npos) << e.what();
+    }
+}
+
 TEST(SavedStateTampering, SwappedAddressesOfTwoLevelsAreDropped) {
     SavedFile file(format_obj(adaptive_octahedron(), {}));
     const auto [i, j] = two_levels(file);
