@@ -6,8 +6,8 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
-#include "rgb/lod_driver.h"
-#include "rgb/mesh.h"
+#include "rgb/lod/lod_driver.h"
+#include "rgb/mesh/mesh.h"
 
 namespace app {
 

@@ -12,7 +12,7 @@
 
 #include "app/loaded_document.h"
 #include "io/mesh_file.h"
-#include "rgb/progress.h"
+#include "rgb/support/progress.h"
 
 namespace app {
 

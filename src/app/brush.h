@@ -4,8 +4,8 @@
 // recorded stroke replays. GL-free.
 #include <glm/vec3.hpp>
 
-#include "rgb/dab.h"
-#include "rgb/mesh.h"
+#include "rgb/lod/dab.h"
+#include "rgb/mesh/mesh.h"
 
 namespace app {
 

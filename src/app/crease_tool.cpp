@@ -7,9 +7,9 @@
 #include <glm/geometric.hpp>
 
 #include "render/surface_geometry.h"
-#include "rgb/sharp_angle.h"
-#include "rgb/triangle_geometry.h"
-#include "rgb/vertex_rules.h"
+#include "rgb/mesh/sharp_angle.h"
+#include "rgb/mesh/vertex_rules.h"
+#include "rgb/support/triangle_geometry.h"
 
 namespace app {
 

@@ -13,8 +13,8 @@
 
 #include "app/surface_picking.h"
 #include "render/surface_geometry.h"
-#include "rgb/mesh.h"
-#include "rgb/sharp_features.h"
+#include "rgb/mesh/mesh.h"
+#include "rgb/rules/sharp_features.h"
 
 namespace app {
 

@@ -1,9 +1,9 @@
 #include "app/detail_job.h"
 
-#include "rgb/lod_criteria.h"
-#include "rgb/lod_driver.h"
-#include "rgb/mesh.h"
-#include "rgb/surface_error.h"
+#include "rgb/lod/lod_criteria.h"
+#include "rgb/lod/lod_driver.h"
+#include "rgb/mesh/mesh.h"
+#include "rgb/values/surface_error.h"
 
 namespace app {
 

@@ -7,7 +7,7 @@
 #include <utility>
 
 #include "io/gltf_export.h"
-#include "rgb/state.h"
+#include "rgb/values/restore_state.h"
 
 namespace app {
 

@@ -15,7 +15,7 @@
 #include "io/mesh_file.h"
 #include "render/mesh_changes.h"
 #include "render/surface_geometry.h"
-#include "rgb/mesh.h"
+#include "rgb/mesh/mesh.h"
 
 namespace app {
 

@@ -15,8 +15,8 @@
 #include "app/stroke_script.h"
 #include "io/atomic_file.h"
 #include "io/obj_error.h"
-#include "rgb/mesh.h"
-#include "rgb/requests.h"
+#include "rgb/lod/requests.h"
+#include "rgb/mesh/mesh.h"
 
 namespace app {
 

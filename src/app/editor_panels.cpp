@@ -10,10 +10,10 @@
 #include "app/crease_panel.h"
 #include "app/detail_panel.h"
 #include "app/editor.h"
-#include "app/hover_tooltip.h"
 #include "app/editor_dialogs.h"
+#include "app/hover_tooltip.h"
 #include "render/colour_map.h"
-#include "rgb/mesh.h"
+#include "rgb/mesh/mesh.h"
 
 namespace app {
 namespace {

@@ -10,7 +10,7 @@
 
 #include "io/base_attributes.h"
 #include "render/surface_appearance.h"
-#include "rgb/uv_layout.h"
+#include "rgb/values/uv_layout.h"
 
 namespace app {
 

@@ -9,9 +9,9 @@
 #include "app/surface_index.h"
 #include "io/base_attributes.h"
 #include "render/surface_geometry.h"
-#include "rgb/mesh.h"
-#include "rgb/progress.h"
-#include "rgb/uv_layout.h"
+#include "rgb/mesh/mesh.h"
+#include "rgb/support/progress.h"
+#include "rgb/values/uv_layout.h"
 
 namespace app {
 

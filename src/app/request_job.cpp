@@ -5,7 +5,7 @@
 #include <utility>
 
 #include "app/request_pieces.h"
-#include "rgb/mesh.h"
+#include "rgb/mesh/mesh.h"
 
 namespace app {
 

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "app/mesh_job.h"
-#include "rgb/requests.h"
+#include "rgb/lod/requests.h"
 
 namespace rgb {
 class Mesh;

@@ -6,8 +6,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "rgb/base_face_index.h"
-#include "rgb/mesh.h"
+#include "rgb/mesh/base_face_index.h"
+#include "rgb/mesh/mesh.h"
 
 namespace app {
 namespace {

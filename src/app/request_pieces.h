@@ -10,8 +10,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "rgb/dab.h"
-#include "rgb/requests.h"
+#include "rgb/lod/dab.h"
+#include "rgb/lod/requests.h"
 
 namespace rgb {
 class Mesh;

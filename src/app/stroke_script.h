@@ -7,7 +7,7 @@
 #include <string>
 
 #include "io/lod_script.h"
-#include "rgb/dab.h"
+#include "rgb/lod/dab.h"
 
 namespace app {
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "rgb/mesh.h"
+#include "rgb/mesh/mesh.h"
 
 namespace app {
 namespace {

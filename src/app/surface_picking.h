@@ -7,7 +7,7 @@
 #include <glm/vec3.hpp>
 
 #include "app/view_camera.h"
-#include "rgb/handles.h"
+#include "rgb/mesh/handles.h"
 
 namespace app {
 

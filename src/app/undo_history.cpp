@@ -2,8 +2,8 @@
 
 #include <utility>
 
-#include "rgb/mesh.h"
-#include "rgb/state.h"
+#include "rgb/mesh/mesh.h"
+#include "rgb/values/restore_state.h"
 
 namespace app {
 

@@ -13,8 +13,8 @@
 #include <optional>
 #include <string>
 
-#include "rgb/journal.h"
-#include "rgb/sharp_features.h"
+#include "rgb/mesh/journal.h"
+#include "rgb/rules/sharp_features.h"
 
 namespace rgb {
 class Mesh;

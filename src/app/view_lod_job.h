@@ -10,8 +10,8 @@
 #include <string>
 
 #include "app/mesh_job.h"
-#include "rgb/screen_detail.h"
-#include "rgb/view_lod.h"
+#include "rgb/lod/screen_detail.h"
+#include "rgb/lod/view_lod.h"
 
 namespace rgb {
 class Mesh;

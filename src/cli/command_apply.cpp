@@ -10,7 +10,7 @@
 #include "cli/progress.h"
 #include "io/lod_script.h"
 #include "io/triangle_limit.h"
-#include "rgb/mesh.h"
+#include "rgb/mesh/mesh.h"
 
 namespace cli {
 

@@ -10,8 +10,8 @@
 #include "cli/progress.h"
 #include "io/detail_edit.h"
 #include "io/triangle_limit.h"
-#include "rgb/mesh.h"
-#include "rgb/requests.h"
+#include "rgb/lod/requests.h"
+#include "rgb/mesh/mesh.h"
 
 namespace cli {
 

@@ -9,15 +9,15 @@
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
-#include "io/atomic_file.h"
 #include "cli/mesh_io_support.h"
+#include "io/atomic_file.h"
 #include "io/mesh_file.h"
 #include "io/triangle_limit.h"
 #include "render/headless.h"
-#include "rgb/loop_geometry.h"
-#include "rgb/lod_criteria.h"
-#include "rgb/mesh.h"
-#include "rgb/screen_detail.h"
+#include "rgb/lod/lod_criteria.h"
+#include "rgb/lod/screen_detail.h"
+#include "rgb/mesh/mesh.h"
+#include "rgb/values/loop_geometry.h"
 
 namespace cli {
 namespace {

@@ -5,8 +5,8 @@
 #include "cli/commands.h"
 #include "io/base_uvs.h"
 #include "io/gltf_export.h"
-#include "rgb/sharp_angle.h"
-#include "rgb/state.h"
+#include "rgb/mesh/sharp_angle.h"
+#include "rgb/values/restore_state.h"
 
 namespace cli {
 

@@ -3,7 +3,7 @@
 #include <array>
 #include <vector>
 
-#include "rgb/parallel.h"
+#include "rgb/support/parallel.h"
 
 namespace cli {
 

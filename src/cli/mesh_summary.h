@@ -4,7 +4,7 @@
 #include <map>
 #include <ostream>
 
-#include "rgb/mesh.h"
+#include "rgb/mesh/mesh.h"
 
 namespace cli {
 

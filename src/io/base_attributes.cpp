@@ -8,7 +8,7 @@
 #include "io/material_library.h"
 #include "io/mesh_file.h"
 #include "io/obj_reader.h"
-#include "rgb/face_location.h"
+#include "rgb/mesh/face_location.h"
 
 namespace rgbio {
 

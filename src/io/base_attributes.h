@@ -20,8 +20,8 @@
 #include <glm/vec3.hpp>
 
 #include "io/loaded_mesh.h"
-#include "rgb/mesh.h"
-#include "rgb/uv_layout.h"
+#include "rgb/mesh/mesh.h"
+#include "rgb/values/uv_layout.h"
 
 namespace rgbio {
 

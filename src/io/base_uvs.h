@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "io/loaded_mesh.h"
-#include "rgb/mesh.h"
-#include "rgb/uv_layout.h"
+#include "rgb/mesh/mesh.h"
+#include "rgb/values/uv_layout.h"
 
 namespace rgbio {
 

@@ -9,8 +9,8 @@
 #include "io/number_format.h"
 #include "io/obj_error.h"
 #include "io/printable_text.h"
-#include "rgb/loop_geometry.h"
-#include "rgb/sharp_edges.h"
+#include "rgb/mesh/sharp_edges.h"
+#include "rgb/values/loop_geometry.h"
 
 namespace rgbio {
 

@@ -22,8 +22,8 @@
 
 #include "io/loaded_mesh.h"
 #include "io/obj_parser.h"
-#include "rgb/mesh.h"
-#include "rgb/sharp_features.h"
+#include "rgb/mesh/mesh.h"
+#include "rgb/rules/sharp_features.h"
 
 namespace rgbio {
 

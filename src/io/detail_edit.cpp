@@ -9,9 +9,9 @@
 
 #include "io/number_format.h"
 #include "io/triangle_limit.h"
-#include "rgb/limit_error.h"
-#include "rgb/mesh.h"
-#include "rgb/surface_error.h"
+#include "rgb/lod/limit_error.h"
+#include "rgb/mesh/mesh.h"
+#include "rgb/values/surface_error.h"
 
 namespace rgbio {
 

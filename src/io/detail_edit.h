@@ -7,8 +7,8 @@
 #include <optional>
 #include <string>
 
-#include "rgb/lod_criteria.h"
-#include "rgb/requests.h"
+#include "rgb/lod/lod_criteria.h"
+#include "rgb/lod/requests.h"
 
 namespace rgbio {
 

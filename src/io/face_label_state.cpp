@@ -5,7 +5,7 @@
 
 #include "io/obj_error.h"
 #include "io/printable_text.h"
-#include "rgb/face_location.h"
+#include "rgb/mesh/face_location.h"
 
 namespace rgbio {
 

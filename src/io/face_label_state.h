@@ -23,7 +23,7 @@
 
 #include "io/loaded_mesh.h"
 #include "io/obj_parser.h"
-#include "rgb/mesh.h"
+#include "rgb/mesh/mesh.h"
 
 namespace rgbio {
 

@@ -14,7 +14,7 @@
 #include <unistd.h>
 
 #include "io/obj_error.h"
-#include "rgb/parallel.h"
+#include "rgb/support/parallel.h"
 
 namespace rgbio {
 

@@ -17,7 +17,7 @@
 #include <string>
 #include <string_view>
 
-#include "rgb/progress.h"
+#include "rgb/support/progress.h"
 
 namespace rgbio {
 

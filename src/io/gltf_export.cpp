@@ -4,12 +4,12 @@
 #include <cctype>
 #include <filesystem>
 
-#include "rgb/face_location.h"
-#include "rgb/limit_normals.h"
-#include "rgb/loop_geometry.h"
-#include "rgb/mesh_uvs.h"
-#include "rgb/uv_evaluator.h"
-#include "rgb/vertex_channel.h"
+#include "rgb/mesh/face_location.h"
+#include "rgb/values/limit_normals.h"
+#include "rgb/values/loop_geometry.h"
+#include "rgb/values/mesh_uvs.h"
+#include "rgb/values/uv_evaluator.h"
+#include "rgb/values/vertex_channel.h"
 
 namespace rgbio {
 

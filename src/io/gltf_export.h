@@ -10,7 +10,7 @@
 
 #include "io/gltf_writer.h"
 #include "io/mesh_file.h"
-#include "rgb/mesh.h"
+#include "rgb/mesh/mesh.h"
 
 namespace rgbio {
 

@@ -3,7 +3,7 @@
 #include <array>
 #include <map>
 
-#include "rgb/face_location.h"
+#include "rgb/mesh/face_location.h"
 
 namespace rgbio {
 

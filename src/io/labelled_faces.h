@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "io/loaded_mesh.h"
-#include "rgb/mesh.h"
+#include "rgb/mesh/mesh.h"
 
 namespace rgbio {
 

@@ -17,9 +17,9 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
-#include "rgb/mesh.h"
-#include "rgb/progress.h"
-#include "rgb/uv_layout.h"
+#include "rgb/mesh/mesh.h"
+#include "rgb/support/progress.h"
+#include "rgb/values/uv_layout.h"
 
 namespace rgbio {
 

@@ -7,8 +7,8 @@
 #include "io/number_format.h"
 #include "io/obj_error.h"
 #include "io/obj_reader.h"
-#include "rgb/lod_driver.h"
-#include "rgb/mesh.h"
+#include "rgb/lod/lod_driver.h"
+#include "rgb/mesh/mesh.h"
 
 namespace rgbio {
 

@@ -26,8 +26,8 @@
 #include <glm/vec3.hpp>
 
 #include "io/detail_edit.h"
-#include "rgb/dab.h"
-#include "rgb/requests.h"
+#include "rgb/lod/dab.h"
+#include "rgb/lod/requests.h"
 
 namespace rgb {
 class Mesh;

@@ -14,11 +14,11 @@
 #include "io/obj_reader.h"
 #include "io/state_format.h"
 #include "io/truncation_check.h"
-#include "rgb/limit_normals.h"
-#include "rgb/loop_geometry.h"
-#include "rgb/mesh_uvs.h"
-#include "rgb/uv_evaluator.h"
-#include "rgb/vertex_channel.h"
+#include "rgb/values/limit_normals.h"
+#include "rgb/values/loop_geometry.h"
+#include "rgb/values/mesh_uvs.h"
+#include "rgb/values/uv_evaluator.h"
+#include "rgb/values/vertex_channel.h"
 
 namespace rgbio {
 

@@ -12,9 +12,9 @@
 
 #include "io/base_attributes.h"
 #include "io/loaded_mesh.h"
-#include "rgb/mesh.h"
-#include "rgb/progress.h"
-#include "rgb/uv_layout.h"
+#include "rgb/mesh/mesh.h"
+#include "rgb/support/progress.h"
+#include "rgb/values/uv_layout.h"
 
 namespace rgbio {
 

@@ -9,7 +9,7 @@
 #include "io/manifold_repair.h"
 #include "io/obj_error.h"
 #include "io/polygon_triangulation.h"
-#include "rgb/bucket_sort.h"
+#include "rgb/support/bucket_sort.h"
 
 namespace rgbio {
 

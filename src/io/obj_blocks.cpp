@@ -5,7 +5,7 @@
 #include <map>
 #include <string>
 
-#include "rgb/parallel.h"
+#include "rgb/support/parallel.h"
 
 namespace rgbio {
 

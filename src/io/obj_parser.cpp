@@ -12,7 +12,7 @@
 #include "io/obj_numbers.h"
 #include "io/printable_text.h"
 #include "io/text_lines.h"
-#include "rgb/parallel.h"
+#include "rgb/support/parallel.h"
 
 namespace rgbio {
 

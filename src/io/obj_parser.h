@@ -21,7 +21,7 @@
 #include <glm/vec3.hpp>
 
 #include "io/loaded_mesh.h"
-#include "rgb/progress.h"
+#include "rgb/support/progress.h"
 
 namespace rgbio {
 

@@ -14,8 +14,8 @@
 #include "io/obj_parser.h"
 #include "io/state_format.h"
 #include "io/truncation_check.h"
-#include "rgb/mesh.h"
-#include "rgb/state.h"
+#include "rgb/mesh/mesh.h"
+#include "rgb/values/restore_state.h"
 
 namespace rgbio {
 

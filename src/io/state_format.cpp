@@ -11,9 +11,9 @@
 #include "io/number_format.h"
 #include "io/obj_error.h"
 #include "io/state_line_reader.h"
-#include "rgb/loop_geometry.h"
-#include "rgb/mesh.h"
-#include "rgb/parallel.h"
+#include "rgb/mesh/mesh.h"
+#include "rgb/support/parallel.h"
+#include "rgb/values/loop_geometry.h"
 
 namespace rgbio {
 

@@ -47,8 +47,8 @@
 #include <vector>
 
 #include "io/obj_parser.h"
-#include "rgb/state.h"
-#include "rgb/uv_layout.h"
+#include "rgb/mesh/state.h"
+#include "rgb/values/uv_layout.h"
 
 namespace rgbio {
 

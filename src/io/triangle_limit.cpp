@@ -4,8 +4,8 @@
 
 #include <unistd.h>
 
-#include "rgb/mesh.h"
-#include "rgb/requests.h"
+#include "rgb/lod/requests.h"
+#include "rgb/mesh/mesh.h"
 
 namespace rgbio {
 

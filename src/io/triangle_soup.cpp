@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <functional>
 
-#include "rgb/bucket_sort.h"
+#include "rgb/support/bucket_sort.h"
 
 namespace rgbio {
 

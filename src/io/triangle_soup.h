@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "rgb/mesh.h"
+#include "rgb/mesh/mesh.h"
 
 namespace rgbio {
 

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <utility>
 
-#include "rgb/mesh.h"
-#include "rgb/navigation.h"
+#include "rgb/mesh/mesh.h"
+#include "rgb/mesh/navigation.h"
 
 namespace render {
 

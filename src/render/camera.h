@@ -8,7 +8,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
-#include "rgb/screen_detail.h"
+#include "rgb/lod/screen_detail.h"
 
 namespace render {
 

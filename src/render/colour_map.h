@@ -2,7 +2,7 @@
 // Display colours, GL-free so the editor's legend and the shaders agree (the renderer uploads these).
 #include <glm/vec3.hpp>
 
-#include "rgb/face_type.h"
+#include "rgb/rules/face_type.h"
 
 namespace render {
 

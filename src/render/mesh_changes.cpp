@@ -2,7 +2,7 @@
 
 #include <new>
 
-#include "rgb/mesh.h"
+#include "rgb/mesh/mesh.h"
 
 namespace render {
 

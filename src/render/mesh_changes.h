@@ -5,8 +5,8 @@
 // reports that everything may have changed.
 #include <vector>
 
-#include "rgb/handles.h"
-#include "rgb/observer.h"
+#include "rgb/mesh/handles.h"
+#include "rgb/mesh/observer.h"
 
 namespace rgb {
 class Mesh;

@@ -14,7 +14,7 @@
 #include "render/shader_program.h"
 #include "render/sharp_edge_lines.h"
 #include "render/surface_buffer.h"
-#include "rgb/mesh.h"
+#include "rgb/mesh/mesh.h"
 
 namespace render {
 namespace {

@@ -1,8 +1,8 @@
 #include "render/sharp_edge_lines.h"
 
 #include "render/surface_geometry.h"
-#include "rgb/mesh.h"
-#include "rgb/sharp_edges.h"
+#include "rgb/mesh/mesh.h"
+#include "rgb/mesh/sharp_edges.h"
 
 namespace render {
 

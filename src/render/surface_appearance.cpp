@@ -4,13 +4,13 @@
 #include <cmath>
 #include <limits>
 
-#include "rgb/face_location.h"
-#include "rgb/mesh.h"
-#include "rgb/mesh_uvs.h"
-#include "rgb/parallel.h"
-#include "rgb/uv_evaluator.h"
-#include "rgb/vertex_channel.h"
-#include "rgb/vertex_rules.h"
+#include "rgb/mesh/face_location.h"
+#include "rgb/mesh/mesh.h"
+#include "rgb/mesh/vertex_rules.h"
+#include "rgb/support/parallel.h"
+#include "rgb/values/mesh_uvs.h"
+#include "rgb/values/uv_evaluator.h"
+#include "rgb/values/vertex_channel.h"
 
 namespace render {
 namespace {

@@ -16,8 +16,8 @@
 #include <glm/vec3.hpp>
 
 #include "render/texture_layers.h"
-#include "rgb/handles.h"
-#include "rgb/uv_layout.h"
+#include "rgb/mesh/handles.h"
+#include "rgb/values/uv_layout.h"
 
 namespace rgb {
 class Mesh;

@@ -5,9 +5,9 @@
 #include <glm/geometric.hpp>
 
 #include "render/mesh_changes.h"
-#include "rgb/loop_geometry.h"
-#include "rgb/mesh.h"
-#include "rgb/vertex_rules.h"
+#include "rgb/mesh/mesh.h"
+#include "rgb/mesh/vertex_rules.h"
+#include "rgb/values/loop_geometry.h"
 
 namespace render {
 namespace {

@@ -19,8 +19,8 @@
 
 #include "render/camera.h"
 #include "render/surface_appearance.h"
-#include "rgb/face_type.h"
-#include "rgb/handles.h"
+#include "rgb/mesh/handles.h"
+#include "rgb/rules/face_type.h"
 
 namespace rgb {
 class Mesh;

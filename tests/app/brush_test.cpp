@@ -9,7 +9,7 @@
 #include "app/brush.h"
 #include "app/job_pacer.h"
 #include "app/stroke_sampler.h"
-#include "rgb/mesh.h"
+#include "rgb/mesh/mesh.h"
 
 namespace app {
 namespace {

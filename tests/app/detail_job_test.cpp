@@ -8,8 +8,8 @@
 #include "app/detail_job.h"
 #include "io/detail_edit.h"
 #include "io/lod_script.h"
-#include "rgb/invariants.h"
-#include "rgb/mesh.h"
+#include "rgb/mesh/invariants.h"
+#include "rgb/mesh/mesh.h"
 #include "support/same_mesh.h"
 #include "support/test_meshes.h"
 

@@ -14,7 +14,7 @@
 
 #include "app/document.h"
 #include "io/obj_reader.h"
-#include "rgb/requests.h"
+#include "rgb/lod/requests.h"
 
 namespace app {
 namespace {

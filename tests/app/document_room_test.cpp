@@ -6,8 +6,8 @@
 #include "app/document.h"
 #include "editor_fixture.h"
 #include "render/surface_geometry.h"
-#include "rgb/refine.h"
-#include "rgb/requests.h"
+#include "rgb/lod/refine.h"
+#include "rgb/lod/requests.h"
 
 namespace app {
 namespace {

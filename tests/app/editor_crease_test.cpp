@@ -11,9 +11,9 @@
 #include "app/editor.h"
 #include "editor_fixture.h"
 #include "io/mesh_file.h"
-#include "rgb/loop_geometry.h"
-#include "rgb/requests.h"
-#include "rgb/sharp_angle.h"
+#include "rgb/lod/requests.h"
+#include "rgb/mesh/sharp_angle.h"
+#include "rgb/values/loop_geometry.h"
 #include "support/same_mesh.h"
 
 namespace app {

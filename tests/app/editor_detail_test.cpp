@@ -17,11 +17,11 @@
 #include "io/lod_script.h"
 #include "io/mesh_file.h"
 #include "render/camera.h"
-#include "rgb/invariants.h"
-#include "rgb/lod_criteria.h"
-#include "rgb/loop_geometry.h"
-#include "rgb/mesh.h"
-#include "rgb/screen_detail.h"
+#include "rgb/lod/lod_criteria.h"
+#include "rgb/lod/screen_detail.h"
+#include "rgb/mesh/invariants.h"
+#include "rgb/mesh/mesh.h"
+#include "rgb/values/loop_geometry.h"
 #include "support/same_mesh.h"
 
 namespace app {

@@ -14,8 +14,8 @@
 
 #include "app/editor.h"
 #include "editor_fixture.h"
-#include "rgb/invariants.h"
-#include "rgb/state.h"
+#include "rgb/mesh/invariants.h"
+#include "rgb/mesh/state.h"
 #include "support/same_mesh.h"
 
 namespace app {

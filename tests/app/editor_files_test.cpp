@@ -17,10 +17,10 @@
 
 #include "app/background_task.h"
 #include "app/editor.h"
-#include "io/base_uvs.h"
 #include "editor_fixture.h"
+#include "io/base_uvs.h"
 #include "io/mesh_file.h"
-#include "rgb/refine.h"
+#include "rgb/lod/refine.h"
 #include "support/same_mesh.h"
 
 namespace app {

@@ -8,8 +8,8 @@
 #include <glm/vec4.hpp>
 
 #include "editor_fixture.h"
-#include "rgb/loop_geometry.h"
-#include "rgb/mesh.h"
+#include "rgb/mesh/mesh.h"
+#include "rgb/values/loop_geometry.h"
 #include "support/same_mesh.h"
 
 namespace app {

@@ -17,8 +17,8 @@
 #include "editor_fixture.h"
 #include "io/lod_script.h"
 #include "io/mesh_file.h"
-#include "rgb/invariants.h"
-#include "rgb/loop_geometry.h"
+#include "rgb/mesh/invariants.h"
+#include "rgb/values/loop_geometry.h"
 #include "support/same_mesh.h"
 #include "support/same_slots.h"
 

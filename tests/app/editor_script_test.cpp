@@ -8,14 +8,14 @@
 
 #include <gtest/gtest.h>
 
+#include "editor_fixture.h"
 #include "io/mesh_file.h"
-#include "rgb/invariants.h"
-#include "rgb/state.h"
-#include "rgb/requests.h"
+#include "rgb/lod/requests.h"
+#include "rgb/mesh/invariants.h"
+#include "rgb/mesh/state.h"
+#include "stroke_support.h"
 #include "support/same_mesh.h"
 #include "support/same_slots.h"
-#include "editor_fixture.h"
-#include "stroke_support.h"
 
 namespace app {
 namespace {

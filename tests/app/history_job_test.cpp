@@ -8,7 +8,7 @@
 
 #include "app/editor.h"
 #include "editor_fixture.h"
-#include "rgb/mesh.h"
+#include "rgb/mesh/mesh.h"
 #include "support/same_slots.h"
 
 namespace app {

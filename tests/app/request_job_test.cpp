@@ -7,9 +7,9 @@
 
 #include "app/request_job.h"
 #include "app/request_pieces.h"
-#include "rgb/dab.h"
-#include "rgb/mesh.h"
-#include "rgb/refine.h"
+#include "rgb/lod/dab.h"
+#include "rgb/lod/refine.h"
+#include "rgb/mesh/mesh.h"
 #include "support/random_operations.h"
 #include "support/same_mesh.h"
 #include "support/test_meshes.h"

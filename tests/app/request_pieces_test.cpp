@@ -6,9 +6,9 @@
 #include <gtest/gtest.h>
 
 #include "app/request_pieces.h"
-#include "rgb/dab.h"
-#include "rgb/mesh.h"
-#include "rgb/requests.h"
+#include "rgb/lod/dab.h"
+#include "rgb/lod/requests.h"
+#include "rgb/mesh/mesh.h"
 #include "support/random_operations.h"
 #include "support/same_mesh.h"
 #include "support/test_meshes.h"

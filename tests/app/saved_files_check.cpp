@@ -13,8 +13,8 @@
 
 #include "app/editor.h"
 #include "io/mesh_file.h"
-#include "rgb/invariants.h"
-#include "rgb/state.h"
+#include "rgb/mesh/invariants.h"
+#include "rgb/mesh/state.h"
 #include "stroke_support.h"
 #include "support/same_mesh.h"
 

@@ -1,6 +1,6 @@
 #pragma once
 // Meshes built in code for the editor's tests, small enough to reason about by hand.
-#include "rgb/mesh.h"
+#include "rgb/mesh/mesh.h"
 
 namespace app::test {
 

@@ -2,7 +2,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "rgb/loop_geometry.h"
+#include "rgb/values/loop_geometry.h"
 
 namespace app::test {
 

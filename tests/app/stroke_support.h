@@ -5,7 +5,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "rgb/mesh.h"
+#include "rgb/mesh/mesh.h"
 
 namespace app::test {
 

@@ -12,8 +12,8 @@
 #include "app/surface_index.h"
 #include "render/mesh_changes.h"
 #include "render/surface_geometry.h"
-#include "rgb/mesh.h"
-#include "rgb/requests.h"
+#include "rgb/lod/requests.h"
+#include "rgb/mesh/mesh.h"
 #include "support/random_operations.h"
 #include "support/test_meshes.h"
 

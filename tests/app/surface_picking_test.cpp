@@ -15,10 +15,10 @@
 
 #include "app/surface_index.h"
 #include "render/surface_geometry.h"
-#include "rgb/dab.h"
-#include "rgb/loop_geometry.h"
-#include "rgb/mesh.h"
-#include "rgb/refine.h"
+#include "rgb/lod/dab.h"
+#include "rgb/lod/refine.h"
+#include "rgb/mesh/mesh.h"
+#include "rgb/values/loop_geometry.h"
 #include "small_meshes.h"
 
 namespace app {

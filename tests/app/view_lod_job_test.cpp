@@ -9,9 +9,9 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "app/view_lod_job.h"
-#include "rgb/invariants.h"
-#include "rgb/loop_geometry.h"
-#include "rgb/mesh.h"
+#include "rgb/mesh/invariants.h"
+#include "rgb/mesh/mesh.h"
+#include "rgb/values/loop_geometry.h"
 #include "support/same_mesh.h"
 #include "support/test_meshes.h"
 

@@ -24,7 +24,7 @@
 #include "app/editor.h"
 #include "app/job_pacer.h"
 #include "app/loaded_document.h"
-#include "rgb/refine.h"
+#include "rgb/lod/refine.h"
 
 namespace {
 

@@ -6,7 +6,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include "rgb/refine.h"
+#include "rgb/lod/refine.h"
 #include "support/openmesh_loop.h"
 #include "support/random_operations.h"
 #include "support/test_meshes.h"

@@ -24,11 +24,11 @@
 #include "io/detail_edit.h"
 #include "io/mesh_file.h"
 #include "render/camera.h"
-#include "rgb/base_mesh.h"
-#include "rgb/refine.h"
-#include "rgb/requests.h"
-#include "rgb/surface_error.h"
-#include "rgb/view_lod.h"
+#include "rgb/lod/refine.h"
+#include "rgb/lod/requests.h"
+#include "rgb/lod/view_lod.h"
+#include "rgb/mesh/base_mesh.h"
+#include "rgb/values/surface_error.h"
 
 namespace {
 

@@ -18,8 +18,8 @@
 
 #include "app/loaded_document.h"
 #include "io/mesh_file.h"
-#include "rgb/progress.h"
-#include "rgb/refine.h"
+#include "rgb/lod/refine.h"
+#include "rgb/support/progress.h"
 
 namespace {
 

@@ -14,10 +14,10 @@
 #include "render/headless.h"
 #include "render/offscreen_context.h"
 #include "render/renderer.h"
-#include "rgb/loop_geometry.h"
-#include "rgb/mesh.h"
-#include "rgb/refine.h"
-#include "rgb/requests.h"
+#include "rgb/lod/refine.h"
+#include "rgb/lod/requests.h"
+#include "rgb/mesh/mesh.h"
+#include "rgb/values/loop_geometry.h"
 
 namespace {
 

@@ -1,6 +1,6 @@
 // One table of exit codes, true for every command: each subcommand is run through each row of the
-// README's table (ok, usage error, bad input, I/O or resource failure) and must exit with the code
-// the README gives that row. The expected codes are read from README.md, not from the program.
+// table in docs/cli.md (ok, usage error, bad input, I/O or resource failure) and must exit with the
+// code the table gives that row. The expected codes are read from docs/cli.md, not from the program.
 #include <fstream>
 #include <map>
 #include <regex>
@@ -19,14 +19,14 @@
 
 namespace {
 
-// Rows "| 0 | ok | ..." of the README's exit code table: meaning -> code.
-std::map<std::string, int> readme_exit_codes() {
-    std::ifstream readme(RGBSUB_SOURCE_DIR "/README.md");
+// Rows "| 0 | ok | ..." of docs/cli.md's exit code table: meaning -> code.
+std::map<std::string, int> documented_exit_codes() {
+    std::ifstream readme(RGBSUB_SOURCE_DIR "/docs/cli.md");
     std::map<std::string, int> codes;
     const std::regex row(R"(^\| (\d) \| ([^|]+?) \|)");
     bool in_table = false;
     for (std::string line; std::getline(readme, line);) {
-        if (line == "### Exit codes") in_table = true;
+        if (line == "## Exit codes") in_table = true;
         else if (in_table && line.starts_with("#")) break;
         std::smatch match;
         if (in_table && std::regex_search(line, match, row)) codes[match[2]] = std::stoi(match[1]);
@@ -36,16 +36,16 @@ std::map<std::string, int> readme_exit_codes() {
 
 struct Case {
     std::vector<std::string> args;
-    std::string row;  // the README's meaning
+    std::string row;  // the table's meaning
     std::string shell_prefix = {};
 };
 
 class ExitCodes : public rgbio::test::ScratchFolder {};
 
-TEST_F(ExitCodes, EveryCommandFollowsTheReadmeTable) {
-    const std::map<std::string, int> table = readme_exit_codes();
+TEST_F(ExitCodes, EveryCommandFollowsTheDocumentedTable) {
+    const std::map<std::string, int> table = documented_exit_codes();
     ASSERT_EQ(table, (std::map<std::string, int>{{"ok", 0}, {"usage error", 1}, {"bad input", 2}, {"I/O or resource failure", 3}}))
-        << "the README's table changed: update this test's cases with it";
+        << "docs/cli.md's table changed: update this test's cases with it";
 
     write("mesh.obj", rgbio::test::kOctahedron);
     // A face naming a vertex the file does not have: no repair can make a mesh of it.

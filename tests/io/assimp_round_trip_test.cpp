@@ -13,7 +13,7 @@
 #include "io/mesh_file.h"
 #include "io/obj_error.h"
 #include "io/obj_reader.h"
-#include "rgb/requests.h"
+#include "rgb/lod/requests.h"
 
 namespace rgbio {
 namespace {

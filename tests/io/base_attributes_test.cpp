@@ -13,7 +13,7 @@
 #include "io/base_attributes.h"
 #include "io/mesh_file.h"
 #include "obj_test_support.h"
-#include "rgb/requests.h"
+#include "rgb/lod/requests.h"
 #include "scratch_folder.h"
 
 namespace rgbio {

@@ -17,7 +17,7 @@
 #include "cli/dispatch.h"
 #include "io/obj_reader.h"
 #include "obj_test_support.h"
-#include "rgb/mesh.h"
+#include "rgb/mesh/mesh.h"
 #include "scratch_folder.h"
 #include "support/request_oracle.h"
 #include "support/uniform_loop_oracle.h"

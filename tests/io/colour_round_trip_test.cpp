@@ -16,7 +16,7 @@
 #include "io/mesh_file.h"
 #include "io/obj_error.h"
 #include "obj_test_support.h"
-#include "rgb/requests.h"
+#include "rgb/lod/requests.h"
 #include "scratch_folder.h"
 
 namespace rgbio {

@@ -17,7 +17,7 @@
 #include "io/obj_error.h"
 #include "io/obj_reader.h"
 #include "obj_test_support.h"
-#include "rgb/requests.h"
+#include "rgb/lod/requests.h"
 #include "scratch_folder.h"
 #include "support/same_mesh.h"
 

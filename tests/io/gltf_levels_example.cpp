@@ -13,7 +13,7 @@
 #include "io/gltf_export.h"
 #include "io/mesh_file.h"
 #include "io/obj_error.h"
-#include "rgb/requests.h"
+#include "rgb/lod/requests.h"
 #include "textured_grid.h"
 
 namespace {

@@ -17,18 +17,18 @@
 
 #include "io/atomic_file.h"
 #include "io/mesh_file.h"
-#include "io/obj_error.h"
 #include "io/number_format.h"
+#include "io/obj_error.h"
 #include "io/obj_reader.h"
 #include "mesh_state_difference.h"
 #include "obj_test_support.h"
-#include "rgb/invariants.h"
-#include "rgb/loop_geometry.h"
-#include "rgb/refine.h"
-#include "rgb/requests.h"
-#include "rgb/state.h"
-#include "support/same_mesh.h"
+#include "rgb/lod/refine.h"
+#include "rgb/lod/requests.h"
+#include "rgb/mesh/invariants.h"
+#include "rgb/values/loop_geometry.h"
+#include "rgb/values/restore_state.h"
 #include "support/oracle_limit.h"
+#include "support/same_mesh.h"
 
 namespace rgbio {
 namespace {

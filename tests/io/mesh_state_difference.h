@@ -6,7 +6,7 @@
 #include <cstring>
 #include <string>
 
-#include "rgb/state.h"
+#include "rgb/mesh/state.h"
 
 namespace rgbio::test {
 

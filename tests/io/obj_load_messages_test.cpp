@@ -7,8 +7,8 @@
 #include "io/mesh_file.h"
 #include "io/polygon_triangulation.h"
 #include "obj_test_support.h"
-#include "rgb/refine.h"
-#include "rgb/requests.h"
+#include "rgb/lod/refine.h"
+#include "rgb/lod/requests.h"
 
 namespace rgbio {
 namespace {

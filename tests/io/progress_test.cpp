@@ -13,8 +13,8 @@
 #include "io/obj_error.h"
 #include "io/obj_reader.h"
 #include "obj_test_support.h"
-#include "rgb/progress.h"
-#include "rgb/refine.h"
+#include "rgb/lod/refine.h"
+#include "rgb/support/progress.h"
 #include "scratch_folder.h"
 #include "support/same_mesh.h"
 

@@ -9,9 +9,9 @@
 #include "io/mesh_file.h"
 #include "io/obj_reader.h"
 #include "obj_test_support.h"
-#include "rgb/loop_geometry.h"
-#include "rgb/requests.h"
-#include "rgb/state.h"
+#include "rgb/lod/requests.h"
+#include "rgb/values/loop_geometry.h"
+#include "rgb/values/restore_state.h"
 
 namespace rgbio {
 namespace {

@@ -16,7 +16,7 @@
 #include "io/number_format.h"
 #include "io/obj_reader.h"
 #include "obj_test_support.h"
-#include "rgb/requests.h"
+#include "rgb/lod/requests.h"
 #include "support/same_mesh.h"
 
 namespace rgbio {

@@ -15,11 +15,11 @@
 #include "io/number_format.h"
 #include "io/obj_reader.h"
 #include "obj_test_support.h"
-#include "rgb/face_location.h"
-#include "rgb/mesh_uvs.h"
-#include "rgb/refine.h"
-#include "rgb/requests.h"
-#include "rgb/uv_evaluator.h"
+#include "rgb/lod/refine.h"
+#include "rgb/lod/requests.h"
+#include "rgb/mesh/face_location.h"
+#include "rgb/values/mesh_uvs.h"
+#include "rgb/values/uv_evaluator.h"
 #include "textured_grid.h"
 
 namespace rgbio {

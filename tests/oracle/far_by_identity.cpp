@@ -4,7 +4,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "rgb/loop_geometry.h"
+#include "rgb/values/loop_geometry.h"
 #include "support/oracle_checks.h"
 #include "support/test_meshes.h"
 

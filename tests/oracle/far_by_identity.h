@@ -11,8 +11,8 @@
 #include <gtest/gtest.h>
 
 #include "osd_far.h"
-#include "rgb/base_mesh.h"
-#include "rgb/mesh.h"
+#include "rgb/mesh/base_mesh.h"
+#include "rgb/mesh/mesh.h"
 #include "support/identity_tracker.h"
 #include "support/uniform_loop_oracle.h"
 

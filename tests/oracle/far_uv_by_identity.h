@@ -12,7 +12,7 @@
 #include <glm/vec2.hpp>
 
 #include "far_by_identity.h"
-#include "rgb/uv_layout.h"
+#include "rgb/values/uv_layout.h"
 
 namespace osdoracle {
 

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "osd_far.h"
-#include "rgb/requests.h"
+#include "rgb/lod/requests.h"
 
 namespace osdoracle {
 

@@ -14,10 +14,10 @@
 #include "crease_meshes.h"
 #include "crease_tags.h"
 #include "far_by_identity.h"
-#include "rgb/invariants.h"
-#include "rgb/limit_error.h"
-#include "rgb/lod_criteria.h"
-#include "rgb/loop_geometry.h"
+#include "rgb/lod/limit_error.h"
+#include "rgb/lod/lod_criteria.h"
+#include "rgb/mesh/invariants.h"
+#include "rgb/values/loop_geometry.h"
 #include "vertex_neighbourhood.h"
 
 namespace osdoracle {

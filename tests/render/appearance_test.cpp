@@ -13,8 +13,8 @@
 #include "render/headless.h"
 #include "render/mesh_changes.h"
 #include "render/surface_geometry.h"
-#include "rgb/mesh.h"
-#include "rgb/requests.h"
+#include "rgb/lod/requests.h"
+#include "rgb/mesh/mesh.h"
 #include "test_meshes.h"
 
 namespace {

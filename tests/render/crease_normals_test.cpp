@@ -13,10 +13,10 @@
 
 #include "render/mesh_changes.h"
 #include "render/surface_geometry.h"
-#include "rgb/mesh.h"
-#include "rgb/refine.h"
-#include "rgb/requests.h"
-#include "rgb/sharp_angle.h"
+#include "rgb/lod/refine.h"
+#include "rgb/lod/requests.h"
+#include "rgb/mesh/mesh.h"
+#include "rgb/mesh/sharp_angle.h"
 #include "support/obj_reader.h"
 
 namespace {

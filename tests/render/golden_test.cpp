@@ -21,9 +21,9 @@
 #include "gl_test_support.h"
 #include "render/headless.h"
 #include "render/surface_geometry.h"
-#include "rgb/mesh.h"
-#include "rgb/refine.h"
-#include "rgb/requests.h"
+#include "rgb/lod/refine.h"
+#include "rgb/lod/requests.h"
+#include "rgb/mesh/mesh.h"
 #include "test_meshes.h"
 
 namespace {

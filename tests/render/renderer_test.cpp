@@ -8,8 +8,8 @@
 #include "render/offscreen_context.h"
 #include "render/renderer.h"
 #include "render/shader_program.h"
-#include "rgb/mesh.h"
-#include "rgb/refine.h"
+#include "rgb/lod/refine.h"
+#include "rgb/mesh/mesh.h"
 #include "test_meshes.h"
 
 namespace {

@@ -12,10 +12,10 @@
 #include "gl_test_support.h"
 #include "render/headless.h"
 #include "render/surface_geometry.h"
-#include "rgb/mesh.h"
-#include "rgb/loop_geometry.h"
-#include "rgb/refine.h"
-#include "rgb/requests.h"
+#include "rgb/lod/refine.h"
+#include "rgb/lod/requests.h"
+#include "rgb/mesh/mesh.h"
+#include "rgb/values/loop_geometry.h"
 #include "test_meshes.h"
 
 namespace {

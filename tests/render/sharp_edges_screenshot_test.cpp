@@ -10,9 +10,9 @@
 
 #include "render/headless.h"
 #include "render/offscreen_context.h"
-#include "rgb/mesh.h"
-#include "rgb/refine.h"
-#include "rgb/sharp_angle.h"
+#include "rgb/lod/refine.h"
+#include "rgb/mesh/mesh.h"
+#include "rgb/mesh/sharp_angle.h"
 #include "support/obj_reader.h"
 
 namespace {

@@ -10,9 +10,9 @@
 
 #include "render/mesh_changes.h"
 #include "render/surface_geometry.h"
-#include "rgb/mesh.h"
-#include "rgb/refine.h"
-#include "rgb/requests.h"
+#include "rgb/lod/refine.h"
+#include "rgb/lod/requests.h"
+#include "rgb/mesh/mesh.h"
 #include "test_meshes.h"
 
 namespace {

@@ -1,6 +1,6 @@
 #pragma once
 // Small meshes built in code for the renderer tests.
-#include "rgb/mesh.h"
+#include "rgb/mesh/mesh.h"
 
 namespace render_test {
 

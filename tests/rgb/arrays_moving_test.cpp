@@ -7,10 +7,10 @@
 
 #include <gtest/gtest.h>
 
-#include "rgb/loop_geometry.h"
-#include "rgb/mesh.h"
-#include "rgb/observer.h"
-#include "rgb/refine.h"
+#include "rgb/lod/refine.h"
+#include "rgb/mesh/mesh.h"
+#include "rgb/mesh/observer.h"
+#include "rgb/values/loop_geometry.h"
 #include "support/test_meshes.h"
 
 namespace rgbtest {

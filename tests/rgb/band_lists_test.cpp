@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "rgb/band_lists.h"
+#include "rgb/lod/band_lists.h"
 
 namespace rgbtest {
 namespace {

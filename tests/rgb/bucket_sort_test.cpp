@@ -11,7 +11,7 @@
 
 #include <gtest/gtest.h>
 
-#include "rgb/bucket_sort.h"
+#include "rgb/support/bucket_sort.h"
 
 namespace {
 

@@ -10,11 +10,11 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
-#include "rgb/dab.h"
-#include "rgb/invariants.h"
-#include "rgb/requests.h"
-#include "rgb/state.h"
-#include "rgb/triangle_geometry.h"
+#include "rgb/lod/dab.h"
+#include "rgb/lod/requests.h"
+#include "rgb/mesh/invariants.h"
+#include "rgb/support/triangle_geometry.h"
+#include "rgb/values/restore_state.h"
 #include "support/identity_tracker.h"
 #include "support/oracle_checks.h"
 #include "support/request_oracle.h"

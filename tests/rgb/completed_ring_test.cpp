@@ -6,10 +6,10 @@
 
 #include <gtest/gtest.h>
 
-#include "rgb/completed_ring.h"
-#include "rgb/hierarchy_evaluator.h"
-#include "rgb/lod_driver.h"
-#include "rgb/mesh.h"
+#include "rgb/lod/lod_driver.h"
+#include "rgb/mesh/mesh.h"
+#include "rgb/values/completed_ring.h"
+#include "rgb/values/hierarchy_evaluator.h"
 #include "support/test_meshes.h"
 
 namespace rgbtest {

@@ -7,10 +7,10 @@
 
 #include <gtest/gtest.h>
 
-#include "rgb/invariants.h"
-#include "rgb/lod_criteria.h"
-#include "rgb/mesh.h"
-#include "rgb/requests.h"
+#include "rgb/lod/lod_criteria.h"
+#include "rgb/lod/requests.h"
+#include "rgb/mesh/invariants.h"
+#include "rgb/mesh/mesh.h"
 #include "support/clear_threshold.h"
 #include "support/identity_tracker.h"
 #include "support/request_oracle.h"

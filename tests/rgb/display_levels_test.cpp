@@ -6,11 +6,11 @@
 
 #include <gtest/gtest.h>
 
-#include "rgb/hierarchy_evaluator.h"
-#include "rgb/lod_driver.h"
-#include "rgb/loop_geometry.h"
-#include "rgb/mesh.h"
-#include "rgb/requests.h"
+#include "rgb/lod/lod_driver.h"
+#include "rgb/lod/requests.h"
+#include "rgb/mesh/mesh.h"
+#include "rgb/values/hierarchy_evaluator.h"
+#include "rgb/values/loop_geometry.h"
 #include "support/test_meshes.h"
 
 namespace rgbtest {

@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "rgb/half_octave.h"
+#include "rgb/lod/half_octave.h"
 
 namespace rgbtest {
 namespace {

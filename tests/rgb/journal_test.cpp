@@ -8,11 +8,11 @@
 
 #include <gtest/gtest.h>
 
-#include "rgb/invariants.h"
-#include "rgb/journal.h"
-#include "rgb/mesh.h"
-#include "rgb/refine.h"
-#include "rgb/requests.h"
+#include "rgb/lod/refine.h"
+#include "rgb/lod/requests.h"
+#include "rgb/mesh/invariants.h"
+#include "rgb/mesh/journal.h"
+#include "rgb/mesh/mesh.h"
 #include "support/random_operations.h"
 #include "support/same_mesh.h"
 #include "support/same_slots.h"

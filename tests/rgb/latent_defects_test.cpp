@@ -7,10 +7,11 @@
 
 #include <gtest/gtest.h>
 
-#include "rgb/mesh.h"
-#include "rgb/observer.h"
-#include "rgb/operators.h"
-#include "rgb/refine.h"
+#include "rgb/lod/refine.h"
+#include "rgb/mesh/mesh.h"
+#include "rgb/mesh/observer.h"
+#include "rgb/mesh/operators.h"
+#include "rgb/values/loop_split.h"
 #include "support/test_meshes.h"
 
 namespace rgbtest {

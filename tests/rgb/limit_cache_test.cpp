@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "rgb/limit_cache.h"
+#include "rgb/support/limit_cache.h"
 
 namespace {
 

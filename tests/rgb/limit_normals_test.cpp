@@ -15,10 +15,10 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
-#include "rgb/hierarchy_evaluator.h"
-#include "rgb/limit_normals.h"
-#include "rgb/loop_geometry.h"
-#include "rgb/requests.h"
+#include "rgb/lod/requests.h"
+#include "rgb/values/hierarchy_evaluator.h"
+#include "rgb/values/limit_normals.h"
+#include "rgb/values/loop_geometry.h"
 #include "support/test_meshes.h"
 #include "support/uniform_loop_oracle.h"
 

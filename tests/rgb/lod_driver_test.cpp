@@ -9,12 +9,12 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
-#include "rgb/base_mesh.h"
-#include "rgb/invariants.h"
-#include "rgb/lod_driver.h"
-#include "rgb/mesh.h"
-#include "rgb/requests.h"
-#include "rgb/sharp_features.h"
+#include "rgb/lod/lod_driver.h"
+#include "rgb/lod/requests.h"
+#include "rgb/mesh/base_mesh.h"
+#include "rgb/mesh/invariants.h"
+#include "rgb/mesh/mesh.h"
+#include "rgb/rules/sharp_features.h"
 #include "support/clear_threshold.h"
 #include "support/identity_tracker.h"
 #include "support/request_oracle.h"

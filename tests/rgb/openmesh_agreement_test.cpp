@@ -10,8 +10,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "rgb/loop_geometry.h"
-#include "rgb/refine.h"
+#include "rgb/lod/refine.h"
+#include "rgb/values/loop_geometry.h"
 #include "support/openmesh_loop.h"
 #include "support/oracle_checks.h"
 #include "support/triangle_keys.h"

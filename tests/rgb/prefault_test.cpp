@@ -12,10 +12,10 @@
 
 #include <gtest/gtest.h>
 
-#include "rgb/mesh_room_prefault.h"
-#include "rgb/prefault.h"
-#include "rgb/refine.h"
-#include "rgb/zeroed_vector.h"
+#include "rgb/lod/refine.h"
+#include "rgb/mesh/mesh_room_prefault.h"
+#include "rgb/support/prefault.h"
+#include "rgb/support/zeroed_vector.h"
 #include "support/same_mesh.h"
 #include "support/test_meshes.h"
 

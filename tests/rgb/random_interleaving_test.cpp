@@ -9,8 +9,8 @@
 
 #include <gtest/gtest.h>
 
-#include "rgb/operators.h"
-#include "rgb/refine.h"
+#include "rgb/lod/refine.h"
+#include "rgb/mesh/operators.h"
 #include "support/oracle_checks.h"
 #include "support/random_operations.h"
 

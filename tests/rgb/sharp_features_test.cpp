@@ -7,10 +7,10 @@
 
 #include <gtest/gtest.h>
 
-#include "rgb/base_mesh.h"
-#include "rgb/dart_masks.h"
-#include "rgb/sharp_angle.h"
-#include "rgb/vertex_rules.h"
+#include "rgb/mesh/base_mesh.h"
+#include "rgb/mesh/sharp_angle.h"
+#include "rgb/mesh/vertex_rules.h"
+#include "rgb/rules/dart_masks.h"
 #include "support/obj_reader.h"
 #include "support/test_meshes.h"
 

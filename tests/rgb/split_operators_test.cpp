@@ -3,7 +3,7 @@
 // bisections are covered by worked example A (worked_examples_test.cpp).
 #include <gtest/gtest.h>
 
-#include "rgb/invariants.h"
+#include "rgb/mesh/invariants.h"
 
 #include "support/checked_operators.h"
 #include "support/face_expectations.h"

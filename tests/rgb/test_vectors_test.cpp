@@ -13,8 +13,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "rgb/loop_geometry.h"
-#include "rgb/refine.h"
+#include "rgb/lod/refine.h"
+#include "rgb/values/loop_geometry.h"
 #include "support/identity_tracker.h"
 #include "support/test_meshes.h"
 

@@ -7,12 +7,12 @@
 
 #include <gtest/gtest.h>
 
-#include "rgb/invariants.h"
-#include "rgb/limit_error.h"
-#include "rgb/lod_criteria.h"
-#include "rgb/mesh.h"
-#include "rgb/requests.h"
-#include "rgb/surface_error.h"
+#include "rgb/lod/limit_error.h"
+#include "rgb/lod/lod_criteria.h"
+#include "rgb/lod/requests.h"
+#include "rgb/mesh/invariants.h"
+#include "rgb/mesh/mesh.h"
+#include "rgb/values/surface_error.h"
 #include "support/identity_tracker.h"
 #include "support/oracle_surface.h"
 #include "support/same_mesh.h"

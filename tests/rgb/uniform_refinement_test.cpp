@@ -2,7 +2,7 @@
 // vertex (to 1e-12 of the bounding-box diagonal) and face by face (orientation included), k = 1..4.
 #include <gtest/gtest.h>
 
-#include "rgb/refine.h"
+#include "rgb/lod/refine.h"
 #include "support/oracle_checks.h"
 #include "support/uniform_loop_oracle.h"
 

@@ -8,13 +8,14 @@
 
 #include <gtest/gtest.h>
 
-#include "rgb/hierarchy_evaluator.h"
-#include "rgb/loop_geometry.h"
-#include "rgb/mesh.h"
-#include "rgb/operators.h"
-#include "rgb/refine.h"
-#include "rgb/state.h"
-#include "rgb/vertex_channel.h"
+#include "rgb/lod/refine.h"
+#include "rgb/mesh/mesh.h"
+#include "rgb/mesh/operators.h"
+#include "rgb/values/hierarchy_evaluator.h"
+#include "rgb/values/loop_geometry.h"
+#include "rgb/values/loop_split.h"
+#include "rgb/values/restore_state.h"
+#include "rgb/values/vertex_channel.h"
 #include "support/test_meshes.h"
 
 namespace {

@@ -12,13 +12,13 @@
 #include <gtest/gtest.h>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "rgb/invariants.h"
-#include "rgb/lod_criteria.h"
-#include "rgb/mesh.h"
-#include "rgb/operators.h"
-#include "rgb/requests.h"
-#include "rgb/screen_detail.h"
-#include "rgb/view_lod.h"
+#include "rgb/lod/lod_criteria.h"
+#include "rgb/lod/requests.h"
+#include "rgb/lod/screen_detail.h"
+#include "rgb/lod/view_lod.h"
+#include "rgb/mesh/invariants.h"
+#include "rgb/mesh/mesh.h"
+#include "rgb/mesh/operators.h"
 #include "support/same_mesh.h"
 #include "support/test_meshes.h"
 

@@ -7,8 +7,9 @@
 
 #include <gtest/gtest.h>
 
-#include "rgb/operators.h"
-#include "rgb/refine.h"
+#include "rgb/lod/refine.h"
+#include "rgb/mesh/operators.h"
+#include "rgb/values/loop_split.h"
 #include "support/checked_operators.h"
 #include "support/face_expectations.h"
 #include "support/identity_tracker.h"

@@ -17,8 +17,8 @@
 #include "io/mesh_state_difference.h"
 #include "io/obj_error.h"
 #include "io/obj_reader.h"
-#include "rgb/invariants.h"
-#include "rgb/state.h"
+#include "rgb/mesh/invariants.h"
+#include "rgb/mesh/state.h"
 
 namespace {
 

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "rgb/values/loop_split.h"
 #include "support/operator_printing.h"
 
 namespace rgbtest {

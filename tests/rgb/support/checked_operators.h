@@ -1,7 +1,7 @@
 #pragma once
 // Operator calls for configuration tests that first check which operator the core says applies.
-#include "rgb/mesh.h"
-#include "rgb/operators.h"
+#include "rgb/mesh/mesh.h"
+#include "rgb/mesh/operators.h"
 
 namespace rgbtest {
 

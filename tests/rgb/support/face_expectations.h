@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "rgb/mesh.h"
+#include "rgb/mesh/mesh.h"
 
 namespace rgbtest {
 

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "rgb/mesh.h"
+#include "rgb/mesh/mesh.h"
 
 namespace rgbtest {
 

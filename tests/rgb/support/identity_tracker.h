@@ -6,7 +6,7 @@
 #include <set>
 #include <vector>
 
-#include "rgb/observer.h"
+#include "rgb/mesh/observer.h"
 #include "support/uniform_loop_oracle.h"
 
 namespace rgbtest {

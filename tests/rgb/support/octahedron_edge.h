@@ -3,7 +3,7 @@
 // and one of its edges a-b with the two faces (a, b, x) and (b, a, y), as in spec §2.1.
 #include <utility>
 
-#include "rgb/mesh.h"
+#include "rgb/mesh/mesh.h"
 #include "support/test_meshes.h"
 
 namespace rgbtest {

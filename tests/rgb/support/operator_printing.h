@@ -2,7 +2,7 @@
 // Readable gtest output for the core's operator kinds (found by argument-dependent lookup).
 #include <ostream>
 
-#include "rgb/operators.h"
+#include "rgb/mesh/operators.h"
 
 namespace rgb {
 

@@ -5,8 +5,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "rgb/invariants.h"
-#include "rgb/loop_geometry.h"
+#include "rgb/mesh/invariants.h"
+#include "rgb/values/loop_geometry.h"
 #include "support/triangle_keys.h"
 
 namespace rgbtest {

@@ -3,7 +3,7 @@
 // gtest AssertionResults that say which vertex or face differs and how.
 #include <gtest/gtest.h>
 
-#include "rgb/mesh.h"
+#include "rgb/mesh/mesh.h"
 #include "support/identity_tracker.h"
 #include "support/test_meshes.h"
 

@@ -4,7 +4,7 @@
 // its own copy of the weights) is applied to its ring in the oracle's mesh of its level.
 #include <glm/vec3.hpp>
 
-#include "rgb/mesh.h"
+#include "rgb/mesh/mesh.h"
 #include "support/uniform_loop_oracle.h"
 
 namespace rgbtest {

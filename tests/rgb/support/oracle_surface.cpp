@@ -6,7 +6,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "rgb/loop_geometry.h"
+#include "rgb/values/loop_geometry.h"
 
 namespace rgbtest {
 

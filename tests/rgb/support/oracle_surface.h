@@ -10,7 +10,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "rgb/mesh.h"
+#include "rgb/mesh/mesh.h"
 #include "support/identity_tracker.h"
 #include "support/uniform_loop_oracle.h"
 

@@ -2,7 +2,7 @@
 
 #include <vector>
 
-#include "rgb/operators.h"
+#include "rgb/mesh/operators.h"
 
 namespace rgbtest {
 

@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <random>
 
-#include "rgb/mesh.h"
+#include "rgb/mesh/mesh.h"
 
 namespace rgbtest {
 

@@ -5,7 +5,7 @@
 // are matched by their corners' positions.
 #include <gtest/gtest.h>
 
-#include "rgb/mesh.h"
+#include "rgb/mesh/mesh.h"
 
 namespace rgbtest {
 

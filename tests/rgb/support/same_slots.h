@@ -6,7 +6,7 @@
 // (it is a navigation start, not part of what the mesh is).
 #include <gtest/gtest.h>
 
-#include "rgb/mesh.h"
+#include "rgb/mesh/mesh.h"
 
 namespace rgbtest {
 

@@ -8,7 +8,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "rgb/mesh.h"
+#include "rgb/mesh/mesh.h"
 
 namespace rgbtest {
 

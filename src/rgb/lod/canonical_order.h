@@ -1,0 +1,89 @@
+#pragma once
+// The canonical order of the LOD driver (README "What a request means": a budget; spec §3.3), as
+// the definition states it. The speed machinery that walks it fast is in lod_driver*.cpp.
+//
+// Every possible split of the hierarchy is an edge of some uniform level Σk, named by the vertex it
+// would insert (its midpoint). Its key, a 64-bit number, is
+//   1. the half-octave band of its criterion value (by default the edge's length in the uniform
+//      Loop mesh of its level): floor(2 log2 value), biased to 1..65535 in the top 16 bits;
+//   2. then the Morton order of its base-space midpoint in the base mesh's bounding box, 16 bits
+//      per axis interleaved (x highest) in the low 48 bits;
+//   3. lowered to the keys of its two endpoints, so that no vertex outranks a vertex it needs (a base
+//      vertex's key is the largest there is).
+// Key 0 means "not wanted": the value is not above the threshold, or the edge is at the level cap.
+// Between equal keys, the base-space midpoint decides, by x, then y, then z.
+//
+// A run's result is the minimal RGB mesh holding every wanted vertex whose key is above a threshold,
+// with the lowest threshold that keeps the mesh within the budget: the driver splits in this order,
+// highest first, and stops before the split that would cross the budget. All of it is a function of
+// the hierarchy (base-space positions, levels, values of uniform meshes): no storage order or history
+// reaches it.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <tuple>
+
+#include <glm/common.hpp>
+#include <glm/vec3.hpp>
+
+#include "rgb/lod/half_octave.h"
+
+namespace rgb {
+
+// A base vertex's key: above every split's, so that a split's key is never lowered by it.
+inline constexpr std::uint64_t kBaseVertexKey = std::numeric_limits<std::uint64_t>::max();
+
+// The criterion's band: half octaves of the value, biased to 1..65535 (0 is kept for "not wanted").
+inline std::uint64_t value_band(double value) {
+    if (!(value > 0.0)) return 1;
+    if (!std::isfinite(value)) return 65535;
+    return static_cast<std::uint64_t>(std::clamp(half_octave(value), -32767L, 32767L) + 32768L);
+}
+
+// The low 21 bits of x spread to every third bit position (Morton interleaving).
+inline std::uint64_t spread_bits(std::uint64_t x) {
+    x &= 0x1fffff;
+    x = (x | (x << 32)) & 0x1f00000000ffffull;
+    x = (x | (x << 16)) & 0x1f0000ff0000ffull;
+    x = (x | (x << 8)) & 0x100f00f00f00f00full;
+    x = (x | (x << 4)) & 0x10c30c30c30c30c3ull;
+    x = (x | (x << 2)) & 0x1249249249249249ull;
+    return x;
+}
+
+// The base mesh's bounding box mapped onto the 16-bit grid of the Morton order.
+struct MortonFrame {
+    static constexpr int kBitsPerAxis = 16;
+    glm::dvec3 lo{0.0}, scale{1.0};
+
+    static MortonFrame of_box(const glm::dvec3& lo, const glm::dvec3& hi) {
+        MortonFrame frame;
+        frame.lo = lo;
+        frame.scale = double((1 << kBitsPerAxis) - 1) / glm::max(hi - lo, glm::dvec3(1e-300));
+        return frame;
+    }
+    // The Morton code of a base-space point (x in the highest bit of each triple).
+    std::uint64_t code(const glm::dvec3& point) const {
+        const glm::dvec3 cell = (point - lo) * scale;
+        std::uint64_t morton = 0;
+        for (int i = 0; i < 3; ++i) morton |= spread_bits(static_cast<std::uint64_t>(std::clamp(cell[i], 0.0, 65535.0))) << (2 - i);
+        return morton;
+    }
+};
+
+// The key of a wanted split (steps 1-3 above) from its value, its base-space midpoint and its
+// endpoints' keys.
+inline std::uint64_t split_key(const MortonFrame& frame, double value, const glm::dvec3& midpoint, std::uint64_t end_key_a,
+                               std::uint64_t end_key_b) {
+    return std::min((value_band(value) << 48) | frame.code(midpoint), std::min(end_key_a, end_key_b));
+}
+
+// Whether the split (key x, base-space midpoint mx) comes before (y, my): the higher key, and between
+// equal keys the greater midpoint by x, y, z.
+inline bool comes_before(std::uint64_t x, const glm::dvec3& mx, std::uint64_t y, const glm::dvec3& my) {
+    if (x != y) return x > y;
+    return std::tie(mx.x, mx.y, mx.z) > std::tie(my.x, my.y, my.z);
+}
+
+}  // namespace rgb

@@ -1,0 +1,147 @@
+#include "rgb/lod/lod_criteria.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <tuple>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "rgb/lod/refine.h"
+#include "rgb/mesh/mesh.h"
+#include "rgb/values/hierarchy_evaluator.h"
+
+namespace rgb {
+
+namespace {
+
+// Collects the faces each operator creates, and counts.
+class DetailLog : public MeshObserver {
+public:
+    explicit DetailLog(Mesh& mesh) : mesh_(mesh) { mesh_.add_observer(this); }
+    ~DetailLog() override { mesh_.remove_observer(this); }
+    DetailLog(const DetailLog&) = delete;
+    DetailLog& operator=(const DetailLog&) = delete;
+
+    void vertex_added(const Mesh&, VertexId, VertexId, VertexId) override { ++report.splits; }
+    void vertex_removed(const Mesh&, VertexId) override { ++report.removals; }
+    void face_added(const Mesh&, FaceId f) override { added.push_back(f); }
+
+    std::vector<FaceId> added;
+    LodReport report;
+
+private:
+    Mesh& mesh_;
+};
+
+std::vector<FaceId> region_faces(const Mesh& mesh, const std::optional<Sphere>& sphere) {
+    if (sphere) return faces_meeting(mesh, *sphere);
+    std::vector<FaceId> faces;
+    faces.reserve(mesh.num_faces());
+    for (FaceId f : mesh.faces()) faces.push_back(f);
+    return faces;
+}
+
+void check(const DetailRequest& r) {
+    if (!r.value) throw std::invalid_argument("a detail request needs a criterion");
+    if (!(r.threshold >= 0.0) || !std::isfinite(r.threshold)) throw std::invalid_argument("a detail threshold must be finite and not negative");
+    if (r.sphere && !(r.sphere->radius > 0.0 && std::isfinite(r.sphere->radius) && std::isfinite(r.sphere->centre.x) &&
+                      std::isfinite(r.sphere->centre.y) && std::isfinite(r.sphere->centre.z)))
+        throw std::invalid_argument("a request's sphere needs a finite centre and a positive radius");
+}
+
+void coarsen(Mesh& mesh, const DetailRequest& r) {
+    std::vector<VertexId> doomed;
+    std::vector<bool> seen(mesh.vertex_capacity(), false);
+    for (FaceId f : region_faces(mesh, r.sphere))
+        for (VertexId v : mesh.face_vertices(f)) {
+            if (mesh.level(v) == 0 || seen[v.idx]) continue;
+            seen[v.idx] = true;
+            if (r.sphere && glm::distance(mesh.base_space_position(v), r.sphere->centre) > r.sphere->radius) continue;
+            const PointStencil s = parent_stencil(mesh.base(), mesh.address(v));
+            if (!(r.value(s.ends[0], s.ends[1]) > r.threshold)) doomed.push_back(v);
+        }
+    // Finest first; a vertex may be gone already as a dependent of another (removals add no vertices,
+    // so a live slot is still the same vertex). The result does not depend on the order.
+    std::stable_sort(doomed.begin(), doomed.end(), [&](VertexId a, VertexId b) { return mesh.level(a) > mesh.level(b); });
+    for (VertexId v : doomed)
+        if (mesh.is_live(v)) remove_with_dependents(mesh, v);
+}
+
+void refine(Mesh& mesh, const DetailRequest& r, DetailLog& log) {
+    std::vector<FaceId> stack = region_faces(mesh, r.sphere);
+    while (!stack.empty()) {
+        const FaceId f = stack.back();
+        stack.pop_back();
+        if (!mesh.is_live(f)) continue;
+        for (int i = 0; i < 3; ++i) {
+            const HalfedgeId h = Mesh::halfedge(f, i);
+            const EdgeType t = mesh.edge_type(h);
+            if (t.colour != Colour::Green) continue;
+            const VertexId a = mesh.from_vertex(h), b = mesh.to_vertex(h);
+            if (r.sphere && !segment_meets_sphere(mesh.base_space_position(a), mesh.base_space_position(b), *r.sphere)) continue;
+            if (!(r.value(mesh.address(a), mesh.address(b)) > r.threshold)) continue;
+            if (t.level >= r.max_level) {
+                log.report.level_cap_bound = true;
+                continue;
+            }
+            log.added.clear();
+            refine_edge(mesh, h);
+            stack.insert(stack.end(), log.added.begin(), log.added.end());
+            if (mesh.num_faces() > r.max_triangles) {
+                log.report.budget_bound = true;
+                return;
+            }
+            break;  // f is gone; the faces that replaced it are on the stack
+        }
+    }
+}
+
+}  // namespace
+
+bool segment_meets_sphere(glm::dvec3 p, glm::dvec3 q, const Sphere& sphere) {
+    if (std::tie(q.x, q.y, q.z) < std::tie(p.x, p.y, p.z)) std::swap(p, q);
+    const glm::dvec3 d = q - p;
+    const double length2 = glm::dot(d, d);
+    const double t = length2 > 0.0 ? std::clamp(glm::dot(sphere.centre - p, d) / length2, 0.0, 1.0) : 0.0;
+    return glm::distance(p + t * d, sphere.centre) <= sphere.radius;
+}
+
+EdgeValue edge_length_value(const std::shared_ptr<const BaseMesh>& base) {
+    auto evaluator = std::make_shared<HierarchyEvaluator>(*base);
+    return [base, evaluator](const SurfacePoint& a, const SurfacePoint& b) {
+        const int level = std::max(a.level, b.level);
+        return glm::distance(evaluator->control_point(a, level), evaluator->control_point(b, level));
+    };
+}
+
+SplitValue on_mesh(EdgeValue value) {
+    return [value = std::move(value)](const Mesh& mesh, VertexId a, VertexId b, int) { return value(mesh.address(a), mesh.address(b)); };
+}
+
+LodSettings whole_surface_settings(const DetailRequest& r) {
+    check(r);
+    LodSettings settings;
+    settings.value = on_mesh(r.value);
+    settings.threshold = r.threshold;
+    settings.max_triangles = r.max_triangles;
+    settings.max_level = r.max_level;
+    settings.split_past_dependencies = true;
+    return settings;
+}
+
+LodReport apply_detail_request(Mesh& mesh, const DetailRequest& r) {
+    check(r);
+    if (r.kind == RequestKind::Set && !r.sphere) {
+        LodDriver driver(mesh, whole_surface_settings(r));
+        driver.run();
+        return driver.report();
+    }
+    DetailLog log(mesh);
+    if (r.kind != RequestKind::Refine) coarsen(mesh, r);
+    if (r.kind != RequestKind::Coarsen) refine(mesh, r, log);
+    return log.report;
+}
+
+}  // namespace rgb

@@ -1,0 +1,68 @@
+#include "rgb/rules/loop_rules.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace rgb {
+
+namespace {
+// cos(2 pi / n), exact where it is rational, so that the regular weights (valence 6, and 3 and 4) are
+// the exact fractions of the spec and not their floating-point neighbours.
+double cos_two_pi_over(int n) {
+    switch (n) {
+        case 3: return -0.5;
+        case 4: return 0.0;
+        case 6: return 0.5;
+        default: return std::cos(2.0 * std::numbers::pi / n);
+    }
+}
+
+bool lexicographic_less(const glm::dvec3& a, const glm::dvec3& b) {
+    if (a.x != b.x) return a.x < b.x;
+    if (a.y != b.y) return a.y < b.y;
+    return a.z < b.z;
+}
+}  // namespace
+
+double loop_alpha(int valence) {
+    const double t = 3.0 + 2.0 * cos_two_pi_over(valence);
+    return 5.0 / 8.0 - t * t / 64.0;
+}
+
+double loop_gamma(int valence, bool boundary) {
+    if (boundary) return 0.25;
+    return 5.0 / 8.0 - loop_alpha(valence);
+}
+
+double loop_limit_ring_weight(int valence) {
+    const double a = loop_alpha(valence);
+    return 8.0 * a / (3.0 + 8.0 * a);
+}
+
+glm::dvec3 interior_edge_point(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, const glm::dvec3& d) {
+    return 0.375 * (a + b) + 0.125 * (c + d);
+}
+
+glm::dvec3 boundary_edge_point(const glm::dvec3& a, const glm::dvec3& b) { return 0.5 * (a + b); }
+
+glm::dvec3 interior_limit(const glm::dvec3& centre, std::span<glm::dvec3> ring) {
+    std::sort(ring.begin(), ring.end(), lexicographic_less);
+    glm::dvec3 sum(0.0);
+    for (const glm::dvec3& p : ring) sum += p;
+    const int n = static_cast<int>(ring.size());
+    const double c = loop_limit_ring_weight(n);
+    return (1.0 - c) * centre + (c / n) * sum;
+}
+
+glm::dvec3 boundary_limit(const glm::dvec3& centre, const glm::dvec3& u, const glm::dvec3& w) {
+    return (2.0 / 3.0) * centre + (1.0 / 6.0) * (u + w);
+}
+
+glm::dvec3 closed_form(const glm::dvec3& own_level, const glm::dvec3& limit, double gamma, int steps) {
+    double g = 1.0;
+    for (int j = 0; j < steps; ++j) g *= gamma;
+    return g * own_level + (1.0 - g) * limit;
+}
+
+}  // namespace rgb

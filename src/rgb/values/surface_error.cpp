@@ -1,0 +1,67 @@
+#include "rgb/values/surface_error.h"
+
+#include <array>
+
+#include <glm/geometric.hpp>
+
+#include "rgb/mesh/face_location.h"
+#include "rgb/mesh/mesh.h"
+#include "rgb/values/hierarchy_evaluator.h"
+#include "rgb/values/hierarchy_triangle.h"
+#include "rgb/values/loop_geometry.h"
+
+namespace rgb {
+
+namespace {
+
+using Numerators = std::array<std::uint32_t, 3>;
+
+std::int64_t cross(const Numerators& p, const Numerators& q, const Numerators& r) {
+    const std::int64_t ux = std::int64_t(q[1]) - p[1], uy = std::int64_t(q[2]) - p[2];
+    const std::int64_t vx = std::int64_t(r[1]) - p[1], vy = std::int64_t(r[2]) - p[2];
+    return ux * vy - uy * vx;
+}
+
+}  // namespace
+
+SurfaceError displayed_surface_error(const Mesh& mesh) {
+    const BaseMesh& base = mesh.base();
+    HierarchyEvaluator evaluator(base);
+    SurfaceError out;
+    for (FaceId f : mesh.faces()) {
+        const int level = mesh.level(f);
+        const std::uint32_t g = base_face_of(mesh, f);
+        std::array<Numerators, 3> corners;
+        std::array<glm::dvec3, 3> shown;
+        for (int c = 0; c < 3; ++c) {
+            const VertexId v = mesh.face_vertices(f)[static_cast<std::size_t>(c)];
+            corners[static_cast<std::size_t>(c)] = numerators_at(*in_face(base, mesh.address(v), g), level + 2);
+            shown[static_cast<std::size_t>(c)] = displayed_position(mesh, v);
+        }
+        // The samples of the face are those of the triangle of Σl it is a piece of that lie in it.
+        HierarchyTriangle parent;
+        parent.face = g;
+        parent.level = level;
+        const std::array<SurfacePoint, 3> t = parent_triangle(mesh, f, g);
+        for (std::size_t c = 0; c < 3; ++c) parent.corners[c] = numerators_at(t[c], level);
+        const std::int64_t area = cross(corners[0], corners[1], corners[2]);
+        for (const SampleWeights& w : sample_weights()) {
+            const SurfacePoint s = parent.sample(w);
+            const Numerators q = numerators_at(s, level + 2);
+            const std::int64_t w0 = cross(q, corners[1], corners[2]), w1 = cross(corners[0], q, corners[2]),
+                               w2 = cross(corners[0], corners[1], q);
+            if (w0 < 0 || w1 < 0 || w2 < 0) continue;
+            const std::array<double, 3> weights{double(w0) / double(area), double(w1) / double(area), double(w2) / double(area)};
+            const glm::dvec3 limit = evaluator.limit_position(s);
+            const double error = glm::distance(interpolate(shown, weights), limit);
+            ++out.samples;
+            if (error > out.max_error) {
+                out.max_error = error;
+                out.where = limit;
+            }
+        }
+    }
+    return out;
+}
+
+}  // namespace rgb
