@@ -1,6 +1,6 @@
 #pragma once
 // The level-of-detail brush as the editor holds it: a mode, a target level, a radius in screen pixels
-// or world units, a falloff. A dab becomes an rgb::Dab in base space (rgb/dab.h), the same request a
+// or world units, a falloff. A dab becomes an rgb::Dab in base space (rgb/lod/dab.h), the same request a
 // recorded stroke replays. GL-free.
 #include <glm/vec3.hpp>
 
@@ -25,7 +25,7 @@ struct BrushSettings {
     float falloff = 0.5f;
     // Paint only faces facing the camera and connected to the hit through the surface.
     bool paint_through = false;
-    // What a dab asks for: the target level, a detail size or a tolerance (README "Detail by size,
+    // What a dab asks for: the target level, a detail size or a tolerance (docs/requests.md "Detail by size,
     // accuracy and view"): no edge longer than the size, or the surface shown within the tolerance
     // of the limit surface, in the ball, as coarse as that allows (set; refine only adds, coarsen
     // only removes); the amount in screen pixels where the dab lands (relative detail) or in the

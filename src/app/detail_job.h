@@ -1,7 +1,7 @@
 #pragma once
-// Detail by size or by accuracy over the whole mesh, from the editor's panel (README "Detail by
+// Detail by size or by accuracy over the whole mesh, from the editor's panel (docs/requests.md "Detail by
 // size, accuracy and view"): the request `refine --max-edge` / `--tolerance` and the script's
-// `max-edge` / `tolerance` lines make (io/detail_edit.h), the LOD driver run a slice per frame so the
+// `max-edge` / `tolerance` lines make (io/script/detail_edit.h), the LOD driver run a slice per frame so the
 // window keeps drawing and Esc can stop it. Finished, it is exactly the command line's result and
 // says so as its script line; a tolerance also measures the largest error reached.
 #include <chrono>
@@ -11,7 +11,7 @@
 #include <string>
 
 #include "app/mesh_job.h"
-#include "io/detail_edit.h"
+#include "io/script/detail_edit.h"
 
 namespace rgb {
 class Mesh;

@@ -13,8 +13,8 @@
 #include "app/flood_fill.h"
 #include "app/request_pieces.h"
 #include "app/stroke_script.h"
-#include "io/atomic_file.h"
-#include "io/obj_error.h"
+#include "io/files/atomic_file.h"
+#include "io/obj/obj_error.h"
 #include "rgb/lod/requests.h"
 #include "rgb/mesh/mesh.h"
 

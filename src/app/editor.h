@@ -35,10 +35,10 @@
 #include "app/stroke_sampler.h"
 #include "app/stroke_script.h"
 #include "app/surface_picking.h"
-#include "app/view_lod_job.h"
 #include "app/view_camera.h"
+#include "app/view_lod_job.h"
 #include "io/mesh_file.h"
-#include "io/triangle_limit.h"
+#include "io/script/triangle_limit.h"
 
 namespace app {
 

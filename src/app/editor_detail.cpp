@@ -1,10 +1,10 @@
-// Detail by size, accuracy and view in the editor (README "Detail by size, accuracy and view"): the
+// Detail by size, accuracy and view in the editor (docs/requests.md "Detail by size, accuracy and view"): the
 // whole-mesh max-edge and tolerance edits, and the view-dependent mode with its freeze.
 #include <stdexcept>
 
 #include "app/editor.h"
-#include "io/lod_script.h"
-#include "io/triangle_limit.h"
+#include "io/script/lod_script.h"
+#include "io/script/triangle_limit.h"
 #include "render/camera.h"
 
 namespace app {

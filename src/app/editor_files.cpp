@@ -5,8 +5,8 @@
 #include <utility>
 
 #include "app/editor.h"
-#include "io/atomic_file.h"
-#include "io/obj_error.h"
+#include "io/files/atomic_file.h"
+#include "io/obj/obj_error.h"
 
 namespace app {
 

@@ -4,8 +4,8 @@
 #include <map>
 #include <stdexcept>
 
-#include "io/gltf_writer.h"
-#include "io/printable_text.h"
+#include "io/gltf/gltf_writer.h"
+#include "io/obj/printable_text.h"
 #include "render/image.h"
 
 namespace app {

@@ -21,7 +21,7 @@ public:
     virtual bool is_stroke() const { return false; }
     // Stops early: what is done stays, what is not is dropped.
     virtual void cancel() = 0;
-    // What the job did as lines of a level-of-detail script (io/lod_script.h), when a script can
+    // What the job did as lines of a level-of-detail script (io/script/lod_script.h), when a script can
     // say it exactly.
     virtual std::optional<std::string> script() const = 0;
     // Whether the editor opens an undoable edit around the job (an undo or redo crosses a step of

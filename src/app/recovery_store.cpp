@@ -7,7 +7,7 @@
 
 #include <signal.h>
 
-#include "io/atomic_file.h"
+#include "io/files/atomic_file.h"
 
 namespace app {
 namespace {

@@ -1,6 +1,6 @@
 #pragma once
 // Work that may take seconds cut into canonical pieces, applied one after another coarse to fine, so
-// that the display can follow and the work can stop between pieces (README, "What a request means"):
+// that the display can follow and the work can stop between pieces (docs/requests.md, "What a request means"):
 //   - a refine request to level N is its requests to levels 1..N (the bands of its taper capped at
 //     each level): each asks a subset of what it asks, and together they ask all of it;
 //   - a request restricted to a batch of the base faces it meets asks a part of what it asks, and

@@ -1,12 +1,12 @@
 #pragma once
-// A stroke's dabs as lines of a level-of-detail script (io/lod_script.h): a `brush` line whenever the
+// A stroke's dabs as lines of a level-of-detail script (io/script/lod_script.h): a `brush` line whenever the
 // dab's base-space radius or settings differ from the previous dab's (always before the first), then
 // `dab X Y Z [VX VY VZ]`. Numbers are written so that they read back exactly, so `rgbsub apply`
 // makes the same requests the editor made.
 #include <optional>
 #include <string>
 
-#include "io/lod_script.h"
+#include "io/script/lod_script.h"
 #include "rgb/lod/dab.h"
 
 namespace app {

@@ -1,12 +1,12 @@
 #pragma once
 // Undo/redo per stroke or action, bit for bit, within a memory bound.
 //
-// Each step is the record of rgb::Journal (rgb/journal.h) for one edit: starting an edit costs O(1),
+// Each step is the record of rgb::Journal (rgb/mesh/journal.h) for one edit: starting an edit costs O(1),
 // undoing or redoing it costs in proportion to what it changed, and so does its memory. Undo and
 // redo change the mesh in place through its ordinary operations, so whatever observes the mesh
 // (the renderer's buffers, the picking index) updates only what changed.
 //
-// A step also keeps what it did as script lines (io/lod_script.h) when a script can say it, so the
+// A step also keeps what it did as script lines (io/script/lod_script.h) when a script can say it, so the
 // edits in effect can be saved as a script that `rgbsub apply` replays to the same mesh.
 #include <cstddef>
 #include <deque>

@@ -1,6 +1,6 @@
 #pragma once
-// The editor's view-dependent mode (README "Detail by size, accuracy and view"): a job that never
-// ends by itself; every frame it hands the updater (rgb/view_lod.h) the camera as it is now and lets it
+// The editor's view-dependent mode (docs/requests.md "Detail by size, accuracy and view"): a job that never
+// ends by itself; every frame it hands the updater (rgb/lod/view_lod.h) the camera as it is now and lets it
 // work a time slice, so detail follows the camera while it orbits. Freezing it (cancel) ends the job
 // and leaves the current mesh as an ordinary editable state: one undoable step like any job.
 #include <chrono>

@@ -8,8 +8,8 @@
 #include "cli/commands.h"
 #include "cli/mesh_io_support.h"
 #include "cli/progress.h"
-#include "io/lod_script.h"
-#include "io/triangle_limit.h"
+#include "io/script/lod_script.h"
+#include "io/script/triangle_limit.h"
 #include "rgb/mesh/mesh.h"
 
 namespace cli {

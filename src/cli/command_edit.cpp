@@ -7,8 +7,8 @@
 #include "app/headless_frame.h"
 #include "cli/arguments.h"
 #include "cli/commands.h"
-#include "io/atomic_file.h"
 #include "cli/mesh_io_support.h"
+#include "io/files/atomic_file.h"
 #include "io/obj_reader.h"
 
 namespace cli {

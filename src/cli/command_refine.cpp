@@ -8,8 +8,8 @@
 #include "cli/commands.h"
 #include "cli/mesh_io_support.h"
 #include "cli/progress.h"
-#include "io/detail_edit.h"
-#include "io/triangle_limit.h"
+#include "io/script/detail_edit.h"
+#include "io/script/triangle_limit.h"
 #include "rgb/lod/requests.h"
 #include "rgb/mesh/mesh.h"
 

@@ -8,8 +8,8 @@
 #include <system_error>
 
 #include "cli/commands.h"
-#include "io/obj_error.h"
-#include "io/triangle_limit.h"
+#include "io/obj/obj_error.h"
+#include "io/script/triangle_limit.h"
 
 namespace cli {
 namespace {

@@ -14,7 +14,7 @@ namespace {
 // serve the next phase: malloc maps nothing itself (the largest threshold it accepts is 32 MiB, and
 // at millions of triangles most arrays are larger: reading a 6.3M-triangle OBJ took 399k page faults
 // with that threshold, 267k without mapping, 6.3 -> 4.7 s), and never gives the heap's top back.
-// Arrays meant to arrive untouched (rgb/zeroed_vector.h) map themselves.
+// Arrays meant to arrive untouched (rgb/support/zeroed_vector.h) map themselves.
 void keep_freed_memory_for_reuse() {
     mallopt(M_MMAP_MAX, 0);
     mallopt(M_TRIM_THRESHOLD, 1 << 30);

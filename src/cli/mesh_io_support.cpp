@@ -26,7 +26,7 @@ void save_output(const char* command, const rgb::Mesh& mesh, const std::string& 
     // Both writers have the exact texture coordinates of every level from the UV layout.
     std::vector<std::string> warnings = rgbio::dropped_attributes(mesh, save.attributes.get(), save.uvs != nullptr);
     if (mesh.base().has_sharp_features() && (save.normals || rgbio::is_gltf_path(file)))
-        warnings.push_back("the normals follow the smooth Loop rules (rgb/limit_normals.h): at vertices on tagged creases and "
+        warnings.push_back("the normals follow the smooth Loop rules (rgb/values/limit_normals.h): at vertices on tagged creases and "
                            "corners, whose tangent masks are not implemented yet, they are approximate");
     print_warnings(command, file, warnings);
     rgbio::save_mesh_file(mesh, file, save);

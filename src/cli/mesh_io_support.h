@@ -29,7 +29,7 @@ inline constexpr std::string_view kSharpHelp =
     "                      OpenSubdiv's boundary rule: edge-and-corner keeps boundary vertices with a\n"
     "                      single face fixed (default: the file's, else edge-only)\n";
 
-// How texture coordinates are subdivided (rgb/uv_layout.h), for the commands that save a mesh.
+// How texture coordinates are subdivided (rgb/values/uv_layout.h), for the commands that save a mesh.
 inline constexpr std::string_view kUvInterpolationOption = "--uv-interpolation";
 inline constexpr std::string_view kUvHelp =
     "  --uv-interpolation none|corners|boundaries|all\n"

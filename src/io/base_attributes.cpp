@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <iterator>
 
-#include "io/material_library.h"
+#include "io/materials/material_library.h"
 #include "io/mesh_file.h"
 #include "io/obj_reader.h"
 #include "rgb/mesh/face_location.h"

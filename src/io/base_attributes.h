@@ -5,7 +5,7 @@
 // mesh lies in one base face (rgb::base_face_of) and takes its labels. rgb::Mesh holds geometry only;
 // the CLI and the editor keep this beside it (shared, immutable) and hand it to the savers.
 //
-// Colours are vertex data (rgb/vertex_channel.h): written at every level, and kept in the state's
+// Colours are vertex data (rgb/values/vertex_channel.h): written at every level, and kept in the state's
 // base-colours section (base_colour_state.h). Texture coordinates here are the level-0 ones; a
 // refined mesh's come from its exact UV channel (base_uvs.h), and a save without one says that it
 // leaves them out (dropped_attributes).
@@ -19,7 +19,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
-#include "io/loaded_mesh.h"
+#include "io/obj/loaded_mesh.h"
 #include "rgb/mesh/mesh.h"
 #include "rgb/values/uv_layout.h"
 
@@ -68,7 +68,7 @@ std::uint32_t base_corner_texcoord(const rgb::Mesh& mesh, const BaseAttributes& 
 std::vector<std::string> library_references(const BaseAttributes& attributes, const std::string& output_folder);
 
 // What a save of `mesh` leaves out of the attributes, one sentence each (empty when nothing).
-// `exact_uvs`: the texture coordinates are written through their own channel (rgb/uv_layout.h).
+// `exact_uvs`: the texture coordinates are written through their own channel (rgb/values/uv_layout.h).
 std::vector<std::string> dropped_attributes(const rgb::Mesh& mesh, const BaseAttributes* attributes, bool exact_uvs = false);
 
 }  // namespace rgbio

@@ -1,6 +1,6 @@
 #pragma once
-// The texture coordinates of a loaded file as the base mesh's UV channel (rgb/uv_layout.h), from
-// which every UV of every adaptive mesh over it follows exactly (rgb/uv_evaluator.h): a saved file's
+// The texture coordinates of a loaded file as the base mesh's UV channel (rgb/values/uv_layout.h), from
+// which every UV of every adaptive mesh over it follows exactly (rgb/values/uv_evaluator.h): a saved file's
 // base-uvs section, a plain file's vt (its triangles are the base faces), or the vt of a saved mesh
 // at level 0 (its faces are the base faces, in other slots).
 #include <memory>
@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "io/loaded_mesh.h"
+#include "io/obj/loaded_mesh.h"
 #include "rgb/mesh/mesh.h"
 #include "rgb/values/uv_layout.h"
 

@@ -6,14 +6,14 @@
 #include <stdexcept>
 #include <string_view>
 
-#include "io/atomic_file.h"
-#include "io/crease_tags.h"
-#include "io/labelled_faces.h"
-#include "io/number_format.h"
-#include "io/obj_error.h"
+#include "io/files/atomic_file.h"
+#include "io/obj/labelled_faces.h"
+#include "io/obj/number_format.h"
+#include "io/obj/obj_error.h"
+#include "io/obj/truncation_check.h"
 #include "io/obj_reader.h"
-#include "io/state_format.h"
-#include "io/truncation_check.h"
+#include "io/state/crease_tags.h"
+#include "io/state/state_format.h"
 #include "rgb/values/limit_normals.h"
 #include "rgb/values/loop_geometry.h"
 #include "rgb/values/mesh_uvs.h"
@@ -82,7 +82,7 @@ void write_obj(const rgb::Mesh& mesh, const SaveOptions& options, const std::str
     const BaseAttributes* attributes = options.attributes.get();
     // Level-0 texture coordinates are the base mesh's: written only while the mesh is that.
     const bool base_data = attributes && is_base_mesh(mesh);
-    // Vertex colours follow the position rules (rgb/vertex_channel.h): written at every level, at the
+    // Vertex colours follow the position rules (rgb/values/vertex_channel.h): written at every level, at the
     // same level as the positions beside them.
     const std::vector<glm::dvec3> colours =
         attributes && !attributes->colours.empty()

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "io/base_attributes.h"
-#include "io/loaded_mesh.h"
+#include "io/obj/loaded_mesh.h"
 #include "rgb/mesh/mesh.h"
 #include "rgb/support/progress.h"
 #include "rgb/values/uv_layout.h"
@@ -31,7 +31,7 @@ enum class SavedPositions {
 
 struct SaveOptions {
     SavedPositions positions = SavedPositions::Displayed;
-    bool normals = false;      // vn: exact normals of the Loop limit surface (rgb/limit_normals.h)
+    bool normals = false;      // vn: exact normals of the Loop limit surface (rgb/values/limit_normals.h)
     bool state = true;         // the #rgb lines that make the file resumable
     // Texture coordinates (io/base_uvs.h): vt lines with every corner's exact UV (at its vertex's
     // display level, or the limit beside limit positions) and f v/vt corners; the state keeps the

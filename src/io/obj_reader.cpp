@@ -5,15 +5,15 @@
 #include <filesystem>
 #include <functional>
 
-#include "io/base_colour_state.h"
-#include "io/crease_tags.h"
-#include "io/face_label_state.h"
-#include "io/material_library.h"
-#include "io/mesh_validation.h"
-#include "io/obj_error.h"
-#include "io/obj_parser.h"
-#include "io/state_format.h"
-#include "io/truncation_check.h"
+#include "io/materials/material_library.h"
+#include "io/obj/obj_error.h"
+#include "io/obj/obj_parser.h"
+#include "io/obj/truncation_check.h"
+#include "io/repair/mesh_validation.h"
+#include "io/state/base_colour_state.h"
+#include "io/state/crease_tags.h"
+#include "io/state/face_label_state.h"
+#include "io/state/state_format.h"
 #include "rgb/mesh/mesh.h"
 #include "rgb/values/restore_state.h"
 

@@ -3,8 +3,8 @@
 #include <string>
 #include <string_view>
 
-#include "io/file_text.h"
-#include "io/loaded_mesh.h"
+#include "io/files/file_text.h"
+#include "io/obj/loaded_mesh.h"
 
 namespace rgbio {
 

@@ -1,5 +1,5 @@
 #pragma once
-// The mesh's edges along tagged base edges (rgb/sharp_edges.h) as line segments at the positions the
+// The mesh's edges along tagged base edges (rgb/mesh/sharp_edges.h) as line segments at the positions the
 // surface shows (GL-free), so that creases are drawn as coloured lines over the surface.
 #include <vector>
 

@@ -3,8 +3,8 @@
 // texture checker and diffuse texture modes. Indexed by base face and base vertex (like
 // rgbio::BaseAttributes, which the app converts: render does not parse mesh files), so refinement
 // never changes it. A face of the adaptive mesh takes its material and texture from the base face it
-// lies in; vertex colours and texture coordinates are the exact channels (rgb/vertex_channel.h,
-// rgb/mesh_uvs.h) at the positions' level: the values a saved OBJ holds for the same mesh.
+// lies in; vertex colours and texture coordinates are the exact channels (rgb/values/vertex_channel.h,
+// rgb/values/mesh_uvs.h) at the positions' level: the values a saved OBJ holds for the same mesh.
 #include <array>
 #include <cstdint>
 #include <memory>

@@ -113,7 +113,7 @@ private:
                                         std::span<const rgb::VertexId> moved_vertices, bool part);
     void update_position(const rgb::Mesh& mesh, rgb::VertexId v);
     void update_normal(const rgb::Mesh& mesh, rgb::VertexId v);
-    // Corner i of f's normal: its vertex's, except at an infinitely sharp crease (rgb/sharp_features.h),
+    // Corner i of f's normal: its vertex's, except at an infinitely sharp crease (rgb/rules/sharp_features.h),
     // where only the faces on f's side of the creases count, so that the shading breaks along it.
     glm::vec3 corner_normal(const rgb::Mesh& mesh, rgb::FaceId f, int i) const;
     // `with_look`: the appearance's corners too (a rebuild writes them all at once, in parallel).

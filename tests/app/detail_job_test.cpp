@@ -6,8 +6,8 @@
 #include <chrono>
 
 #include "app/detail_job.h"
-#include "io/detail_edit.h"
-#include "io/lod_script.h"
+#include "io/script/detail_edit.h"
+#include "io/script/lod_script.h"
 #include "rgb/mesh/invariants.h"
 #include "rgb/mesh/mesh.h"
 #include "support/same_mesh.h"

@@ -1,6 +1,6 @@
 // What the editor displays of a file's vertex colours and texture coordinates is what it saves: after
 // adaptive edits, each displayed corner's colour and UV equal those of the same corner in the OBJ the
-// document writes (rgb/vertex_channel.h, rgb/mesh_uvs.h), read back by the OBJ reader. The display
+// document writes (rgb/values/vertex_channel.h, rgb/values/mesh_uvs.h), read back by the OBJ reader. The display
 // follows the edits slot by slot (Document::geometry), so this checks its incremental updates, and
 // then its rebuild.
 #include <array>

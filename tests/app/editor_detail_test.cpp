@@ -13,9 +13,9 @@
 
 #include "app/editor.h"
 #include "editor_fixture.h"
-#include "io/detail_edit.h"
-#include "io/lod_script.h"
 #include "io/mesh_file.h"
+#include "io/script/detail_edit.h"
+#include "io/script/lod_script.h"
 #include "render/camera.h"
 #include "rgb/lod/lod_criteria.h"
 #include "rgb/lod/screen_detail.h"
@@ -37,7 +37,7 @@ protected:
         editor.detail_settings().view_pixels = 12.0;
     }
     const rgb::Mesh& mesh() const { return editor.document().mesh(); }
-    // The largest screen value (rgb/screen_detail.h) of a green edge, for the editor's camera now.
+    // The largest screen value (rgb/lod/screen_detail.h) of a green edge, for the editor's camera now.
     double longest_edge_on_screen() const {
         const rgb::ScreenCriterion criterion(mesh().shared_base(), render::screen_view(editor.camera().camera(), kViewport));
         const rgb::EdgeValue value = criterion.edge_value();

@@ -1,5 +1,5 @@
 // The editor's keys, wheel and navigation drags on the default mesh, checked against what they must
-// do to the view and the brush (README, "The editor").
+// do to the view and the brush (docs/editor.md).
 #include <optional>
 
 #include <gtest/gtest.h>

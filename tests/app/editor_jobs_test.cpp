@@ -15,8 +15,8 @@
 
 #include "app/editor.h"
 #include "editor_fixture.h"
-#include "io/lod_script.h"
 #include "io/mesh_file.h"
+#include "io/script/lod_script.h"
 #include "rgb/mesh/invariants.h"
 #include "rgb/values/loop_geometry.h"
 #include "support/same_mesh.h"

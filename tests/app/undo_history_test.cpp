@@ -219,7 +219,7 @@ struct ChangeCounter : rgb::MeshObserver {
     void vertex_added(const rgb::Mesh&, rgb::VertexId, rgb::VertexId, rgb::VertexId) override { ++vertices_added; }
 };
 
-// The bound counts at least what a step must keep to be undone (rgb/journal.h: each removed face with
+// The bound counts at least what a step must keep to be undone (rgb/mesh/journal.h: each removed face with
 // its slot and corners, each removed vertex with its slot, address and insertion position, the slot of
 // everything added), so it bounds the memory the history really holds.
 TEST(UndoHistory, BytesCoverWhatEachStepMustRemember) {

@@ -1,4 +1,4 @@
-// Criteria benchmark (README "Benchmarks"): what the tolerance criterion saves and what it costs, and
+// Criteria benchmark (docs/benchmarks.md): what the tolerance criterion saves and what it costs, and
 // how the view-dependent updater behaves along an orbit.
 //  1. For each mesh and tolerance (a share of the bounding-box diagonal): the triangles and time of
 //     the tolerance request over the whole surface, with the largest error reached, against uniform
@@ -21,8 +21,8 @@
 #include <string>
 #include <vector>
 
-#include "io/detail_edit.h"
 #include "io/mesh_file.h"
+#include "io/script/detail_edit.h"
 #include "render/camera.h"
 #include "rgb/lod/refine.h"
 #include "rgb/lod/requests.h"

@@ -5,7 +5,7 @@
 #
 #   tests/bench/engine_speed.sh [BUILD_DIR] [REPEAT]
 #
-# Prints one line per measure; the README's "Speed" table is copied from it.
+# Prints one line per measure; docs/benchmarks.md's engine speed table is copied from it.
 set -euo pipefail
 
 build=${1:-build}

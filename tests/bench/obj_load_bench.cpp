@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "io/number_format.h"
-#include "io/obj_reader.h"
-#include "io/polygon_triangulation.h"
 #include "../io/polygon_shapes.h"
+#include "io/obj/number_format.h"
+#include "io/obj_reader.h"
+#include "io/repair/polygon_triangulation.h"
 
 namespace {
 

@@ -1,4 +1,4 @@
-// Commands save like the io layer promises (README, Saving), seen from the command line: render's
+// Commands save like the io layer promises (docs/files.md, Saving), seen from the command line: render's
 // PNG and refine's OBJ go to what the user named, refusals and failures exit 3 with a message that
 // names the file and the reason, and the old file stays with no temporary file beside it, also
 // when the save is interrupted.

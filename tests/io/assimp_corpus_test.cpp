@@ -12,7 +12,7 @@
 #include <gtest/gtest.h>
 #include <tiny_obj_loader.h>
 
-#include "io/obj_error.h"
+#include "io/obj/obj_error.h"
 #include "io/obj_reader.h"
 #include "obj_test_support.h"
 

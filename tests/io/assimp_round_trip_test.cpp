@@ -11,7 +11,7 @@
 
 #include "io/base_attributes.h"
 #include "io/mesh_file.h"
-#include "io/obj_error.h"
+#include "io/obj/obj_error.h"
 #include "io/obj_reader.h"
 #include "rgb/lod/requests.h"
 

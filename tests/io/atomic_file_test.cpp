@@ -9,8 +9,8 @@
 
 #include <gtest/gtest.h>
 
-#include "io/atomic_file.h"
-#include "io/obj_error.h"
+#include "io/files/atomic_file.h"
+#include "io/obj/obj_error.h"
 #include "scratch_folder.h"
 
 namespace rgbio {

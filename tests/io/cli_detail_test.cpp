@@ -11,8 +11,8 @@
 #include <gtest/gtest.h>
 
 #include "cli/dispatch.h"
-#include "io/lod_script.h"
 #include "io/obj_reader.h"
+#include "io/script/lod_script.h"
 #include "obj_test_support.h"
 #include "rgb/lod/limit_error.h"
 #include "rgb/lod/lod_criteria.h"

@@ -14,7 +14,7 @@
 
 #include "io/base_attributes.h"
 #include "io/mesh_file.h"
-#include "io/obj_error.h"
+#include "io/obj/obj_error.h"
 #include "obj_test_support.h"
 #include "rgb/lod/requests.h"
 #include "scratch_folder.h"

@@ -14,8 +14,8 @@
 
 #include <gtest/gtest.h>
 
-#include "io/file_text.h"
-#include "io/obj_error.h"
+#include "io/files/file_text.h"
+#include "io/obj/obj_error.h"
 #include "scratch_folder.h"
 
 namespace rgbio {

@@ -8,8 +8,8 @@
 #include <filesystem>
 #include <iostream>
 
-#include "io/gltf_writer.h"
-#include "io/obj_error.h"
+#include "io/gltf/gltf_writer.h"
+#include "io/obj/obj_error.h"
 
 int main(int argc, char** argv) {
     if (argc != 2) {

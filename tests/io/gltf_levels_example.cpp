@@ -12,7 +12,7 @@
 #include "io/base_uvs.h"
 #include "io/gltf_export.h"
 #include "io/mesh_file.h"
-#include "io/obj_error.h"
+#include "io/obj/obj_error.h"
 #include "rgb/lod/requests.h"
 #include "textured_grid.h"
 

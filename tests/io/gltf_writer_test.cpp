@@ -2,8 +2,8 @@
 // like every other save (gltf_export_check.py reads the files themselves back).
 #include <gtest/gtest.h>
 
-#include "io/gltf_writer.h"
-#include "io/obj_error.h"
+#include "io/gltf/gltf_writer.h"
+#include "io/obj/obj_error.h"
 
 namespace rgbio {
 namespace {

@@ -15,10 +15,10 @@
 #include <glm/geometric.hpp>
 #include <tiny_obj_loader.h>
 
-#include "io/atomic_file.h"
+#include "io/files/atomic_file.h"
 #include "io/mesh_file.h"
-#include "io/number_format.h"
-#include "io/obj_error.h"
+#include "io/obj/number_format.h"
+#include "io/obj/obj_error.h"
 #include "io/obj_reader.h"
 #include "mesh_state_difference.h"
 #include "obj_test_support.h"

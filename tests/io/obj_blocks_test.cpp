@@ -9,8 +9,8 @@
 
 #include <gtest/gtest.h>
 
-#include "io/obj_blocks.h"
-#include "io/obj_error.h"
+#include "io/obj/obj_blocks.h"
+#include "io/obj/obj_error.h"
 
 namespace rgbio {
 namespace {

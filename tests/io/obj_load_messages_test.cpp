@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "io/mesh_file.h"
-#include "io/polygon_triangulation.h"
+#include "io/repair/polygon_triangulation.h"
 #include "obj_test_support.h"
 #include "rgb/lod/refine.h"
 #include "rgb/lod/requests.h"

@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include "io/loaded_mesh.h"
-#include "io/obj_error.h"
+#include "io/obj/loaded_mesh.h"
+#include "io/obj/obj_error.h"
 #include "io/obj_reader.h"
 
 namespace rgbio::test {

@@ -9,7 +9,7 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
-#include "io/polygon_triangulation.h"
+#include "io/repair/polygon_triangulation.h"
 #include "polygon_shapes.h"
 
 namespace rgbio {

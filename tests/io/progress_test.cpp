@@ -1,4 +1,4 @@
-// Progress of reading and writing a file (rgb/progress.h): what a listener hears only grows, moves
+// Progress of reading and writing a file (rgb/support/progress.h): what a listener hears only grows, moves
 // many times on the way through a file of a hundred thousand triangles, and ends at exactly 1, for a
 // saved file read back (parse, then restore) and for the save itself.
 #include <algorithm>
@@ -9,8 +9,8 @@
 #include <gtest/gtest.h>
 
 #include "io/mesh_file.h"
-#include "io/obj_blocks.h"
-#include "io/obj_error.h"
+#include "io/obj/obj_blocks.h"
+#include "io/obj/obj_error.h"
 #include "io/obj_reader.h"
 #include "obj_test_support.h"
 #include "rgb/lod/refine.h"

@@ -14,7 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "io/mesh_file.h"
-#include "io/number_format.h"
+#include "io/obj/number_format.h"
 #include "io/obj_reader.h"
 #include "obj_test_support.h"
 #include "rgb/lod/requests.h"
@@ -237,7 +237,7 @@ TEST(SavedStateTampering, TheOtherDiagonalOfANormalFormQuadIsDropped) {
     const std::vector<EdgePair> quads = pairs(mesh, true);
     ASSERT_FALSE(quads.empty());
     // The same vertices and positions, a valid RGB triangulation, but not the normal form the core
-    // keeps (README "What a request means"): only that check sees it.
+    // keeps (docs/requests.md "What a request means"): only that check sees it.
     for (const EdgePair& quad : quads) {
         SavedFile flipped = file;
         flip(flipped, quad);

@@ -13,7 +13,7 @@
 #include <glm/geometric.hpp>
 
 #include "io/mesh_file.h"
-#include "io/number_format.h"
+#include "io/obj/number_format.h"
 #include "io/obj_reader.h"
 #include "obj_test_support.h"
 #include "rgb/lod/requests.h"

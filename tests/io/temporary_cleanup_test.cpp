@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "io/atomic_file.h"
+#include "io/files/atomic_file.h"
 #include "scratch_folder.h"
 
 namespace rgbio {

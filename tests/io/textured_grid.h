@@ -4,7 +4,7 @@
 #include <cmath>
 #include <string>
 
-#include "io/number_format.h"
+#include "io/obj/number_format.h"
 
 namespace rgbio::test {
 

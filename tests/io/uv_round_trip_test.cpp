@@ -12,7 +12,7 @@
 
 #include "io/base_uvs.h"
 #include "io/mesh_file.h"
-#include "io/number_format.h"
+#include "io/obj/number_format.h"
 #include "io/obj_reader.h"
 #include "obj_test_support.h"
 #include "rgb/lod/refine.h"

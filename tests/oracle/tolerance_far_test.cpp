@@ -1,4 +1,4 @@
-// The tolerance criterion (rgb/limit_error.h) on tagged meshes: creases, corners, darts, semi-sharp
+// The tolerance criterion (rgb/lod/limit_error.h) on tagged meshes: creases, corners, darts, semi-sharp
 // features and both boundary options change the Loop rules and so the limit surface; a tolerance
 // result must stay within the tolerance of that surface. Checked against the exact limits the tests'
 // own closed forms give from Far's neighbourhoods (docs/loop-creases.md §4-§6; exact at darts and

@@ -1,4 +1,4 @@
-// The core's face-varying UVs (issue 12, rgb/uv_evaluator.h) against OpenSubdiv Far, corner by corner,
+// The core's face-varying UVs (issue 12, rgb/values/uv_evaluator.h) against OpenSubdiv Far, corner by corner,
 // on the UV meshes of uv_meshes.cpp (seams across a grid and ending inside it, three and four seams
 // meeting, one-triangle islands, seams crossing sharp and semi-sharp rows, a closed mesh cut along a
 // crease, both boundary options, UV bow-ties inside and on the boundary) under the four options the core offers: uniform levels 1-4 equal

@@ -1,4 +1,4 @@
-// rgb/bucket_sort.h: the same order as a full sort of the same records, whatever the order they come
+// rgb/support/bucket_sort.h: the same order as a full sort of the same records, whatever the order they come
 // in and however the buckets are cut into blocks; runs that say where each bucket's records are; a
 // long run (a fan's hub); every run visited once, sorted.
 #include <algorithm>

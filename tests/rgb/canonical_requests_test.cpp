@@ -1,4 +1,4 @@
-// What a request means (README "What a request means", spec §3.5), checked as a property over many
+// What a request means (docs/requests.md "What a request means", spec §3.5), checked as a property over many
 // random request sets on closed, open and high-genus meshes: the vertex set equals the one an
 // independent model of the meaning computes on the uniform Loop oracle, requests of one kind give the
 // identical mesh in every order, the input's storage and the history do not matter, and small regions

@@ -1,4 +1,4 @@
-// Detail size (rgb/lod_criteria.h with the edge length in the uniform mesh of each edge's level):
+// Detail size (rgb/lod/lod_criteria.h with the edge length in the uniform mesh of each edge's level):
 // results against the meaning computed independently on the uniform Loop oracle's identities, over
 // the whole surface and in a ball, refine, coarsen and set; checked edge by edge; and the same mesh
 // whatever the input's storage.
@@ -29,7 +29,7 @@ bool segment_meets(const glm::dvec3& p, const glm::dvec3& q, const OracleBall& b
     return glm::length(p + t * d - ball.centre) <= ball.radius;
 }
 
-// The meaning of a request on identities (README "Detail by size, accuracy and view").
+// The meaning of a request on identities (docs/requests.md "Detail by size, accuracy and view").
 class DetailMeaning {
 public:
     DetailMeaning(const UniformLoopOracle& oracle, double threshold)

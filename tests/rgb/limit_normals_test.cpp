@@ -1,4 +1,4 @@
-// Limit normals (rgb/limit_normals.h) against what they must be, computed without the core:
+// Limit normals (rgb/values/limit_normals.h) against what they must be, computed without the core:
 // - the normal is a property of the limit surface, so the base mesh Σ1 of the independent uniform
 //   Loop oracle (the same surface) must give every shared vertex the same normal: this checks that
 //   the tangent masks are the eigenvectors of one Loop step, at every valence, inside and on the

@@ -1,4 +1,4 @@
-// The tolerance criterion (rgb/limit_error.h): results checked against an independent evaluation of
+// The tolerance criterion (rgb/lod/limit_error.h): results checked against an independent evaluation of
 // the limit surface on the uniform Loop oracle (support/oracle_surface.h), at the criterion's samples
 // (the promise) and densely between them; fewer triangles than uniform Loop at the first level that
 // meets the same tolerance; and the same mesh whatever the input's storage, the mesh's history, or

@@ -1,4 +1,4 @@
-// View-dependent continuous LOD (rgb/view_lod.h) and the screen criterion (rgb/screen_detail.h):
+// View-dependent continuous LOD (rgb/lod/view_lod.h) and the screen criterion (rgb/lod/screen_detail.h):
 // updates converge, and then no edge on screen is longer than the threshold, nothing removable is
 // shorter than half of it (so nothing outside the view or turned away stays but what visible detail
 // needs), a still camera changes nothing, and the mesh holds the canonical screen-space request's

@@ -1,5 +1,5 @@
 #pragma once
-// The canonical order of the LOD driver (README "What a request means": a budget; spec §3.3), as
+// The canonical order of the LOD driver (docs/requests.md "What a request means": a budget; spec §3.3), as
 // the definition states it. The speed machinery that walks it fast is in lod_driver*.cpp.
 //
 // Every possible split of the hierarchy is an edge of some uniform level Σk, named by the vertex it

@@ -1,5 +1,5 @@
 #pragma once
-// The tolerance criterion (README "Tolerance to the limit surface"): how far from the Loop limit
+// The tolerance criterion (docs/requests.md "Tolerance to the limit surface"): how far from the Loop limit
 // surface the displayed surface next to an edge of Σl can be while the edge stays unsplit.
 //
 // The displayed surface over a triangle T of Σl that the mesh holds unrefined is flat pieces between

@@ -1,5 +1,5 @@
 #pragma once
-// Level of detail by what the user means (README "Detail by size, accuracy and view"): a criterion,
+// Level of detail by what the user means (docs/requests.md "Detail by size, accuracy and view"): a criterion,
 // a number for every edge of the hierarchy computed from the addresses of its ends alone, and a
 // threshold, over the whole surface or in a ball of base space.
 //

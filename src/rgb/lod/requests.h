@@ -1,5 +1,7 @@
 #pragma once
-// Level-of-detail requests, and the engine that carries them out (spec §3.5; the README section
+// Layer rgb/lod (requests, dabs, refinement, the LOD driver, criteria, view-dependent LOD: what to
+// refine, in a canonical order): includes every core layer. docs/architecture.md draws the layers.
+// Level-of-detail requests, and the engine that carries them out (spec §3.5; docs/requests.md,
 // "What a request means" states the contract these functions keep).
 //
 // A request names a level N and a region in base space (a ball, or the whole surface, optionally

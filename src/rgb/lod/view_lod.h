@@ -1,5 +1,5 @@
 #pragma once
-// View-dependent continuous level of detail (README "Detail by size, accuracy and view"): for the
+// View-dependent continuous level of detail (docs/requests.md "Detail by size, accuracy and view"): for the
 // current camera, split every green edge whose screen value (screen_detail.h) is above a pixel
 // threshold and remove every removable vertex whose parent edge's value is below half of it, a slice
 // of work per call, so that detail follows the camera while it moves. Between half the threshold and

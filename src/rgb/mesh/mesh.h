@@ -1,4 +1,7 @@
 #pragma once
+// Layer rgb/mesh (topology: base and adaptive mesh, addresses, operators, journal, invariants,
+// navigation, state): stores values, computes none; includes rgb/rules and rgb/support only.
+// docs/architecture.md draws the layers.
 // The adaptive RGB mesh: a triangle mesh in flat arrays (faces, one opposite halfedge per face
 // corner, per-vertex attributes) with the colour/level codes of RGB subdivision and the per-vertex
 // Loop data of spec §4.3, over an immutable base mesh (base_mesh.h). There is no hierarchy: what the

@@ -1,4 +1,6 @@
 #pragma once
+// Layer rgb/rules (Loop and crease weights and masks, RGB colours): functions of numbers and
+// valences; includes only rgb/support. docs/architecture.md draws the layers.
 // Loop subdivision with Loop's original vertex weight (spec §4.1, §4.2): the weights, and the few
 // formulas every Loop value in the core goes through. The mesh's operators and the hierarchy
 // evaluator both use these, so a value computed either way has the same bits. The tests' uniform

@@ -1,4 +1,6 @@
 #pragma once
+// Layer rgb/support (threads, prefaulting, vectors, sorting, progress, small predicates): knows no
+// mesh; includes only the standard library and GLM. docs/architecture.md draws the layers.
 // Data-parallel loops for the linear passes over a whole mesh (loading a saved file checks millions
 // of faces). The range is cut into one contiguous block per hardware thread; each block runs on its
 // own thread, the first on the caller's (and any whose thread cannot start, on the caller's too). Results must not depend on the cut: the body writes only

@@ -1,4 +1,6 @@
 #pragma once
+// Layer rgb/values (positions, limits, normals, UVs and channels of any vertex by its address):
+// includes rgb/mesh, rgb/rules and rgb/support. docs/architecture.md draws the layers.
 // Exact Loop positions of the vertices of an RGB mesh without a hierarchy (spec §4.2, §4.6). Every
 // value is available for every vertex: from the vertex's ring in the mesh when the mesh holds it,
 // otherwise from the hierarchy evaluator (hierarchy_evaluator.h); both give the same bits. Limits are

@@ -1,5 +1,5 @@
 #pragma once
-// How far a mesh's displayed surface is from the Loop limit surface (README "Tolerance to the limit
+// How far a mesh's displayed surface is from the Loop limit surface (docs/requests.md "Tolerance to the limit
 // surface"): at the samples of every face, the vertices of Σ(l+2) that lie in a face of level l (the
 // face's corners, points along its edges and inside it), each compared with its exact limit point
 // (hierarchy_evaluator.h); the displayed surface there is the flat face between its corners'

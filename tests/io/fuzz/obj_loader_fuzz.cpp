@@ -15,7 +15,7 @@
 
 #include "io/mesh_file.h"
 #include "io/mesh_state_difference.h"
-#include "io/obj_error.h"
+#include "io/obj/obj_error.h"
 #include "io/obj_reader.h"
 #include "rgb/mesh/invariants.h"
 #include "rgb/mesh/state.h"

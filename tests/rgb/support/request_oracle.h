@@ -1,5 +1,5 @@
 #pragma once
-// What a set of level requests means (README "What a request means"), computed independently of
+// What a set of level requests means (docs/requests.md "What a request means"), computed independently of
 // the core on the uniform Loop oracle's identities: the base-space position of every identity by
 // midpoint recursion, the triangles of each Σj that meet a ball by their own distance test, the
 // midpoints those triangles ask for, and the closure of that set under the RGB topology (a vertex on

@@ -1,0 +1,241 @@
+#include "io/gltf/gltf_writer.h"
+
+#include <cctype>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <map>
+#include <sstream>
+#include <unordered_map>
+
+#include <glm/geometric.hpp>
+#include <tiny_gltf.h>
+
+#include "io/files/atomic_file.h"
+#include "io/obj/obj_error.h"
+
+namespace rgbio {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// A URI reference for a file path: '/'-separated, with every byte outside the unreserved set
+// percent-encoded.
+std::string path_uri(const fs::path& path) {
+    static constexpr char kHex[] = "0123456789ABCDEF";
+    std::string uri;
+    for (const char c : path.generic_string()) {
+        const auto byte = static_cast<unsigned char>(c);
+        if (std::isalnum(byte) || std::strchr("-._~/", c)) {
+            uri += c;
+        } else {
+            uri += '%';
+            uri += kHex[byte >> 4];
+            uri += kHex[byte & 15];
+        }
+    }
+    return uri;
+}
+
+// glTF vertices: one per distinct (vertex, texture coordinate) corner, in order of first use.
+struct GltfVertices {
+    std::vector<std::uint32_t> position;  // per glTF vertex: the mesh vertex
+    std::vector<std::uint32_t> texcoord;  // per glTF vertex: the table entry, or kNoIndex
+    std::vector<std::array<std::uint32_t, 3>> triangles;
+};
+
+GltfVertices unweld(const GltfMesh& mesh) {
+    GltfVertices out;
+    std::unordered_map<std::uint64_t, std::uint32_t> index;
+    out.triangles.reserve(mesh.triangles.size());
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+        std::array<std::uint32_t, 3> corners;
+        for (int i = 0; i < 3; ++i) {
+            const std::uint32_t v = mesh.triangles[t][i];
+            const std::uint32_t uv = mesh.triangle_texcoords.empty() ? kNoIndex : mesh.triangle_texcoords[t][i];
+            const auto [it, inserted] = index.try_emplace((std::uint64_t(v) << 32) | uv, static_cast<std::uint32_t>(out.position.size()));
+            if (inserted) {
+                out.position.push_back(v);
+                out.texcoord.push_back(uv);
+            }
+            corners[i] = it->second;
+        }
+        out.triangles.push_back(corners);
+    }
+    return out;
+}
+
+class ModelBuilder {
+public:
+    // Appends raw values to the buffer as a view (4-byte aligned: every value here is 4 bytes).
+    template <class T>
+    int add_view(const std::vector<T>& values, int target) {
+        tinygltf::BufferView view;
+        view.buffer = 0;
+        view.byteOffset = bytes_.size();
+        view.byteLength = values.size() * sizeof(T);
+        view.target = target;
+        const auto* begin = reinterpret_cast<const unsigned char*>(values.data());
+        bytes_.insert(bytes_.end(), begin, begin + view.byteLength);
+        model.bufferViews.push_back(view);
+        return static_cast<int>(model.bufferViews.size() - 1);
+    }
+
+    int add_accessor(int view, int component_type, int type, std::size_t count, std::vector<double> min = {},
+                     std::vector<double> max = {}) {
+        tinygltf::Accessor accessor;
+        accessor.bufferView = view;
+        accessor.componentType = component_type;
+        accessor.type = type;
+        accessor.count = count;
+        accessor.minValues = std::move(min);
+        accessor.maxValues = std::move(max);
+        model.accessors.push_back(accessor);
+        return static_cast<int>(model.accessors.size() - 1);
+    }
+
+    // Float vectors of N components, with the bounds POSITION needs.
+    template <int N, class Vec>
+    int add_floats(const std::vector<Vec>& values, int type, bool bounds) {
+        std::vector<float> flat;
+        flat.reserve(N * values.size());
+        std::vector<double> lo(N, HUGE_VAL), hi(N, -HUGE_VAL);
+        for (const Vec& v : values)
+            for (int i = 0; i < N; ++i) {
+                const float x = static_cast<float>(v[i]);
+                flat.push_back(x);
+                lo[i] = std::min(lo[i], double(x));
+                hi[i] = std::max(hi[i], double(x));
+            }
+        const int view = add_view(flat, TINYGLTF_TARGET_ARRAY_BUFFER);
+        return bounds ? add_accessor(view, TINYGLTF_COMPONENT_TYPE_FLOAT, type, values.size(), lo, hi)
+                      : add_accessor(view, TINYGLTF_COMPONENT_TYPE_FLOAT, type, values.size());
+    }
+
+    void finish() {
+        tinygltf::Buffer buffer;
+        buffer.data = std::move(bytes_);
+        model.buffers.push_back(std::move(buffer));
+    }
+
+    tinygltf::Model model;
+
+private:
+    std::vector<unsigned char> bytes_;
+};
+
+// One glTF material per mesh material; textures share images by path.
+void add_materials(const GltfMesh& mesh, const fs::path& output_folder, tinygltf::Model& model) {
+    std::map<std::string, int> texture_of_path;
+    for (const Material& m : mesh.materials) {
+        tinygltf::Material material;
+        material.name = m.name;
+        material.pbrMetallicRoughness.metallicFactor = 0.0;  // OBJ materials are dielectrics
+        material.pbrMetallicRoughness.roughnessFactor = 1.0;
+        if (m.diffuse_texture.empty()) {
+            material.pbrMetallicRoughness.baseColorFactor = {m.diffuse.r, m.diffuse.g, m.diffuse.b, 1.0};
+        } else {
+            auto [it, inserted] = texture_of_path.try_emplace(m.diffuse_texture, static_cast<int>(model.textures.size()));
+            if (inserted) {
+                tinygltf::Image image;
+                image.uri = path_uri(fs::absolute(m.diffuse_texture).lexically_relative(fs::absolute(output_folder)));
+                model.images.push_back(image);
+                tinygltf::Texture texture;
+                texture.source = static_cast<int>(model.images.size() - 1);
+                model.textures.push_back(texture);
+            }
+            material.pbrMetallicRoughness.baseColorTexture.index = it->second;
+        }
+        model.materials.push_back(material);
+    }
+}
+
+}  // namespace
+
+std::vector<std::uint32_t> material_indices(const FaceLabels& face_materials, const std::vector<Material>& materials) {
+    std::map<std::string, std::uint32_t, std::less<>> index;
+    for (std::uint32_t m = 0; m < materials.size(); ++m) index.try_emplace(materials[m].name, m);
+    std::vector<std::uint32_t> of_name(face_materials.names.size(), kNoIndex);
+    for (std::size_t n = 0; n < of_name.size(); ++n)
+        if (const auto it = index.find(face_materials.names[n]); it != index.end()) of_name[n] = it->second;
+    std::vector<std::uint32_t> result;
+    result.reserve(face_materials.of_triangle.size());
+    for (std::uint32_t name : face_materials.of_triangle) result.push_back(name == kNoIndex ? kNoIndex : of_name[name]);
+    return result;
+}
+
+std::string format_gltf(const GltfMesh& mesh, GltfContainer container, const std::string& output_folder) {
+    const GltfVertices vertices = unweld(mesh);
+    ModelBuilder builder;
+    tinygltf::Primitive base;
+    base.mode = TINYGLTF_MODE_TRIANGLES;
+    std::vector<glm::dvec3> positions;
+    for (std::uint32_t v : vertices.position) positions.push_back(mesh.positions[v]);
+    base.attributes["POSITION"] = builder.add_floats<3>(positions, TINYGLTF_TYPE_VEC3, true);
+    if (!mesh.normals.empty()) {
+        std::vector<glm::dvec3> normals;
+        for (std::uint32_t v : vertices.position) {
+            const glm::dvec3 n = mesh.normals[v];
+            normals.push_back(glm::length(n) > 0 ? glm::normalize(n) : n);
+        }
+        base.attributes["NORMAL"] = builder.add_floats<3>(normals, TINYGLTF_TYPE_VEC3, false);
+    }
+    if (!mesh.colours.empty()) {
+        std::vector<glm::dvec3> colours;
+        for (std::uint32_t v : vertices.position) colours.push_back(mesh.colours[v]);
+        base.attributes["COLOR_0"] = builder.add_floats<3>(colours, TINYGLTF_TYPE_VEC3, false);
+    }
+    if (!mesh.triangle_texcoords.empty()) {
+        std::vector<glm::dvec2> texcoords;
+        for (std::uint32_t uv : vertices.texcoord)
+            texcoords.push_back(uv == kNoIndex ? glm::dvec2(0.0) : glm::dvec2(mesh.texcoords[uv].x, 1.0 - mesh.texcoords[uv].y));
+        base.attributes["TEXCOORD_0"] = builder.add_floats<2>(texcoords, TINYGLTF_TYPE_VEC2, false);
+    }
+
+    // One primitive per material in material order, then the triangles without one.
+    std::map<std::uint32_t, std::vector<std::uint32_t>> indices_of_material;
+    for (std::size_t t = 0; t < vertices.triangles.size(); ++t) {
+        const std::uint32_t material = mesh.triangle_materials.empty() ? kNoIndex : mesh.triangle_materials[t];
+        auto& indices = indices_of_material[material];
+        indices.insert(indices.end(), vertices.triangles[t].begin(), vertices.triangles[t].end());
+    }
+    tinygltf::Mesh gltf_mesh;
+    for (const auto& [material, indices] : indices_of_material) {
+        tinygltf::Primitive primitive = base;
+        primitive.indices = builder.add_accessor(builder.add_view(indices, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER),
+                                                 TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, indices.size());
+        primitive.material = material == kNoIndex ? -1 : static_cast<int>(material);
+        gltf_mesh.primitives.push_back(primitive);
+    }
+    builder.finish();
+
+    tinygltf::Model& model = builder.model;
+    model.asset.version = "2.0";
+    model.asset.generator = "rgbsub";
+    add_materials(mesh, output_folder, model);
+    model.meshes.push_back(gltf_mesh);
+    tinygltf::Node node;
+    node.mesh = 0;
+    model.nodes.push_back(node);
+    tinygltf::Scene scene;
+    scene.nodes.push_back(0);
+    model.scenes.push_back(scene);
+    model.defaultScene = 0;
+
+    tinygltf::TinyGLTF writer;
+    writer.SetImageWriter(nullptr, nullptr);  // images are referenced by path, never re-encoded
+    std::ostringstream out;
+    const bool binary = container == GltfContainer::Binary;
+    if (!writer.WriteGltfSceneToStream(&model, out, !binary, binary)) throw SaveError("cannot encode the glTF scene");
+    return out.str();
+}
+
+void save_gltf(const GltfMesh& mesh, const std::string& path) {
+    const bool binary = fs::path(path).extension() == ".glb";
+    const fs::path folder = fs::path(path).parent_path();
+    write_file_atomically(path, format_gltf(mesh, binary ? GltfContainer::Binary : GltfContainer::Json,
+                                            folder.empty() ? std::string(".") : folder.string()));
+}
+
+}  // namespace rgbio

@@ -1,0 +1,97 @@
+#include "io/materials/material_library.h"
+
+#include <algorithm>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include <tiny_obj_loader.h>
+
+#include "io/files/file_text.h"
+#include "io/obj/obj_error.h"
+#include "io/obj/printable_text.h"
+
+namespace rgbio {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string trimmed(const std::string& s) {
+    const std::size_t b = s.find_first_not_of(" \t\r");
+    return b == std::string::npos ? std::string() : s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
+}
+
+// Appends the library's materials; false (with a warning) when it cannot be read.
+bool read_library(const fs::path& path, std::vector<Material>& materials, std::vector<std::string>& warnings) {
+    std::string text;
+    try {
+        text = read_text_file(path.string());
+    } catch (const ObjError& e) {
+        warnings.push_back("material library " + quoted_file_text(path.string(), 200) + " was not read (" + e.reason() +
+                           "); faces keep their material names");
+        return false;
+    }
+    std::istringstream in(text);
+    std::map<std::string, int> by_name;
+    std::vector<tinyobj::material_t> read;
+    std::string warning, error;
+    tinyobj::LoadMtl(&by_name, &read, &in, &warning, &error);
+    for (const tinyobj::material_t& m : read) {
+        Material material;
+        material.name = trimmed(m.name);
+        material.diffuse = glm::dvec3(m.diffuse[0], m.diffuse[1], m.diffuse[2]);
+        if (!m.diffuse_texname.empty()) material.diffuse_texture = resolve_file_reference(m.diffuse_texname, path.parent_path()).string();
+        material.library = path.string();
+        materials.push_back(std::move(material));
+    }
+    return true;
+}
+
+void warn_about_missing_textures(const std::vector<Material>& materials, std::vector<std::string>& warnings) {
+    std::size_t missing = 0;
+    const Material* first = nullptr;
+    for (const Material& m : materials) {
+        std::error_code error;
+        if (m.diffuse_texture.empty() || fs::is_regular_file(m.diffuse_texture, error)) continue;
+        if (missing++ == 0) first = &m;
+    }
+    if (missing > 0)
+        warnings.push_back(std::to_string(missing) + " diffuse textures (map_Kd) are not there, the first " +
+                           quoted_file_text(first->diffuse_texture, 200) + " of material " + quoted_file_text(first->name));
+}
+
+void warn_about_undefined_materials(const std::vector<Material>& materials, const FaceLabels& face_materials,
+                                    std::vector<std::string>& warnings) {
+    std::set<std::string, std::less<>> defined;
+    for (const Material& m : materials) defined.insert(m.name);
+    std::size_t undefined = 0;
+    const std::string* first = nullptr;
+    for (const std::string& name : face_materials.names)
+        if (!defined.contains(name) && undefined++ == 0) first = &name;
+    if (undefined > 0)
+        warnings.push_back(std::to_string(undefined) + " materials used by faces are defined in no material library (the first " +
+                           quoted_file_text(*first) + "); those faces keep the name only");
+}
+
+}  // namespace
+
+fs::path resolve_file_reference(const std::string& written, const fs::path& folder) {
+    std::string path = written;
+    std::replace(path.begin(), path.end(), '\\', '/');
+    const fs::path p(path);
+    return (p.is_absolute() ? p : folder / p).lexically_normal();
+}
+
+std::vector<Material> read_material_libraries(const std::vector<std::string>& libraries, const fs::path& obj_folder,
+                                              const FaceLabels& face_materials, std::vector<std::string>& warnings) {
+    std::vector<Material> materials;
+    bool all_read = true;
+    for (const std::string& library : libraries) all_read = read_library(resolve_file_reference(library, obj_folder), materials, warnings) && all_read;
+    warn_about_missing_textures(materials, warnings);
+    // An unread library was reported already; without any library, names are all a file has.
+    if (all_read && !libraries.empty()) warn_about_undefined_materials(materials, face_materials, warnings);
+    return materials;
+}
+
+}  // namespace rgbio
