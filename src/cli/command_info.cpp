@@ -8,6 +8,7 @@
 #include "cli/mesh_summary.h"
 #include "io/mesh_file.h"
 #include "io/obj_reader.h"
+#include "rgb/mesh/detail_positions.h"
 
 namespace cli {
 
@@ -41,6 +42,17 @@ void print_sharp_features(std::ostream& out, const rgb::BaseMesh& base) {
     out << "\nboundary interpolation: " << rgb::boundary_interpolation_name(f.boundary) << '\n';
 }
 
+// Where a cage's detail came from and how far it is stored, when it has any.
+void print_detail(std::ostream& out, const rgb::BaseMesh& base) {
+    const rgb::DetailPositions* detail = base.detail();
+    if (!detail) return;
+    const rgb::DetailOrigin& origin = detail->origin();
+    out << "detail: from " << (origin.source.empty() ? std::string("an unnamed surface") : origin.source) << " ("
+        << origin.source_triangles << " triangles), stored to level " << detail->level() << " ("
+        << rgb::DetailPositions::grid_points(base, detail->level()).size() << " points; finer levels interpolate it)\n";
+    out << "detail points on the nearest point of the surface (no ray hit along the limit normal): " << origin.nearest_points << '\n';
+}
+
 }  // namespace
 
 int run_info(std::span<const std::string> args) {
@@ -67,6 +79,7 @@ int run_info(std::span<const std::string> args) {
     std::cout << "adaptive state: " << (loaded.adaptive ? "restored from the file's #rgb lines" : "none (base mesh)") << '\n';
     print_attributes(std::cout, loaded);
     print_sharp_features(std::cout, mesh.base());
+    print_detail(std::cout, mesh.base());
     print_summary(std::cout, summarize(mesh));
     return exit_ok;
 }

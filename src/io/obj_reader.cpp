@@ -48,6 +48,10 @@ std::shared_ptr<rgb::Mesh> adaptive_mesh(SavedState& saved, const ObjRecords& re
                 return nullptr;
             }
     }
+    if (saved.detail) {
+        saved.mesh.detail = detail_over(*saved.detail, saved.mesh.base_positions, saved.mesh.base_triangles, reason);
+        if (!saved.mesh.detail) return nullptr;
+    }
     // All triangles: their corners are the faces, three by three.
     saved.mesh.faces.resize(records.polygons.size());
     // Not with none: a file without faces is refused later, and memcpy takes no null pointers.

@@ -167,7 +167,8 @@ void write_state(const rgb::Mesh& mesh, bool limit_positions, std::span<const st
     out += "# rgbsub adaptive state: the #rgb lines restore the exact RGB mesh; other readers ignore them\n";
     std::string tag_records;
     append_state_tag_records(base.sharp_features(), tag_records);
-    out += "#rgb state " + std::to_string(tag_records.empty() ? kStateFormatVersion : kTaggedStateFormatVersion) + "\n";
+    const unsigned version = base.detail() ? kDetailStateFormatVersion : tag_records.empty() ? kStateFormatVersion : kTaggedStateFormatVersion;
+    out += "#rgb state " + std::to_string(version) + "\n";
     out += limit_positions ? "#rgb positions limit\n" : "#rgb positions displayed\n";
     out += "#rgb section base-vertices " + std::to_string(n0) + "\n";
     std::size_t run = 0;
@@ -239,6 +240,7 @@ void write_state(const rgb::Mesh& mesh, bool limit_positions, std::span<const st
     append_colour_section(base_colours, out, flush_if_full);
     out += tag_records;
     append_face_label_section(labels, triangles.size(), out);
+    append_detail_section(base, out, flush_if_full);
     out += "#rgb end\n";
 }
 
@@ -249,19 +251,20 @@ std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const
     // Another program's comments that happen to start with "#rgb": not a state at all.
     if (header.word() != "state") return std::nullopt;
     const unsigned version = header.number<unsigned>();
-    if (version < kOldestStateFormatVersion || version > kTaggedStateFormatVersion)
+    if (version < kOldestStateFormatVersion || version > kDetailStateFormatVersion)
         header.fail("state format version " + std::to_string(version) + " (this rgbsub reads versions " +
-                    std::to_string(kOldestStateFormatVersion) + " to " + std::to_string(kTaggedStateFormatVersion) + ")");
+                    std::to_string(kOldestStateFormatVersion) + " to " + std::to_string(kDetailStateFormatVersion) + ")");
     header.expect_end();
 
     SavedState saved;
     rgb::MeshState& state = saved.mesh;
-    enum class Section { None, BaseVertices, BaseFaces, Addresses, BaseUvs, BaseColours } section = Section::None;
-    std::size_t expected[6] = {0, 0, 0, 0, 0, 0};
-    bool seen[6] = {false, false, false, false, false, false};
-    std::vector<ObjStateLine> uv_records, colour_records;
+    enum class Section { None, BaseVertices, BaseFaces, Addresses, BaseUvs, BaseColours, Detail } section = Section::None;
+    std::size_t expected[7] = {0, 0, 0, 0, 0, 0, 0};
+    bool seen[7] = {false, false, false, false, false, false, false};
+    std::vector<ObjStateLine> uv_records, colour_records, detail_records;
     const ObjStateLine* uv_section_line = nullptr;
     const ObjStateLine* colour_section_line = nullptr;
+    const ObjStateLine* detail_section_line = nullptr;
     std::vector<rgb::SurfacePoint> addresses;
     std::vector<ObjStateLine> tag_records;  // version 4
     FaceLabelSectionReader face_labels(file);
@@ -285,12 +288,14 @@ std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const
             else if (name == "addresses") section = Section::Addresses;
             else if (name == "base-uvs") section = Section::BaseUvs;
             else if (name == "base-colours") section = Section::BaseColours;
+            else if (name == "detail" && version >= kDetailStateFormatVersion) section = Section::Detail;
             else r.fail("unknown section '" + std::string(name.substr(0, 40)) + "' (written by a newer rgbsub?)");
             const auto s = static_cast<int>(section);
             if (seen[s]) r.fail("section '" + std::string(name) + "' appears twice");
             seen[s] = true;
             if (section == Section::BaseUvs) uv_section_line = &line;
             if (section == Section::BaseColours) colour_section_line = &line;
+            if (section == Section::Detail) detail_section_line = &line;
             // Counts are bounded by what the lines can hold, so a forged count cannot exhaust memory.
             expected[s] = r.number<std::size_t>(kPerLine * lines.size() + std::max(body_vertices, body_faces));
             r.expect_end();
@@ -337,7 +342,10 @@ std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const
         } else if (kind == kColourRecord) {
             if (section != Section::BaseColours) r.fail("vertex colours outside their section");
             colour_records.push_back(line);
-        } else if (version == kTaggedStateFormatVersion && is_state_tag_record(kind)) {
+        } else if (version >= kDetailStateFormatVersion && is_detail_record(kind)) {
+            if (section != Section::Detail) r.fail("detail positions outside their section");
+            detail_records.push_back(line);
+        } else if (version >= kTaggedStateFormatVersion && is_state_tag_record(kind)) {
             tag_records.push_back(line);
         } else if (kind == "end") {
             r.expect_end();
@@ -367,6 +375,8 @@ std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const
     if (colour_section_line)
         saved.colours = parse_colour_section(colour_records, expected[static_cast<int>(Section::BaseColours)], state.base_positions.size(),
                                              *colour_section_line, file);
+    if (detail_section_line)
+        saved.detail = parse_detail_section(detail_records, expected[static_cast<int>(Section::Detail)], *detail_section_line, file);
     saved.labels = face_labels.finish(state.base_triangles.size(), lines.back());
     return saved;
 }

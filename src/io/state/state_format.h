@@ -30,6 +30,7 @@
 //                                        #rgb uv-untextured F [...]  base faces the input gave no UVs (sorted)
 //   #rgb section base-colours N        optional: the base vertices' colours (base_colour_state.h)
 //   #rgb section face-labels N         optional: the base faces' usemtl/g/o/s labels (face_label_state.h)
+//   #rgb section detail N              version 5: a cage's detail positions (detail_state.h)
 //   #rgb end
 // The -as- records keep a lightly refined file from repeating its base mesh (a base vertex shown at
 // level 0 and an untouched base face are in the body already): the state stays a small fraction of
@@ -48,6 +49,7 @@
 #include <vector>
 
 #include "io/obj/obj_parser.h"
+#include "io/state/detail_state.h"
 #include "rgb/mesh/state.h"
 #include "rgb/values/uv_layout.h"
 
@@ -56,6 +58,8 @@ namespace rgbio {
 inline constexpr unsigned kStateFormatVersion = 3;
 // Written instead for a base mesh with crease or corner tags.
 inline constexpr unsigned kTaggedStateFormatVersion = 4;
+// Written instead for a cage with detail (detail_state.h): version 4 plus the detail section.
+inline constexpr unsigned kDetailStateFormatVersion = 5;
 // The oldest version still read.
 inline constexpr unsigned kOldestStateFormatVersion = 2;
 
@@ -73,6 +77,7 @@ struct SavedState {
     std::optional<rgb::UvChannel> uvs;  // the base-uvs section, if any
     std::vector<glm::dvec3> colours;    // the base-colours section: empty, or one per base vertex
     BaseFaceLabels labels;  // empty without a face-labels section
+    std::optional<SavedDetail> detail;  // the detail section, if any (its base mesh is not built yet)
 };
 
 // Appends the lines of the mesh's state (rgb::capture_state's, read from the mesh as they are

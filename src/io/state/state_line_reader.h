@@ -60,6 +60,13 @@ public:
         }
         return value;
     }
+    // The rest of the line, blanks at its start skipped (a name that may hold spaces, last on its line).
+    std::string_view rest() {
+        skip_blanks();
+        const std::string_view r = rest_;
+        rest_ = {};
+        return r;
+    }
     void expect_end() {
         if (!at_end()) fail("unexpected trailing values");
     }

@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include "rgb/mesh/base_face_index.h"
+#include "rgb/mesh/detail_positions.h"
 #include "rgb/mesh/outgoing_halfedges.h"
 
 namespace rgb {
@@ -23,8 +24,10 @@ std::atomic<std::uint64_t> next_serial{1};
 }  // namespace
 
 BaseMesh::BaseMesh(std::span<const glm::dvec3> positions, std::span<const Triangle> triangles,
-                   const SharpFeatures& features)
-    : serial_(next_serial++), positions_(positions.begin(), positions.end()), faces_(triangles.begin(), triangles.end()) {
+                   const SharpFeatures& features, std::shared_ptr<const DetailPositions> detail)
+    : serial_(next_serial++), positions_(positions.begin(), positions.end()), faces_(triangles.begin(), triangles.end()),
+      detail_(std::move(detail)) {
+    if (detail_ && detail_->num_faces() != faces_.size()) reject("the detail was sampled over another base mesh");
     const auto nv = static_cast<std::uint32_t>(positions_.size());
     if (positions_.size() >= kNone || 3 * faces_.size() >= kNone) reject("the mesh is too large");
     for (std::uint32_t f = 0; f < faces_.size(); ++f) {
@@ -179,7 +182,8 @@ std::size_t BaseMesh::memory_bytes() const {
            (opposite_.size() + vertex_halfedge_.size() + valence_.size()) * sizeof(std::uint32_t) + boundary_.size() +
            edge_sharpness_.size() + corner_sharpness_.size() + sharp_rules_.size() * sizeof(std::uint32_t) +
            sharp_regimes_.size() * sizeof(Regimes) +
-           features_.edges.size() * sizeof(EdgeSharpness) + features_.corners.size() * sizeof(VertexSharpness);
+           features_.edges.size() * sizeof(EdgeSharpness) + features_.corners.size() * sizeof(VertexSharpness) +
+           (detail_ ? detail_->memory_bytes() : 0);
 }
 
 }  // namespace rgb

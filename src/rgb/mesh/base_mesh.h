@@ -23,6 +23,7 @@
 namespace rgb {
 
 class BaseFaceIndex;
+class DetailPositions;
 
 using Triangle = std::array<std::uint32_t, 3>;
 
@@ -34,8 +35,10 @@ public:
     // edges and vertices with sharpness 0-10 (above 10 counts as 10); throws std::invalid_argument
     // naming the first problem otherwise (io validates user input first, so this only catches callers
     // that skip it).
+    // `detail`, if given, are the positions of a dense surface for every vertex of the hierarchy
+    // (detail_positions.h), sampled over a base mesh of these triangles.
     BaseMesh(std::span<const glm::dvec3> positions, std::span<const Triangle> triangles,
-             const SharpFeatures& features = {});
+             const SharpFeatures& features = {}, std::shared_ptr<const DetailPositions> detail = nullptr);
     ~BaseMesh();
     BaseMesh(const BaseMesh&) = delete;
     BaseMesh& operator=(const BaseMesh&) = delete;
@@ -92,6 +95,12 @@ public:
         return has_sharp_rules(v) ? &sharp_regimes_[sharp_rules_[v] - 1] : nullptr;
     }
 
+    // ---- detail (detail_positions.h) ----
+    // The dense surface's positions, if this base mesh is a cage with detail: then every vertex is
+    // displayed there (loop_geometry.h, displayed_position), and the Loop values stay those of the cage.
+    const DetailPositions* detail() const { return detail_.get(); }
+    const std::shared_ptr<const DetailPositions>& shared_detail() const { return detail_; }
+
     // Bounding-volume hierarchy over the base triangles, built on first use.
     const BaseFaceIndex& face_index() const;
     // The longest base edge: no triangle of any Σk is larger than this.
@@ -122,6 +131,7 @@ private:
     // Per vertex: 0, or 1 + the index of its regimes in sharp_regimes_.
     std::vector<std::uint32_t> sharp_rules_;
     std::vector<Regimes> sharp_regimes_;
+    std::shared_ptr<const DetailPositions> detail_;
     mutable std::once_flag index_built_;
     mutable std::unique_ptr<BaseFaceIndex> index_;
 };

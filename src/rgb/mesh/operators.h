@@ -26,10 +26,10 @@ bool can_split_edge(const Mesh& mesh, HalfedgeId h);
 // The vertices whose control points at the edge's level give the new vertex's position: the two
 // endpoints, then (interior edges) the two opposite vertices of the uniform mesh of that level.
 InlineVector<VertexId, 4> split_stencil(const Mesh& mesh, HalfedgeId h);
-// Splits the edge of h (requires can_split_edge), applies the automatic BB-swaps and keeps the
-// normal form of spec §3.5 (in a parent with two split edges, the red triangle's red edge enters
-// its top vertex). The new vertex's p^l is `position`: the topology takes it as data, and
-// values/loop_split.h's split_edge computes Loop's (spec §4.4). Returns the new vertex.
+// Splits the edge of h (requires can_split_edge, which split_edge checks), applies the automatic
+// BB-swaps and keeps the normal form of spec §3.5 (in a parent with two split edges, the red
+// triangle's red edge enters its top vertex). The new vertex's p^l is `position`: the topology takes
+// it as data, and values/loop_split.h's split_edge computes Loop's (spec §4.4). Returns the new vertex.
 VertexId split_edge_at(Mesh& mesh, HalfedgeId h, const glm::dvec3& position);
 
 // ---- swaps (§2.5); h is a halfedge of the edge to flip ----

@@ -2,7 +2,7 @@
 // caller's (values/loop_split.h).
 #include <algorithm>
 #include <array>
-#include <stdexcept>
+#include <cassert>
 
 #include "rgb/mesh/mesh.h"
 #include "rgb/mesh/operators.h"
@@ -87,7 +87,8 @@ std::optional<SplitKind> split_kind(const Mesh& mesh, HalfedgeId h) {
 bool can_split_edge(const Mesh& mesh, HalfedgeId h) { return split_kind(mesh, h).has_value(); }
 
 VertexId split_edge_at(Mesh& mesh, HalfedgeId h, const glm::dvec3& position) {
-    if (!can_split_edge(mesh, h)) throw std::logic_error("split_edge: the edge is not splittable");
+    // Checked once, by split_edge (values/loop_split.h), before it walks the stencil for the position.
+    assert(can_split_edge(mesh, h));
     const int l = mesh.edge_type(h).level;
     const VertexId a = mesh.from_vertex(h), b = mesh.to_vertex(h);
     const bool boundary = mesh.is_boundary(h);

@@ -21,6 +21,7 @@ MeshState capture_state(const Mesh& mesh) {
     s.base_positions.assign(mesh.base().positions().begin(), mesh.base().positions().end());
     s.base_triangles.assign(mesh.base().faces().begin(), mesh.base().faces().end());
     s.sharp_features = mesh.base().sharp_features();
+    s.detail = mesh.base().shared_detail();
     std::vector<std::uint32_t> index(mesh.vertex_capacity(), BaseMesh::kNone);
     s.vertices.reserve(mesh.num_vertices());
     for (VertexId v : mesh.vertices()) {
@@ -169,7 +170,7 @@ OutgoingHalfedges matched_halfedges(const std::vector<Triangle>& faces, std::siz
 
 std::shared_ptr<const BaseMesh> restored_base_mesh(const MeshState& s) {
     try {
-        return std::make_shared<const BaseMesh>(s.base_positions, s.base_triangles, s.sharp_features);
+        return std::make_shared<const BaseMesh>(s.base_positions, s.base_triangles, s.sharp_features, s.detail);
     } catch (const std::invalid_argument& e) {
         fail(std::string("base mesh: ") + e.what());
     }

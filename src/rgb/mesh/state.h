@@ -15,6 +15,7 @@
 
 #include "rgb/mesh/address_index.h"
 #include "rgb/mesh/base_mesh.h"
+#include "rgb/mesh/detail_positions.h"
 #include "rgb/mesh/mesh.h"
 #include "rgb/mesh/surface_point.h"
 #include "rgb/support/progress.h"
@@ -28,6 +29,8 @@ struct MeshState {
     SharpFeatures sharp_features;  // the base mesh's tags (BaseMesh::sharp_features)
     std::vector<SurfacePoint> vertices;  // base vertices first, in base order
     std::vector<Triangle> faces;         // indices into vertices
+    // A cage's detail positions (detail_positions.h), shared with the base mesh; null for a plain mesh.
+    std::shared_ptr<const DetailPositions> detail;
 };
 
 MeshState capture_state(const Mesh& mesh);

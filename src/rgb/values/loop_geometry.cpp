@@ -5,6 +5,7 @@
 #include <memory>
 #include <vector>
 
+#include "rgb/mesh/detail_positions.h"
 #include "rgb/mesh/mesh.h"
 #include "rgb/mesh/navigation.h"
 #include "rgb/mesh/vertex_rules.h"
@@ -126,6 +127,7 @@ std::vector<std::uint8_t> display_levels(const Mesh& mesh) {
 glm::dvec3 displayed_position(const Mesh& mesh, VertexId v) { return displayed_position(mesh, v, display_level(mesh, v)); }
 
 glm::dvec3 displayed_position(const Mesh& mesh, VertexId v, int k) {
+    if (const DetailPositions* detail = mesh.base().detail()) return detail->position(mesh.base(), mesh.address(v));
     if (k <= mesh.level(v)) return mesh.insertion_position(v);
     return later_control_point(mesh, v, k, [&] { return limit_position_uncached(mesh, v); });
 }

@@ -38,7 +38,8 @@ int display_level(const Mesh& mesh, VertexId v);
 // whole-mesh use such as saving, where walking each vertex's star reaches its faces out of memory order.
 std::vector<std::uint8_t> display_levels(const Mesh& mesh);
 
-// p^k(v) for k = display_level(v): the mesh vertex position a viewer shows.
+// p^k(v) for k = display_level(v): the mesh vertex position a viewer shows; on a cage with detail
+// (BaseMesh::detail), the vertex's detail position instead, whatever its display level.
 glm::dvec3 displayed_position(const Mesh& mesh, VertexId v);
 // The same with v's display level already known (display_levels).
 glm::dvec3 displayed_position(const Mesh& mesh, VertexId v, int display_level);

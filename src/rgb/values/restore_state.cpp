@@ -5,6 +5,7 @@
 #include <string>
 #include <utility>
 
+#include "rgb/mesh/detail_positions.h"
 #include "rgb/support/parallel.h"
 #include "rgb/values/hierarchy_evaluator.h"
 #include "rgb/values/hierarchy_positions.h"
@@ -13,7 +14,7 @@
 namespace rgb {
 
 void set_sharp_features(Mesh& mesh, const SharpFeatures& features) {
-    auto base = std::make_shared<const BaseMesh>(mesh.base().positions(), mesh.base().faces(), features);
+    auto base = std::make_shared<const BaseMesh>(mesh.base().positions(), mesh.base().faces(), features, mesh.base().shared_detail());
     // Insertion positions by the new rules, from the base mesh (the evaluator caches what a vertex's
     // parents need, so this is linear in the vertices). Dead slots keep theirs.
     std::vector<glm::dvec3> insertion(mesh.vertex_capacity());
@@ -71,6 +72,11 @@ Mesh restore_state(const MeshState& s, const ProgressSpan& progress, RestoredCha
         m.reserve_limits(values.limits.size());
         for (const HierarchyPositions::Limit& l : values.limits) m.cache_limit(VertexId(l.vertex), l.position);
         if (positions) positions->values = std::move(values.at_levels);
+        // A cage with detail displays every vertex at its detail position (loop_geometry.h).
+        if (positions && positions->level == ChannelLevel::Displayed && base.detail())
+            parallel_for(nv, 1 << 12, [&](std::size_t begin, std::size_t end) {
+                for (std::size_t i = begin; i < end; ++i) positions->values[i] = base.detail()->position(base, points[i]);
+            });
     } catch (const std::invalid_argument& e) {
         invalid_state(e.what());
     }
