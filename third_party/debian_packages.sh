@@ -4,13 +4,13 @@
 RGBSUB_BUILD_PACKAGES=(
   build-essential cmake pkg-config python3-glad
   libglfw3-dev libglm-dev libimgui-dev libstb-dev libtinyobjloader-dev libtinygltf-dev libosmesa6-dev libgl-dev
-  libgtest-dev libbenchmark-dev libopenmesh-dev
+  libgtest-dev libbenchmark-dev libopenmesh-dev libeigen3-dev libembree-dev
 )
 # Only the test suite uses these: a virtual display for the editor window (xvfb-run needs xauth),
 # input injection, reference meshes, clang with its libFuzzer runtime for the loader's fuzz target,
 # and OpenSubdiv's Far (libosd-dev), the Loop oracle for creases, corners and face-varying UVs.
 # (GCC's AddressSanitizer and UBSan runtimes come with build-essential's g++.)
-RGBSUB_TEST_PACKAGES=(xvfb xauth xdotool assimp-testmodels clang libclang-rt-14-dev libosd-dev)
+RGBSUB_TEST_PACKAGES=(xvfb xauth xdotool assimp-testmodels clang libclang-rt-14-dev libosd-dev libmeshoptimizer-dev)
 
 # Installs whichever of the given packages are missing; apt-get runs only when one is.
 # Without root or sudo it prints the command to run and exits 2.

@@ -108,6 +108,16 @@ TEST_F(ExitCodes, EveryCommandFollowsTheDocumentedTable) {
         {{"apply", mesh, path("missing.txt"), "-o", obj}, "I/O or resource failure"},
         {{"apply", mesh, path("script.txt"), "-o", folder}, "I/O or resource failure"},
         {{"apply", mesh, path("script.txt"), "-o", obj}, "I/O or resource failure", tiny_disk},
+
+        {{"remesh", mesh, "-o", obj, "--cage-triangles", "8"}, "ok"},
+        {{"remesh", mesh, "-o", obj, "--cage-triangles", "8", "-x"}, "usage error"},
+        {{"remesh", mesh, "-o", obj}, "usage error"},
+        {{"remesh", mesh, "-o", png, "--cage-triangles", "8"}, "usage error"},
+        {{"remesh", broken, "-o", obj, "--cage-triangles", "8"}, "bad input"},
+        {{"remesh", mesh, "-o", obj, "--cage-triangles", "2"}, "bad input"},
+        {{"remesh", missing, "-o", obj, "--cage-triangles", "8"}, "I/O or resource failure"},
+        {{"remesh", mesh, "-o", obj, "--cage-triangles", "8", "--max-triangles", "4"}, "I/O or resource failure"},
+        {{"remesh", mesh, "-o", obj, "--cage-triangles", "8"}, "I/O or resource failure", tiny_disk},
     };
 
     std::set<std::pair<std::string, std::string>> covered;

@@ -18,8 +18,9 @@ ALLOWED = {layer: CORE[:i] for i, layer in enumerate(CORE)}
 ALLOWED.update({
     "io": CORE,
     "render": CORE,
-    "app": CORE + ["io", "render"],
-    "cli": CORE + ["io", "render", "app"],
+    "detail": CORE,
+    "app": CORE + ["io", "render", "detail"],
+    "cli": CORE + ["io", "render", "detail", "app"],
 })
 # Third-party geometry libraries the core must not use (README: the core knows no outside library).
 FORBIDDEN_IN_CORE = re.compile(r"#include\s*<(OpenMesh|CGAL|Eigen|embree\d*|meshoptimizer|assimp|opensubdiv|GL|GLFW|imgui)\b")

@@ -7,6 +7,7 @@
 #include "io/files/file_text.h"
 #include "io/obj/number_format.h"
 #include "io/obj/obj_error.h"
+#include "rgb/lod/limit_error.h"
 #include "rgb/lod/lod_driver.h"
 #include "rgb/mesh/mesh.h"
 
@@ -200,6 +201,8 @@ rgb::RequestStats ScriptRunner::run(rgb::Mesh& mesh, const ScriptLine& line) {
     rgb::LodSettings settings;
     settings.max_triangles = budget.triangles;
     settings.uniform_start = true;  // a script line runs to its end
+    // On a cage with detail the splits go where the surface departs most from the dense surface.
+    if (mesh.base().detail()) settings.value = rgb::on_mesh(rgb::detail_error_value(mesh.shared_base()));
     rgb::LodDriver driver(mesh, settings);
     driver.run();
     return {driver.report().splits, driver.report().removals, driver.report().level_cap_bound};

@@ -2,12 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include <glm/geometric.hpp>
 
 #include "rgb/mesh/base_mesh.h"
+#include "rgb/mesh/detail_positions.h"
 #include "rgb/values/hierarchy_triangle.h"
+#include "rgb/values/surface_error.h"
 
 namespace rgb {
 
@@ -91,8 +94,13 @@ LimitErrorCriterion::LimitErrorCriterion(std::shared_ptr<const BaseMesh> base, d
 }
 
 LimitErrorCriterion::Corner LimitErrorCriterion::corner(const SurfacePoint& p, int level) {
-    const glm::dvec3 limit = evaluator_.limit_position(p);
     Corner c;
+    // A cage with detail shows a vertex at its detail point whatever its display level.
+    if (const DetailPositions* detail = base_->detail()) {
+        c.fine = c.coarse = detail->position(*base_, p);
+        return c;
+    }
+    const glm::dvec3 limit = evaluator_.limit_position(p);
     c.fine = evaluator_.control_point(p, level);
     c.coarse = c.fine;
     for (int k = p.level; k < level; ++k) {
@@ -123,10 +131,12 @@ const std::array<double, 3>& LimitErrorCriterion::triangle_values(const Hierarch
         SampleWeights w{};
         w[static_cast<std::size_t>(c)] = 2;
         w[static_cast<std::size_t>((c + 1) % 3)] = 2;
-        midpoints[static_cast<std::size_t>(c)] = evaluator_.insertion_position(t.sample(w));
+        const SurfacePoint midpoint = t.sample(w);
+        midpoints[static_cast<std::size_t>(c)] =
+            base_->detail() ? base_->detail()->position(*base_, midpoint) : evaluator_.insertion_position(midpoint);
     }
     std::array<glm::dvec3, kSamplesPerTriangle> limits;
-    for (std::size_t s = 0; s < kSamplesPerTriangle; ++s) limits[s] = evaluator_.limit_position(t.sample(sample_weights()[s]));
+    for (std::size_t s = 0; s < kSamplesPerTriangle; ++s) limits[s] = target_position(*base_, evaluator_, t.sample(sample_weights()[s]));
 
     std::array<double, 3> values{};
     for (std::size_t e = 0; e < 3; ++e) {
@@ -179,6 +189,12 @@ double LimitErrorCriterion::value(const SurfacePoint& a, const SurfacePoint& b) 
         worst = std::max(worst, triangle_values(t)[(3 - first) % 3]);
     }
     return worst;
+}
+
+EdgeValue detail_error_value(const std::shared_ptr<const BaseMesh>& base) {
+    if (!base->detail()) throw std::invalid_argument("detail_error_value: the base mesh has no detail");
+    // With detail no corner depends on the tolerance (corner()), so any positive one gives the values.
+    return limit_error_value(base, std::numeric_limits<double>::max());
 }
 
 EdgeValue limit_error_value(const std::shared_ptr<const BaseMesh>& base, double tolerance) {

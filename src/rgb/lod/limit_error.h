@@ -1,6 +1,7 @@
 #pragma once
 // The tolerance criterion (docs/requests.md "Tolerance to the limit surface"): how far from the Loop limit
-// surface the displayed surface next to an edge of Σl can be while the edge stays unsplit.
+// surface (on a cage with detail: from the dense surface, values/surface_error.h target_position) the
+// displayed surface next to an edge of Σl can be while the edge stays unsplit.
 //
 // The displayed surface over a triangle T of Σl that the mesh holds unrefined is flat pieces between
 // T's corners (shown at p^k for some k <= l, spec §4.6) and the midpoints of T's split edges (shown at
@@ -65,5 +66,10 @@ private:
 
 // The criterion as requests take it; the returned function owns its criterion (and its caches).
 EdgeValue limit_error_value(const std::shared_ptr<const BaseMesh>& base, double tolerance);
+
+// On a cage with detail (BaseMesh::detail): how far the displayed surface next to the edge departs
+// from the dense surface, at the same samples; what a budget orders the splits by there, so that it
+// spends triangles where the surface departs most from it. Throws std::invalid_argument without detail.
+EdgeValue detail_error_value(const std::shared_ptr<const BaseMesh>& base);
 
 }  // namespace rgb

@@ -4,6 +4,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "rgb/mesh/detail_positions.h"
 #include "rgb/mesh/face_location.h"
 #include "rgb/mesh/mesh.h"
 #include "rgb/values/hierarchy_evaluator.h"
@@ -23,6 +24,11 @@ std::int64_t cross(const Numerators& p, const Numerators& q, const Numerators& r
 }
 
 }  // namespace
+
+glm::dvec3 target_position(const BaseMesh& base, HierarchyEvaluator& evaluator, const SurfacePoint& p) {
+    if (const DetailPositions* detail = base.detail()) return detail->position(base, p);
+    return evaluator.limit_position(p);
+}
 
 SurfaceError displayed_surface_error(const Mesh& mesh) {
     const BaseMesh& base = mesh.base();
@@ -52,7 +58,7 @@ SurfaceError displayed_surface_error(const Mesh& mesh) {
                                w2 = cross(corners[0], corners[1], q);
             if (w0 < 0 || w1 < 0 || w2 < 0) continue;
             const std::array<double, 3> weights{double(w0) / double(area), double(w1) / double(area), double(w2) / double(area)};
-            const glm::dvec3 limit = evaluator.limit_position(s);
+            const glm::dvec3 limit = target_position(base, evaluator, s);
             const double error = glm::distance(interpolate(shown, weights), limit);
             ++out.samples;
             if (error > out.max_error) {

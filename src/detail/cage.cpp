@@ -1,0 +1,621 @@
+#include "detail/cage.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <random>
+#include <stdexcept>
+#include <unordered_map>
+#include <unordered_set>
+
+#include <glm/geometric.hpp>
+
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include <OpenMesh/Tools/Decimater/DecimaterT.hh>
+#include <OpenMesh/Tools/Decimater/ModBaseT.hh>
+#include <OpenMesh/Tools/Decimater/ModNormalFlippingT.hh>
+#include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
+
+namespace rgbdetail {
+namespace {
+
+// ---------------------------------------------------------------------------------------------
+// Index bookkeeping
+// ---------------------------------------------------------------------------------------------
+
+struct CageUnionFind {
+    std::vector<std::uint32_t> parent;
+    explicit CageUnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
+    std::uint32_t find(std::uint32_t x) {
+        while (parent[x] != x) {
+            parent[x] = parent[parent[x]];
+            x = parent[x];
+        }
+        return x;
+    }
+    void unite(std::uint32_t a, std::uint32_t b) {
+        a = find(a);
+        b = find(b);
+        if (a != b) parent[std::max(a, b)] = std::min(a, b);
+    }
+};
+
+std::uint64_t cage_edge_key(std::uint32_t a, std::uint32_t b) {
+    return (static_cast<std::uint64_t>(a) << 32) | b;
+}
+
+// Directed edge (a -> b) -> halfedge 3f+i (from corner i to corner i+1 of face f). Assumes each
+// directed edge once (checked by manifold_problem).
+using HalfedgeTable = std::unordered_map<std::uint64_t, std::uint32_t>;
+
+HalfedgeTable halfedge_table(std::span<const rgb::Triangle> triangles) {
+    HalfedgeTable table;
+    table.reserve(triangles.size() * 3);
+    for (std::uint32_t f = 0; f < triangles.size(); ++f)
+        for (std::uint32_t i = 0; i < 3; ++i)
+            table.emplace(cage_edge_key(triangles[f][i], triangles[f][(i + 1) % 3]), 3 * f + i);
+    return table;
+}
+
+double triangle_area(std::span<const glm::dvec3> positions, const rgb::Triangle& t) {
+    const glm::dvec3 a = positions[t[0]];
+    return 0.5 * glm::length(glm::cross(positions[t[1]] - a, positions[t[2]] - a));
+}
+
+// A component's faces, its topology and its share of the target.
+struct ComponentPart {
+    std::vector<std::uint32_t> faces;
+    ComponentTopology topology;
+    std::size_t smallest = 0;
+    std::size_t share = 0;
+};
+
+// Faces grouped by component (through shared vertex indices), components in order of first face;
+// the mesh must be a valid oriented manifold.
+std::vector<ComponentPart> split_components(std::span<const glm::dvec3> positions,
+                                            std::span<const rgb::Triangle> triangles) {
+    CageUnionFind sets(positions.size());
+    for (const rgb::Triangle& t : triangles) {
+        sets.unite(t[0], t[1]);
+        sets.unite(t[0], t[2]);
+    }
+    std::vector<std::uint32_t> part_of_root(positions.size(), std::numeric_limits<std::uint32_t>::max());
+    std::vector<ComponentPart> parts;
+    for (std::uint32_t f = 0; f < triangles.size(); ++f) {
+        const std::uint32_t root = sets.find(triangles[f][0]);
+        if (part_of_root[root] == std::numeric_limits<std::uint32_t>::max()) {
+            part_of_root[root] = static_cast<std::uint32_t>(parts.size());
+            parts.emplace_back();
+            parts.back().topology.first_vertex = root;  // the root is the smallest index of its set
+        }
+        parts[part_of_root[root]].faces.push_back(f);
+    }
+
+    const HalfedgeTable table = halfedge_table(triangles);
+    std::vector<std::uint8_t> seen_vertex(positions.size(), 0);
+    // The boundary halfedge leaving each boundary vertex (one per vertex in a manifold).
+    std::unordered_map<std::uint32_t, std::uint32_t> boundary_next;
+    for (ComponentPart& part : parts) {
+        ComponentTopology& top = part.topology;
+        top.faces = part.faces.size();
+        std::size_t boundary_edges = 0;
+        boundary_next.clear();
+        for (std::uint32_t f : part.faces) {
+            const rgb::Triangle& t = triangles[f];
+            top.area += triangle_area(positions, t);
+            for (std::uint32_t i = 0; i < 3; ++i) {
+                if (!seen_vertex[t[i]]) {
+                    seen_vertex[t[i]] = 1;
+                    ++top.vertices;
+                }
+                const std::uint32_t a = t[i], b = t[(i + 1) % 3];
+                if (!table.contains(cage_edge_key(b, a))) {
+                    ++boundary_edges;
+                    boundary_next.emplace(b, a);  // the boundary runs b -> a, the face on its right
+                }
+            }
+        }
+        top.edges = (3 * top.faces + boundary_edges) / 2;
+        std::unordered_set<std::uint32_t> visited;
+        for (const auto& [start, next] : boundary_next) {
+            if (visited.contains(start)) continue;
+            ++top.boundary_loops;
+            std::uint32_t v = start;
+            do {
+                visited.insert(v);
+                v = boundary_next.at(v);
+            } while (v != start);
+        }
+        top.euler = static_cast<long>(top.vertices) - static_cast<long>(top.edges) + static_cast<long>(top.faces);
+    }
+    return parts;
+}
+
+bool canonical_before(const ComponentTopology& a, const ComponentTopology& b) {
+    if (a.euler != b.euler) return a.euler < b.euler;
+    if (a.boundary_loops != b.boundary_loops) return a.boundary_loops < b.boundary_loops;
+    if (a.faces != b.faces) return a.faces > b.faces;
+    return a.first_vertex < b.first_vertex;
+}
+
+std::string describe(const ComponentTopology& c) {
+    std::string text = "genus " + std::to_string(c.genus()) + " with " + std::to_string(c.boundary_loops) +
+                       " boundary loop" + (c.boundary_loops == 1 ? "" : "s") + " (Euler characteristic " +
+                       std::to_string(c.euler) + ")";
+    return text;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Smallest triangulations
+// ---------------------------------------------------------------------------------------------
+
+// The fewest vertices of a triangulation of the closed orientable surface of genus g: Heawood's
+// bound (the edges 3(n - 2 + 2g) fit in the n(n-1)/2 pairs, i.e. (n-3)(n-4) >= 12g), attained for
+// every genus but 2, which needs 10 (Jungerman and Ringel, "Minimal triangulations on orientable
+// surfaces", Acta Math. 145, 1980).
+std::size_t closed_vertices(long genus) {
+    if (genus == 2) return 10;
+    std::size_t n = 4;
+    while ((n - 3) * (n - 4) < 12 * static_cast<std::size_t>(genus)) ++n;
+    return n;
+}
+
+// ---------------------------------------------------------------------------------------------
+// OpenMesh
+// ---------------------------------------------------------------------------------------------
+
+struct CageTraits : OpenMesh::DefaultTraits {
+    using Point = OpenMesh::Vec3d;
+    using Normal = OpenMesh::Vec3d;
+};
+using CageMesh = OpenMesh::TriMesh_ArrayKernelT<CageTraits>;
+
+// The boundary loop of each boundary vertex (-1 inside), and the fewest edges each loop keeps.
+// Collapses keep boundary vertices on their loops (BaseDecimaterT never moves one inside), so the
+// labels set once stay right.
+struct LoopLimits {
+    OpenMesh::VPropHandleT<int> loop;
+    std::vector<std::size_t> min_edges;
+};
+
+// Refuses, besides OpenMesh's own tests, the collapse of an ear (a face whose two other edges are
+// boundary: collapsing would leave a dangling edge) and of a boundary edge of a loop at its fewest
+// edges (3, or more where the smallest cage needs every vertex on the boundary, as a torus with one
+// hole: 6). In the tests OpenMesh's tests alone never broke the topology; the loop limits are what
+// lets a torus with holes reach its smallest cage.
+template <class MeshT>
+class ModTopologyGuardT : public OpenMesh::Decimater::ModBaseT<MeshT> {
+public:
+    DECIMATING_MODULE(ModTopologyGuardT, MeshT, TopologyGuard);
+
+    explicit ModTopologyGuardT(MeshT& mesh) : Base(mesh, true) {}
+
+    void set_limits(const LoopLimits* limits) { limits_ = limits; }
+
+    float collapse_priority(const CollapseInfo& ci) override {
+        const MeshT& m = Base::mesh();
+        // CollapseInfo's vlv1, v0vl (vrv0, v1vr) are the halfedges outside the left (right) face.
+        auto ear = [&](typename MeshT::HalfedgeHandle a, typename MeshT::HalfedgeHandle b) {
+            return a.is_valid() && b.is_valid() && m.is_boundary(a) && m.is_boundary(b);
+        };
+        if (ci.vl.is_valid() && ear(ci.vlv1, ci.v0vl)) return Base::ILLEGAL_COLLAPSE;
+        if (ci.vr.is_valid() && ear(ci.vrv0, ci.v1vr)) return Base::ILLEGAL_COLLAPSE;
+        for (auto h : {ci.v0v1, ci.v1v0}) {
+            if (!m.is_boundary(h)) continue;
+            std::size_t keep = 3;
+            if (limits_ != nullptr) {
+                const int loop = m.property(limits_->loop, m.to_vertex_handle(h));
+                if (loop >= 0) keep = std::max(keep, limits_->min_edges[static_cast<std::size_t>(loop)]);
+            }
+            // Walk at most keep edges: back at h means the loop has no more than keep.
+            auto g = h;
+            std::size_t length = 0;
+            do {
+                g = m.next_halfedge_handle(g);
+                ++length;
+            } while (g != h && length <= keep);
+            if (g == h && length <= keep) return Base::ILLEGAL_COLLAPSE;
+        }
+        return Base::LEGAL_COLLAPSE;
+    }
+
+private:
+    const LoopLimits* limits_ = nullptr;
+};
+
+// One decimation pass to at most target faces; returns the faces left.
+std::size_t decimate_pass(CageMesh& mesh, std::size_t target, double max_normal_deviation,
+                          const LoopLimits& limits) {
+    if (mesh.n_faces() <= target) return mesh.n_faces();
+    OpenMesh::Decimater::DecimaterT<CageMesh> decimater(mesh);
+    OpenMesh::Decimater::ModQuadricT<CageMesh>::Handle quadric;
+    ModTopologyGuardT<CageMesh>::Handle guard;
+    OpenMesh::Decimater::ModNormalFlippingT<CageMesh>::Handle flipping;
+    decimater.add(quadric);
+    decimater.add(guard);
+    decimater.module(guard).set_limits(&limits);
+    if (max_normal_deviation > 0.0) {
+        decimater.add(flipping);
+        decimater.module(flipping).set_max_normal_deviation(max_normal_deviation);
+    }
+    decimater.module(quadric).unset_max_err();
+    decimater.initialize();
+    decimater.decimate_to_faces(0, target);
+    mesh.garbage_collection();
+    return mesh.n_faces();
+}
+
+// Random edge flips until the collapses reach the target again (an irreducible triangulation has
+// no legal collapse, but a flip makes one: the flip graph of a surface's triangulations with n
+// vertices is connected and holds reducible ones above the minimum).
+bool unstall(CageMesh& mesh, std::size_t target, const CageOptions& options, const LoopLimits& limits,
+             std::uint32_t seed, std::size_t& flips) {
+    std::mt19937 random(seed);
+    std::size_t attempts = 0;
+    while (mesh.n_faces() > target && flips < options.max_flips && attempts < 20 * options.max_flips) {
+        ++attempts;
+        std::uniform_int_distribution<std::size_t> pick(0, mesh.n_edges() - 1);
+        const CageMesh::EdgeHandle e(static_cast<int>(pick(random)));
+        if (mesh.is_boundary(e) || !mesh.is_flip_ok(e)) continue;
+        mesh.flip(e);
+        ++flips;
+        decimate_pass(mesh, target, 0.0, limits);
+    }
+    return mesh.n_faces() <= target;
+}
+
+// One component's cage, decimated to at most part.share faces; above it (reached false) where the
+// collapses and flips stalled. Checked: an oriented manifold with the component's topology.
+struct ComponentCage {
+    Cage cage;
+    bool reached = true;
+};
+
+ComponentCage cage_component(std::span<const glm::dvec3> positions, std::span<const rgb::Triangle> triangles,
+                             const ComponentPart& part, const CageOptions& options, std::uint32_t seed) {
+    CageMesh mesh;
+    mesh.request_vertex_status();
+    mesh.request_edge_status();
+    mesh.request_face_status();
+    mesh.request_face_normals();
+    OpenMesh::VPropHandleT<std::uint32_t> source;
+    mesh.add_property(source);
+    std::unordered_map<std::uint32_t, CageMesh::VertexHandle> handle_of;
+    handle_of.reserve(part.topology.vertices);
+    for (std::uint32_t f : part.faces)
+        for (std::uint32_t v : triangles[f])
+            if (!handle_of.contains(v)) {
+                const glm::dvec3& p = positions[v];
+                const CageMesh::VertexHandle h = mesh.add_vertex(CageMesh::Point(p.x, p.y, p.z));
+                mesh.property(source, h) = v;
+                handle_of.emplace(v, h);
+            }
+    for (std::uint32_t f : part.faces) {
+        const rgb::Triangle& t = triangles[f];
+        if (!mesh.add_face(handle_of.at(t[0]), handle_of.at(t[1]), handle_of.at(t[2])).is_valid())
+            throw std::logic_error("OpenMesh refused face " + std::to_string(f) + " of a validated manifold mesh");
+    }
+    mesh.update_face_normals();
+
+    // Each boundary loop keeps at least 3 edges (more for a surface of positive genus, below).
+    LoopLimits limits;
+    mesh.add_property(limits.loop);
+    for (CageMesh::VertexHandle v : mesh.vertices()) mesh.property(limits.loop, v) = -1;
+    for (CageMesh::HalfedgeHandle h : mesh.halfedges()) {
+        if (!mesh.is_boundary(h) || mesh.property(limits.loop, mesh.to_vertex_handle(h)) >= 0) continue;
+        const int loop = static_cast<int>(limits.min_edges.size());
+        limits.min_edges.push_back(3);
+        auto g = h;
+        do {
+            mesh.property(limits.loop, mesh.to_vertex_handle(g)) = loop;
+            g = mesh.next_halfedge_handle(g);
+        } while (g != h);
+    }
+    if (!limits.min_edges.empty() && part.topology.genus() > 0) {
+        // Collapses only shorten the loops and a cage with every vertex on the boundary has
+        // F = Eb - 2χ, so the loops keep what such a cage of the share would have, but no more than
+        // the smallest cage's vertices and two a loop (the bound may not be attained: a torus with
+        // two holes needs 12 triangles on 8 vertices, not the bound's 11 on 7), handed out in turn.
+        const long b = static_cast<long>(limits.min_edges.size());
+        const long smallest_vertices = static_cast<long>(part.smallest) + 2 * part.topology.euler;
+        const long keep = std::min(static_cast<long>(part.share) + 2 * part.topology.euler, smallest_vertices + 2 * b);
+        for (long extra = keep - 3 * b, k = 0; extra > 0; --extra, k = (k + 1) % b)
+            ++limits.min_edges[static_cast<std::size_t>(k)];
+    }
+
+    std::size_t faces = decimate_pass(mesh, part.share, options.max_normal_deviation_degrees, limits);
+    if (faces > part.share) faces = decimate_pass(mesh, part.share, 0.0, limits);
+    ComponentCage out;
+    if (faces > part.share) out.reached = unstall(mesh, part.share, options, limits, seed, out.cage.flips);
+
+    // Out: the component's cage, checked.
+    Cage& cage = out.cage;
+    for (CageMesh::VertexHandle v : mesh.vertices()) {
+        const CageMesh::Point& p = mesh.point(v);
+        cage.positions.emplace_back(p[0], p[1], p[2]);
+        cage.source_vertex.push_back(mesh.property(source, v));
+    }
+    cage.triangles.reserve(mesh.n_faces());
+    for (CageMesh::FaceHandle f : mesh.faces()) {
+        rgb::Triangle t{};
+        int i = 0;
+        for (CageMesh::VertexHandle v : mesh.fv_range(f)) t[i++] = static_cast<std::uint32_t>(v.idx());
+        cage.triangles.push_back(t);
+    }
+    if (auto problem = manifold_problem(cage.positions.size(), cage.triangles))
+        throw std::logic_error("the decimated cage is not an oriented manifold: " + *problem);
+    MeshTopology want;
+    want.components.push_back(part.topology);
+    if (auto mismatch = topology_mismatch(want, topology_of(cage.positions, cage.triangles)))
+        throw std::logic_error("the decimation changed a component's topology: " + *mismatch);
+    return out;
+}
+
+// Shares of the target proportional to area, each at least the component's smallest count and at
+// most its own face count (water filling: components pinned at a bound leave the rest to the others).
+void share_target(std::vector<ComponentPart>& parts, std::size_t target) {
+    std::vector<bool> pinned(parts.size(), false);
+    double budget = static_cast<double>(target);
+    for (;;) {
+        double area = 0.0;
+        for (std::size_t i = 0; i < parts.size(); ++i)
+            if (!pinned[i]) area += parts[i].topology.area;
+        const double scale = area > 0.0 ? budget / area : 0.0;
+        bool changed = false;
+        for (std::size_t i = 0; i < parts.size(); ++i)  // raise to the minimum first
+            if (!pinned[i] && scale * parts[i].topology.area < static_cast<double>(parts[i].smallest)) {
+                pinned[i] = true;
+                parts[i].share = parts[i].smallest;
+                budget -= static_cast<double>(parts[i].share);
+                changed = true;
+            }
+        if (changed) continue;
+        for (std::size_t i = 0; i < parts.size(); ++i)
+            if (!pinned[i] && scale * parts[i].topology.area >= static_cast<double>(parts[i].topology.faces)) {
+                pinned[i] = true;
+                parts[i].share = parts[i].topology.faces;
+                budget -= static_cast<double>(parts[i].share);
+                changed = true;
+            }
+        if (changed) continue;
+        for (std::size_t i = 0; i < parts.size(); ++i)
+            if (!pinned[i])
+                parts[i].share = std::max(parts[i].smallest,
+                                          static_cast<std::size_t>(std::floor(scale * parts[i].topology.area)));
+        return;
+    }
+}
+
+}  // namespace
+
+std::optional<std::string> manifold_problem(std::size_t vertex_count, std::span<const rgb::Triangle> triangles) {
+    const auto face_text = [](std::size_t f) { return "face " + std::to_string(f); };
+    for (std::size_t f = 0; f < triangles.size(); ++f) {
+        const rgb::Triangle& t = triangles[f];
+        for (std::uint32_t v : t)
+            if (v >= vertex_count)
+                return face_text(f) + " uses vertex " + std::to_string(v) + " of " + std::to_string(vertex_count);
+        if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) return face_text(f) + " repeats a corner";
+    }
+    HalfedgeTable table;
+    table.reserve(triangles.size() * 3);
+    for (std::uint32_t f = 0; f < triangles.size(); ++f)
+        for (std::uint32_t i = 0; i < 3; ++i) {
+            const std::uint32_t a = triangles[f][i], b = triangles[f][(i + 1) % 3];
+            if (!table.emplace(cage_edge_key(a, b), 3 * f + i).second)
+                return "edge " + std::to_string(a) + "-" + std::to_string(b) + " of " + face_text(f) +
+                       " runs the same way as in " + face_text(table.at(cage_edge_key(a, b)) / 3) +
+                       " (the faces are not consistently oriented, or the edge has more than two faces)";
+        }
+    std::vector<std::array<std::uint32_t, 3>> sorted(triangles.size());
+    std::vector<std::uint32_t> order(triangles.size());
+    for (std::uint32_t f = 0; f < triangles.size(); ++f) {
+        sorted[f] = triangles[f];
+        std::sort(sorted[f].begin(), sorted[f].end());
+    }
+    std::iota(order.begin(), order.end(), 0u);
+    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return sorted[a] < sorted[b]; });
+    for (std::size_t k = 1; k < order.size(); ++k)
+        if (sorted[order[k]] == sorted[order[k - 1]])
+            return face_text(order[k - 1]) + " and " + face_text(order[k]) + " have the same three corners";
+
+    // Fans: corners 3f+i of one vertex joined across each interior edge.
+    CageUnionFind corners(triangles.size() * 3);
+    for (std::uint32_t f = 0; f < triangles.size(); ++f)
+        for (std::uint32_t i = 0; i < 3; ++i) {
+            const std::uint32_t a = triangles[f][i], b = triangles[f][(i + 1) % 3];
+            const auto other = table.find(cage_edge_key(b, a));
+            if (other == table.end() || other->second < 3 * f + i) continue;
+            const std::uint32_t g = other->second / 3, j = other->second % 3;  // g runs b -> a from corner j
+            corners.unite(3 * f + i, 3 * g + (j + 1) % 3);                      // a
+            corners.unite(3 * f + (i + 1) % 3, 3 * g + j);                      // b
+        }
+    std::vector<std::uint32_t> fan(vertex_count, std::numeric_limits<std::uint32_t>::max());
+    for (std::uint32_t c = 0; c < triangles.size() * 3; ++c) {
+        const std::uint32_t v = triangles[c / 3][c % 3];
+        const std::uint32_t root = corners.find(c);
+        if (fan[v] == std::numeric_limits<std::uint32_t>::max())
+            fan[v] = root;
+        else if (fan[v] != root)
+            return "vertex " + std::to_string(v) + " has faces in more than one fan (a non-manifold vertex)";
+    }
+    return std::nullopt;
+}
+
+MeshTopology topology_of(std::span<const glm::dvec3> positions, std::span<const rgb::Triangle> triangles) {
+    if (auto problem = manifold_problem(positions.size(), triangles))
+        throw std::invalid_argument("not an oriented manifold triangle mesh: " + *problem);
+    MeshTopology topology;
+    for (ComponentPart& part : split_components(positions, triangles)) topology.components.push_back(part.topology);
+    std::sort(topology.components.begin(), topology.components.end(), canonical_before);
+    return topology;
+}
+
+// Derivation. A simplicial surface with V vertices, E edges, F faces and b boundary loops of Eb
+// edges in all (Eb boundary vertices: in a manifold each lies on one loop) has 3F = 2E - Eb and
+// χ = V - E + F = 2 - 2g - b, so
+//     F = 2V - Eb - 2χ,    E = 3V - Eb - 3χ.
+// Closed (b = 0): F = 2(V - 2 + 2g), least at the fewest vertices, closed_vertices(g) above
+// (V = 4, F = 4: the tetrahedron; V = 7, F = 14: Möbius' torus; V = 10, F = 24 for genus 2).
+// Bordered (b >= 1): F = 2V - Eb - 2χ >= V - 2χ with equality when every vertex is on the boundary
+// (Eb = V), and Eb = V also makes E smallest, so F_min = V_min - 2χ for the fewest V that meets
+//   (a) each loop has at least 3 edges: V >= Eb >= 3b;
+//   (b) the edges fit in the pairs: 2V - 3χ <= V(V-1)/2;
+//   (c) coning each loop over a new vertex gives a closed surface of genus g with V + b vertices,
+//       whose cone vertices are pairwise non-adjacent: V + b >= closed_vertices(g) and
+//       3V - 3χ <= (V+b)(V+b-1)/2 - b(b-1)/2.
+// These are necessary, so F_min is a lower bound. It is attained for genus 0 (V = 3b, F = 5b - 4:
+// a triangle with b - 1 triangular holes, whose 3b corners triangulate without inner vertices into
+// 3b + 2(b-1) - 2 triangles; 1 for a disc, 6 for an annulus) and for a torus with one hole (V = 6,
+// F = 8: Möbius' torus, the complete graph K7, without one vertex's star). For other bordered
+// surfaces of positive genus no closed form is known to us; make_cage reaches the bound when the
+// decimation and its flips find such a triangulation, and says otherwise.
+std::size_t smallest_component_triangles(long genus, std::size_t boundary_loops) {
+    if (genus < 0) throw std::invalid_argument("negative genus " + std::to_string(genus));
+    const long chi = 2 - 2 * genus - static_cast<long>(boundary_loops);
+    if (boundary_loops == 0) return static_cast<std::size_t>(2 * (static_cast<long>(closed_vertices(genus)) - chi));
+    const long b = static_cast<long>(boundary_loops);
+    const long closed = static_cast<long>(closed_vertices(genus));
+    for (long v = 3 * b;; ++v) {
+        const bool pairs = 2 * v - 3 * chi <= v * (v - 1) / 2;
+        const bool cone = v + b >= closed && 3 * v - 3 * chi <= (v + b) * (v + b - 1) / 2 - b * (b - 1) / 2;
+        if (pairs && cone) return static_cast<std::size_t>(v - 2 * chi);
+    }
+}
+
+std::size_t smallest_cage_triangles(const MeshTopology& topology) {
+    std::size_t sum = 0;
+    for (const ComponentTopology& c : topology.components)
+        sum += smallest_component_triangles(c.genus(), c.boundary_loops);
+    return sum;
+}
+
+std::optional<std::string> topology_mismatch(const MeshTopology& m, const MeshTopology& c) {
+    const auto count = [](std::size_t n) { return std::to_string(n) + " component" + (n == 1 ? "" : "s"); };
+    if (m.components.size() != c.components.size())
+        return "the cage has " + count(c.components.size()) + " and the mesh " + count(m.components.size());
+    // Both in canonical order: the first difference in (euler, boundary loops) names the mismatch.
+    for (std::size_t i = 0; i < m.components.size(); ++i) {
+        const ComponentTopology& a = m.components[i];
+        const ComponentTopology& b = c.components[i];
+        if (a.euler != b.euler || a.boundary_loops != b.boundary_loops)
+            return "the mesh has a component of " + describe(a) + " where the cage has one of " + describe(b) +
+                   " (component " + std::to_string(i + 1) + " of " + std::to_string(m.components.size()) +
+                   " in order of Euler characteristic)";
+    }
+    return std::nullopt;
+}
+
+Cage make_cage(std::span<const glm::dvec3> positions, std::span<const rgb::Triangle> triangles,
+               std::size_t target_triangles, const CageOptions& options) {
+    if (triangles.empty()) throw std::invalid_argument("cannot build a cage of an empty mesh (no triangles)");
+    if (triangles.size() == 1) throw std::invalid_argument("cannot build a cage of a single triangle");
+    if (auto problem = manifold_problem(positions.size(), triangles))
+        throw std::invalid_argument("cannot build a cage: not an oriented manifold triangle mesh: " + *problem);
+    double area = 0.0;
+    for (const rgb::Triangle& t : triangles) {
+        for (std::uint32_t v : t)
+            if (!std::isfinite(positions[v].x) || !std::isfinite(positions[v].y) || !std::isfinite(positions[v].z))
+                throw std::invalid_argument("cannot build a cage: vertex " + std::to_string(v) +
+                                            " has a non-finite position");
+        area += triangle_area(positions, t);
+    }
+    if (!(area > 0.0))
+        throw std::invalid_argument("cannot build a cage of a degenerate mesh: every triangle has zero area");
+
+    std::vector<ComponentPart> parts = split_components(positions, triangles);
+    std::size_t smallest = 0;
+    for (ComponentPart& part : parts) {
+        part.smallest = smallest_component_triangles(part.topology.genus(), part.topology.boundary_loops);
+        smallest += part.smallest;
+    }
+    if (target_triangles < smallest) {
+        MeshTopology topology;
+        for (const ComponentPart& part : parts) topology.components.push_back(part.topology);
+        std::sort(topology.components.begin(), topology.components.end(), canonical_before);
+        std::string what;
+        for (const ComponentTopology& c : topology.components)
+            what += (what.empty() ? "" : ", ") + describe(c);
+        throw std::invalid_argument("a cage of " + std::to_string(target_triangles) +
+                                    " triangles is too few for this mesh's topology (" + what +
+                                    "): the smallest is " + std::to_string(smallest) + " triangles");
+    }
+
+    const std::size_t budget = std::min(target_triangles, triangles.size());
+    if (target_triangles >= triangles.size()) {
+        for (ComponentPart& part : parts) part.share = part.faces.size();  // the mesh as it is
+    } else {
+        share_target(parts, budget);
+    }
+    std::vector<ComponentCage> cages;
+    const auto seed_of = [&](std::size_t i) { return options.seed + static_cast<std::uint32_t>(i) * 7919u; };
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+        cages.push_back(cage_component(positions, triangles, parts[i], options, seed_of(i)));
+        // Stalled: the smallest share above that it reaches (a few tries; each is a decimation).
+        const std::size_t share = parts[i].share;
+        for (std::size_t more = 1; !cages[i].reached && more <= 4 && share + more < cages[i].cage.triangles.size();
+             ++more) {
+            ComponentPart larger = parts[i];
+            larger.share = share + more;
+            ComponentCage retry = cage_component(positions, triangles, larger, options, seed_of(i));
+            if (retry.reached) {
+                parts[i].smallest = std::max(parts[i].smallest, larger.share);
+                cages[i] = std::move(retry);
+                cages[i].reached = false;  // above its share: the others give up the excess
+            }
+        }
+    }
+
+    // A component that stalled above its share (a bordered surface of positive genus can need more
+    // than smallest_component_triangles' bound) takes the excess from the others, down to their
+    // smallest counts; when they cannot give it, the target is refused with the count that works.
+    const auto total = [&] {
+        std::size_t sum = 0;
+        for (const ComponentCage& c : cages) sum += c.cage.triangles.size();
+        return sum;
+    };
+    for (std::size_t round = 0; round <= parts.size() && total() > budget; ++round) {
+        std::size_t excess = total() - budget;
+        bool changed = false;
+        for (std::size_t i = 0; i < parts.size() && excess > 0; ++i) {
+            const std::size_t faces = cages[i].cage.triangles.size();
+            if (!cages[i].reached || faces <= parts[i].smallest) continue;
+            const std::size_t give = std::min(excess, faces - parts[i].smallest);
+            ComponentPart smaller = parts[i];
+            smaller.share = faces - give;
+            ComponentCage retry = cage_component(positions, triangles, smaller, options, seed_of(i));
+            const std::size_t now = retry.cage.triangles.size();
+            if (now < faces) {
+                excess -= std::min(excess, faces - now);
+                parts[i] = smaller;
+                cages[i] = std::move(retry);
+                changed = true;
+            } else {
+                cages[i].reached = false;  // gives nothing: leave it as it was
+            }
+        }
+        if (!changed) break;
+    }
+    if (total() > budget) {
+        std::size_t works = 0;
+        for (std::size_t i = 0; i < parts.size(); ++i)
+            works += cages[i].reached ? parts[i].smallest : cages[i].cage.triangles.size();
+        throw std::invalid_argument("a cage of " + std::to_string(target_triangles) +
+                                    " triangles is too few for this mesh: the decimation stalls above it (the "
+                                    "topology's bound is " + std::to_string(smallest) +
+                                    "); the smallest that works here is " + std::to_string(works) + " triangles");
+    }
+
+    Cage cage;
+    for (const ComponentCage& c : cages) {
+        const auto offset = static_cast<std::uint32_t>(cage.positions.size());
+        cage.positions.insert(cage.positions.end(), c.cage.positions.begin(), c.cage.positions.end());
+        cage.source_vertex.insert(cage.source_vertex.end(), c.cage.source_vertex.begin(), c.cage.source_vertex.end());
+        for (rgb::Triangle t : c.cage.triangles) cage.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+        cage.flips += c.cage.flips;
+    }
+    return cage;
+}
+
+}  // namespace rgbdetail

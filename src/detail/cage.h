@@ -1,0 +1,102 @@
+#pragma once
+// The cage of a dense mesh: a coarse manifold triangle mesh with the dense mesh's topology (as its
+// indices give it: vertices that merely share a position stay apart), for `rgbsub remesh` (issue 28)
+// to subdivide and fit. The simplification is OpenMesh's Decimater (quadric error), whose collapse
+// test (TriConnectivity::is_collapse_ok: the link condition, no interior edge between two boundary
+// vertices) keeps the surface manifold and its Euler characteristic and boundary loops; a guard
+// module of ours also refuses ears and keeps each boundary loop long enough for the smallest cage,
+// and every cage is checked (manifold, topology) before it is returned.
+// meshoptimizer's meshopt_simplify was the other candidate: it collapses by an error bound on an
+// index buffer and does not promise manifoldness or topology, so it is not used.
+//
+// Plain data in and out: positions and rgb::Triangle index triples, counter-clockwise outside.
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "rgb/mesh/base_mesh.h"
+
+namespace rgbdetail {
+
+// One connected component (faces joined through shared vertex indices).
+struct ComponentTopology {
+    std::size_t vertices = 0;        // vertices used by the component's faces
+    std::size_t edges = 0;
+    std::size_t faces = 0;
+    std::size_t boundary_loops = 0;
+    long euler = 0;                  // vertices - edges + faces
+    std::uint32_t first_vertex = 0;  // the component's smallest vertex index (ties in the order)
+    double area = 0.0;
+
+    // 2 - 2g - b = χ for an orientable surface.
+    long genus() const { return (2 - euler - static_cast<long>(boundary_loops)) / 2; }
+};
+
+// The components in a canonical order: by Euler characteristic, then boundary loops (ascending),
+// then faces (descending), then first vertex. Two meshes have the same topology when the sequences
+// of (euler, boundary_loops) agree; unused vertices belong to no component.
+struct MeshTopology {
+    std::vector<ComponentTopology> components;
+};
+
+// Why the triangles are not an oriented 2-manifold triangle mesh over vertex_count vertices (an index
+// out of range, a repeated corner, a directed edge used twice, an edge in three faces, two faces on
+// the same three vertices, a vertex whose faces form more than one fan), or nothing.
+std::optional<std::string> manifold_problem(std::size_t vertex_count, std::span<const rgb::Triangle> triangles);
+
+// Throws std::invalid_argument with manifold_problem's reason when the mesh is not an oriented
+// manifold.
+MeshTopology topology_of(std::span<const glm::dvec3> positions, std::span<const rgb::Triangle> triangles);
+
+// The fewest triangles a manifold triangle mesh (a simplicial surface: no two faces on the same
+// corners, no two edges between the same vertices) of genus g with b boundary loops can have; the
+// derivation is in cage.cpp. 4 for a sphere, 1 for a disc, 6 for an annulus, 14 for a torus, 8 for
+// a torus with one hole, 24 for genus 2.
+std::size_t smallest_component_triangles(long genus, std::size_t boundary_loops);
+// The sum over the components.
+std::size_t smallest_cage_triangles(const MeshTopology& topology);
+
+// A user-readable reason why a cage of topology c cannot stand for a mesh of topology m, or nothing.
+std::optional<std::string> topology_mismatch(const MeshTopology& m, const MeshTopology& c);
+
+struct CageOptions {
+    // First pass: refuse collapses that turn a face's normal by more than this (degrees); a second
+    // pass without it runs when the first stops above the target.
+    double max_normal_deviation_degrees = 60.0;
+    // When the collapses stall above a component's share (an irreducible triangulation: every edge
+    // lies on a non-facial triangle), random edge flips make collapses possible again; at most this
+    // many flips per component before it stays where it stalled (make_cage then asks the other
+    // components to give up the excess, or refuses the target).
+    std::size_t max_flips = 20000;
+    std::uint32_t seed = 1;
+};
+
+struct Cage {
+    std::vector<glm::dvec3> positions;
+    std::vector<rgb::Triangle> triangles;
+    // For each cage vertex, the input vertex it is (collapses keep original vertices and positions).
+    std::vector<std::uint32_t> source_vertex;
+    // Edge flips made where the collapses stalled above a component's share (0 but near the
+    // smallest counts).
+    std::size_t flips = 0;
+};
+
+// Decimates the mesh to at most target_triangles triangles (and, when the mesh has more, at least
+// about target_triangles / 3: each component gets a share of the target proportional to its area,
+// at least its own smallest count, and is decimated to it). A mesh with no more than the target is
+// returned as it is. Throws std::invalid_argument for an empty, one-triangle, all-degenerate
+// (zero-area) or non-finite or non-manifold mesh, and for a target below smallest_cage_triangles
+// (the message names that number: "the smallest is N triangles"). Where that bound is not
+// attainable (it is exact for closed surfaces, genus 0 and a torus with one hole; see cage.cpp) or
+// the search does not find it, a component stalls above its share: the others give up the excess
+// when they can, and otherwise the target is refused with the count the stalled components reached
+// ("the smallest that works here is N triangles"). Deterministic for given options.
+Cage make_cage(std::span<const glm::dvec3> positions, std::span<const rgb::Triangle> triangles,
+               std::size_t target_triangles, const CageOptions& options = {});
+
+}  // namespace rgbdetail
