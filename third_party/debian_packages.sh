@@ -8,7 +8,8 @@ RGBSUB_BUILD_PACKAGES=(
 )
 # Only the test suite uses these: a virtual display for the editor window (xvfb-run needs xauth),
 # input injection, reference meshes, clang with its libFuzzer runtime for the loader's fuzz target,
-# and OpenSubdiv's Far (libosd-dev), the Loop oracle for creases, corners and face-varying UVs.
+# OpenSubdiv's Far (libosd-dev), the Loop oracle for creases, corners and face-varying UVs, and
+# meshoptimizer, which the LOD quality benchmark (tests/bench/lod_quality.cpp) compares against.
 # (GCC's AddressSanitizer and UBSan runtimes come with build-essential's g++.)
 RGBSUB_TEST_PACKAGES=(xvfb xauth xdotool assimp-testmodels clang libclang-rt-14-dev libosd-dev libmeshoptimizer-dev)
 

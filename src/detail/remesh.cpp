@@ -103,7 +103,10 @@ Remeshed remesh(std::span<const glm::dvec3> positions, std::span<const rgb::Tria
     std::vector<glm::dvec3> origins, normals;
     limit_frames(plain, points, origins, normals);
     report_progress(options, 0.8, "sampling the detail");
-    report.search_distance = options.search_share * bounding_box_diagonal(positions);
+    // At least a few times the fit's largest distance: where the cage is far from M (a thin part it
+    // cannot follow), a shorter search would leave the line without M and the point at M's nearest
+    // point, which may lie on another part.
+    report.search_distance = std::max(options.search_share * bounding_box_diagonal(positions), 3.0 * report.fit_after.max);
     // A point where the limit surface has no normal (a degenerate cage) takes the nearest point of M.
     std::vector<std::uint8_t> no_normal(normals.size(), 0);
     for (std::size_t i = 0; i < normals.size(); ++i)

@@ -35,7 +35,8 @@ struct RemeshOptions {
     std::vector<rgb::Triangle> cage_triangles_given;
     // M's name, kept with the detail for reports.
     std::string source_name;
-    // How far along the limit normal a point looks for M, as a share of M's bounding-box diagonal.
+    // How far along the limit normal a point looks for M, as a share of M's bounding-box diagonal (at
+    // least three times the fit's largest distance).
     double search_share = 0.05;
     // The finest sampled level at most (memory: about 12 bytes per triangle of Σ_K, each point saved).
     int max_detail_level = 6;
