@@ -5,6 +5,7 @@
 #include <thread>
 #include <utility>
 
+#include "detail/remesh.h"
 #include "io/gltf_export.h"
 
 namespace app {
@@ -14,6 +15,9 @@ struct BackgroundTask::Shared {
     std::atomic<bool> done{false};
     std::optional<std::string> error;
     std::optional<LoadedDocument> document;
+    std::atomic<const char*> phase{"starting"};  // a remesh's phase (string literals)
+    std::atomic<bool> stop{false};                // set when the task is dropped
+    std::string summary;
 };
 
 namespace {
@@ -40,7 +44,7 @@ std::string describe(const std::exception& failure) {
 BackgroundTask::BackgroundTask(Kind kind, std::string path)
     : kind_(kind), path_(std::move(path)), start_(std::chrono::steady_clock::now()), shared_(std::make_shared<Shared>()) {}
 
-BackgroundTask::~BackgroundTask() = default;
+BackgroundTask::~BackgroundTask() { shared_->stop.store(true, std::memory_order_relaxed); }
 
 int BackgroundTask::running() { return threads_running.load(); }
 
@@ -72,14 +76,56 @@ std::unique_ptr<BackgroundTask> BackgroundTask::save(rgb::Mesh copy, const std::
     return task;
 }
 
+std::unique_ptr<BackgroundTask> BackgroundTask::remesh(std::shared_ptr<const rgb::BaseMesh> dense, std::size_t cage_triangles,
+                                                       const std::string& path, render::PositionSource source) {
+    std::unique_ptr<BackgroundTask> task(new BackgroundTask(Kind::Remesh, path));
+    start_thread([shared = task->shared_, dense = std::move(dense), cage_triangles, path, source] {
+        try {
+            // The remesh takes most of the time; building the document the rest.
+            constexpr double kRemeshShare = 0.95;
+            rgbdetail::RemeshOptions options;
+            options.cage_triangles = cage_triangles;
+            options.source_name = path;
+            options.progress = [&shared](double share, const char* phase) {
+                shared->phase.store(phase, std::memory_order_relaxed);
+                shared->progress.reach(kRemeshShare * share);
+                return !shared->stop.load(std::memory_order_relaxed);
+            };
+            rgbdetail::Remeshed remeshed = rgbdetail::remesh(dense->positions(), dense->faces(), options);
+            shared->phase.store("building the display", std::memory_order_relaxed);
+            LoadedDocument loaded{rgb::Mesh(remeshed.base), std::make_shared<const rgbio::BaseAttributes>(), render::SurfaceGeometry(source),
+                                  SurfaceIndex(), {}, std::nullopt};
+            reserve_room(loaded.mesh, loaded.geometry, loaded.index, kRoomFactor * loaded.mesh.num_faces());
+            loaded.geometry.rebuild(loaded.mesh);
+            loaded.index.rebuild(loaded.mesh, loaded.geometry);
+            const rgbdetail::RemeshReport& report = remeshed.report;
+            shared->summary = "a cage of " + std::to_string(report.cage_triangles) + " triangles with the detail of " + path + " to level " +
+                              std::to_string(report.detail_level) + " (" + std::to_string(report.detail_points) + " points, " +
+                              std::to_string(report.nearest_points) + " nearest instead of a ray hit)";
+            shared->document.emplace(std::move(loaded));
+        } catch (const rgbdetail::Stopped&) {
+            shared->error = "stopped";
+        } catch (const std::exception& failure) {
+            shared->error = describe(failure);
+        }
+        shared->done.store(true, std::memory_order_release);
+    });
+    return task;
+}
+
 double BackgroundTask::seconds() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
 
 double BackgroundTask::fraction() const { return done() ? 1.0 : shared_->progress.fraction(); }
 
 std::string BackgroundTask::status() const {
     const int percent = static_cast<int>(std::floor(100.0 * fraction()));
+    if (kind_ == Kind::Remesh) return "Making a cage of " + path_ + ": " + phase() + ", " + std::to_string(percent) + "%, Esc stops";
     return (kind_ == Kind::Open ? "Opening " : "Saving ") + path_ + ": " + std::to_string(percent) + "%";
 }
+
+std::string BackgroundTask::phase() const { return shared_->phase.load(std::memory_order_relaxed); }
+
+const std::string& BackgroundTask::summary() const { return shared_->summary; }
 
 bool BackgroundTask::done() const { return shared_->done.load(std::memory_order_acquire); }
 

@@ -6,6 +6,7 @@
 // its thread finish on its own and throws the result away.
 #include <atomic>
 #include <chrono>
+#include <cstddef>
 #include <memory>
 #include <optional>
 #include <string>
@@ -18,12 +19,19 @@ namespace app {
 
 class BackgroundTask {
 public:
-    enum class Kind { Open, Save };
+    enum class Kind { Open, Save, Remesh };
 
     // Reads `path` with load_document.
     static std::unique_ptr<BackgroundTask> open(const std::string& path, render::PositionSource source);
     // Writes `copy` to `path` with rgbio::save_mesh_file (atomically; glTF for .glb and .gltf).
     static std::unique_ptr<BackgroundTask> save(rgb::Mesh copy, const std::string& path, const rgbio::SaveOptions& options);
+
+    // Makes a cage of about `cage_triangles` triangles for the dense mesh `dense` that keeps its
+    // detail (rgbdetail::remesh) and builds the document of it at level 0 (mesh, geometry, index);
+    // `path` names the dense mesh's file. Dropping the task stops the remesh at its next progress
+    // report (rgbdetail::Stopped), throwing the work away.
+    static std::unique_ptr<BackgroundTask> remesh(std::shared_ptr<const rgb::BaseMesh> dense, std::size_t cage_triangles,
+                                                  const std::string& path, render::PositionSource source);
 
     ~BackgroundTask();
     // Threads of tasks, dropped or not, that have not finished yet.
@@ -36,12 +44,17 @@ public:
     double seconds() const;
     // How far the reading or writing is, in [0, 1], never decreasing; 1 once done.
     double fraction() const;
-    // "Opening PATH: 43%" or "Saving PATH: 43%", for the status line.
+    // "Opening PATH: 43%", "Saving PATH: 43%" or "Making a cage of PATH: fitting the cage, 43%",
+    // for the status line.
     std::string status() const;
+    // A remesh's phase now ("making the cage", "fitting the cage", "sampling the detail", ...).
+    std::string phase() const;
     bool done() const;
     // Once done: the failure, if it failed ("FILE:LINE: problem" for a file that cannot be read).
     const std::optional<std::string>& error() const;
-    // Once done, an open that worked: the document (once).
+    // Once done, a remesh that worked: what it did, in a line.
+    const std::string& summary() const;
+    // Once done, an open or remesh that worked: the document (once).
     LoadedDocument take_document();
 
 private:

@@ -34,11 +34,12 @@ double milliseconds_since(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-Editor::Editor(glm::ivec2 viewport) : Editor(EditorOptions{viewport, std::nullopt, 0, 0.0f, std::chrono::seconds(120)}) {}
+Editor::Editor(glm::ivec2 viewport) : Editor(EditorOptions{viewport, std::nullopt, 0, 0.0f, std::chrono::seconds(120), kDenseMeshTriangles}) {}
 
 Editor::Editor(const EditorOptions& options)
     : viewport_(options.viewport), recovery_interval_(options.recovery_interval), covered_right_(options.covered_right),
       rollback_reserve_(new char[kRollbackReserve]) {
+    dense_mesh_triangles_ = options.dense_mesh_triangles;
     frame_mesh();
     recovery_due_ = std::chrono::steady_clock::now() + recovery_interval_;
     if (!options.recovery_folder) return;

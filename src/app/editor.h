@@ -43,7 +43,15 @@
 namespace app {
 
 // A question the user must answer before the editor goes on.
-enum class Pending { None, DiscardForQuit, DiscardForOpen, Overwrite, Recover };
+// DenseMesh: a plain mesh above EditorOptions::dense_mesh_triangles was read; make a cage of it that
+// keeps its detail, or open it as a base mesh (answer_dense_mesh). RemeshFailed: the cage could not
+// be made (pending_message() says why); answering only closes the dialog.
+enum class Pending { None, DiscardForQuit, DiscardForOpen, Overwrite, Recover, DenseMesh, RemeshFailed };
+
+// A plain mesh with more triangles than this is offered a cage when it is opened (Pending::DenseMesh).
+inline constexpr std::size_t kDenseMeshTriangles = 200000;
+// The cage offered: this share of the dense mesh's triangles, at least the topology's smallest.
+inline constexpr double kCageShare = 0.005;
 
 struct EditorOptions {
     glm::ivec2 viewport{1280, 800};
@@ -53,6 +61,8 @@ struct EditorOptions {
     float covered_right = 0.0f;  // see set_covered_right
     // Unsaved work is copied this often (and before whole-mesh actions).
     std::chrono::seconds recovery_interval{120};
+    // Opening a plain mesh with more triangles asks first (Pending::DenseMesh).
+    std::size_t dense_mesh_triangles = kDenseMeshTriangles;
 };
 
 // What the engine and picking cost, for the statistics panel and the benchmarks.
@@ -178,6 +188,23 @@ public:
     Pending pending() const { return pending_; }
     const std::string& pending_path() const { return pending_path_; }
     void answer_pending(bool proceed);
+    // Pending::DenseMesh. The cage's triangle count the question offers (editable; the remesh gets it
+    // as its budget), the least it may be (the topology's smallest cage), the dense mesh's count.
+    std::size_t& cage_triangles() { return cage_triangles_; }
+    std::size_t smallest_cage_triangles() const { return smallest_cage_; }
+    std::size_t dense_triangles() const;
+    // make_cage: remesh in the background (file_task(), kind Remesh; Esc stops it and leaves the
+    // document as it was); on success the document is the cage with the detail at level 0, unsaved,
+    // with suggested_path() (NAME_cage.obj) for Save. Otherwise the mesh opens as a base mesh.
+    // answer_pending(false) opens nothing.
+    void answer_dense_mesh(bool make_cage);
+    // Where Save proposes to write an unsaved document that has no file yet ("" if none): Ctrl+S then
+    // opens the browser there instead of refusing.
+    const std::string& suggested_path() const { return suggested_path_; }
+    // The dialog's Stop while the cage is made (Esc does the same): the document stays as it was.
+    void stop_remesh();
+    // Pending::RemeshFailed's reason.
+    const std::string& pending_message() const { return pending_message_; }
     // Once nothing is being saved.
     bool should_quit() const;
     // A clean exit: the recovery copy goes (after one being written is done).
@@ -226,6 +253,11 @@ private:
     // Esc while a file is read: the result is dropped (a save is never stopped half way).
     void stop_opening();
     void opened(LoadedDocument loaded, const std::string& path);
+    // A file read, with the user's consent to replace the document: asks Pending::DenseMesh for a
+    // dense plain mesh, opens it otherwise.
+    void take_opened(LoadedDocument loaded, const std::string& path);
+    // A remesh's result arrived (editor_files.cpp).
+    void remeshed(BackgroundTask& task);
     // The recovery copy: written when `force`d or due, if there is unsaved work not yet in it.
     void keep_recovery_copy(bool force);
     void poll_recovery_task();
@@ -274,6 +306,13 @@ private:
     std::uint64_t saved_changes_ = 0;             // the document's change count in the copy being saved
     bool quit_after_save_ = false;
     std::optional<LoadedDocument> opened_;  // read, waiting for the answer to DiscardForOpen
+    std::optional<LoadedDocument> dense_;   // read, waiting for the answer to DenseMesh
+    std::size_t dense_mesh_triangles_ = kDenseMeshTriangles;
+    std::size_t cage_triangles_ = 0;
+    std::size_t smallest_cage_ = 0;
+    std::string suggested_path_;
+    std::string pending_message_;
+    bool remesh_drops_looks_ = false;  // the dense mesh had texture coordinates, colours or materials
 
     // Recovery copies of unsaved work.
     std::optional<RecoveryStore> recovery_;

@@ -77,8 +77,66 @@ void ask(const char* title, const std::string& text, const std::vector<Answer>& 
         if (&answer != &answers.front()) ImGui::SameLine();
         if (ImGui::Button(answer.button)) pressed = &answer;
     }
+    // Answered: closed now, or the modal would stay open unseen and keep the keyboard and mouse.
+    if (pressed != nullptr) ImGui::CloseCurrentPopup();
     ImGui::EndPopup();
     if (pressed != nullptr) pressed->act();
+}
+
+// While the cage of a dense mesh is made: its phase and progress, and Stop.
+void remesh_progress(Editor& editor) {
+    const BackgroundTask* task = editor.file_task();
+    const char* title = "Making a cage";
+    if (task == nullptr || task->kind() != BackgroundTask::Kind::Remesh) {
+        // Done or stopped: closed, or the modal would stay open unseen and keep the keyboard and mouse.
+        if (ImGui::IsPopupOpen(title) && ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+            ImGui::CloseCurrentPopup();
+            ImGui::EndPopup();
+        }
+        return;
+    }
+    ImGui::OpenPopup(title);
+    if (!ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    ImGui::Text("Making a cage of %zu triangles for %s", editor.cage_triangles(), task->path().c_str());
+    ImGui::Text("%s", task->phase().c_str());
+    ImGui::ProgressBar(static_cast<float>(task->fraction()), ImVec2(420.0f, 0.0f));
+    const bool stop = ImGui::Button("Stop") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape));
+    ImGui::SameLine();
+    ImGui::TextDisabled("Esc; the mesh on screen stays as it is");
+    ImGui::EndPopup();
+    if (stop) editor.stop_remesh();
+}
+
+// A dense plain mesh was read: a cage that keeps its detail, or the mesh as a base mesh.
+void dense_mesh_question(Editor& editor) {
+    const char* title = "A dense mesh";
+    ImGui::OpenPopup(title);
+    if (!ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    ImGui::Text("%s has %zu triangles.", editor.pending_path().c_str(), editor.dense_triangles());
+    ImGui::TextUnformatted(
+        "A cage keeps its detail: the brush then paints level of detail of this mesh,\n"
+        "coarsening below the file and refining back to its detail. As a base mesh,\n"
+        "every triangle is a level-0 face and the brush refines it further.");
+    std::size_t& cage = editor.cage_triangles();
+    const std::size_t smallest = editor.smallest_cage_triangles();
+    const std::size_t most = std::max(editor.dense_triangles(), smallest);
+    ImGui::SetNextItemWidth(160.0f);
+    static_assert(sizeof(std::size_t) == 8, "ImGuiDataType_U64 edits the count in place");
+    ImGui::InputScalar("cage triangles", ImGuiDataType_U64, &cage);
+    cage = std::clamp(cage, smallest, most);
+    ImGui::SameLine();
+    ImGui::TextDisabled("(at least %zu for its topology)", smallest);
+    const std::string make = "Make a cage of " + std::to_string(cage) + " triangles and keep the detail";
+    const bool make_cage = ImGui::Button(make.c_str());
+    const bool as_base = ImGui::Button("Open it as a base mesh");
+    ImGui::SameLine();
+    // Esc: the window gives the editor no keys while a modal is open.
+    const bool cancel = ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape));
+    if (make_cage || as_base || cancel) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+    if (make_cage) editor.answer_dense_mesh(true);
+    else if (as_base) editor.answer_dense_mesh(false);
+    else if (cancel) editor.answer_pending(false);
 }
 
 }  // namespace
@@ -133,7 +191,9 @@ void questions(Editor& editor) {
     const auto yes = [&] { editor.answer_pending(true); };
     const auto no = [&] { editor.answer_pending(false); };
     switch (editor.pending()) {
-        case Pending::None: return;
+        case Pending::None: remesh_progress(editor); return;
+        case Pending::DenseMesh: dense_mesh_question(editor); return;
+        case Pending::RemeshFailed: ask("No cage", editor.pending_message(), {{"OK", no}}); return;
         case Pending::DiscardForQuit:
             ask("Quit?", "The mesh has unsaved changes.",
                 {{"Save and quit", [&] { editor.save_and_quit(); }}, {"Quit without saving", yes}, {"Cancel", no}});

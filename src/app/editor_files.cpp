@@ -1,10 +1,12 @@
 // The editor's files: opening and saving (right away, or in the background with the questions
 // first), the questions themselves, the session's strokes as a script, and the recovery copy.
+#include <algorithm>
 #include <filesystem>
 #include <thread>
 #include <utility>
 
 #include "app/editor.h"
+#include "detail/cage.h"
 #include "io/files/atomic_file.h"
 #include "io/obj/obj_error.h"
 
@@ -45,6 +47,7 @@ bool Editor::save_as(const std::string& path) {
     try {
         document_.save(path, save_options_);
         report("saved " + path, false);
+        suggested_path_.clear();
     } catch (const rgbio::SaveError& error) {
         report(error.what(), true);
         return false;
@@ -90,6 +93,10 @@ void Editor::files_dropped(std::span<const std::string> paths) {
 }
 
 void Editor::request_save() {
+    if (document_.path().empty() && !suggested_path_.empty()) {
+        browse_request_ = Browse::SaveAs;  // a made document (a cage): ask where, never over its source
+        return;
+    }
     if (document_.path().empty()) {
         report("the mesh has no file yet: use Save as", true);
         return;
@@ -133,6 +140,10 @@ void Editor::poll_file_task() {
     if (file_task_->kind() == BackgroundTask::Kind::Open && busy()) return;
     const std::unique_ptr<BackgroundTask> task = std::move(file_task_);
     const bool recovering = std::exchange(recovering_, false);
+    if (task->kind() == BackgroundTask::Kind::Remesh) {
+        remeshed(*task);
+        return;
+    }
     if (task->error()) {
         report(*task->error(), true);
         quit_after_save_ = false;
@@ -141,6 +152,7 @@ void Editor::poll_file_task() {
     }
     if (task->kind() == BackgroundTask::Kind::Save) {
         document_.saved_as(task->path(), saved_changes_);
+        suggested_path_.clear();
         remember_recent(task->path());
         report("saved " + task->path() + " in " + std::to_string(static_cast<int>(task->seconds() * 1000.0)) + " ms", false);
         if (recovery_ && !document_.dirty()) recovery_->remove_own();
@@ -164,10 +176,85 @@ void Editor::poll_file_task() {
         pending_path_ = task->path();
         return;
     }
-    opened(task->take_document(), task->path());
+    take_opened(task->take_document(), task->path());
+}
+
+void Editor::take_opened(LoadedDocument loaded, const std::string& path) {
+    const rgb::Mesh& mesh = loaded.mesh;
+    // A plain mesh: no detail, every face a base face (a saved adaptive file at level 0 counts too).
+    const bool plain = mesh.base().detail() == nullptr && mesh.num_faces() == mesh.base().num_faces();
+    if (!plain || mesh.base().num_faces() <= dense_mesh_triangles_) {
+        opened(std::move(loaded), path);
+        return;
+    }
+    try {
+        smallest_cage_ = rgbdetail::smallest_cage_triangles(rgbdetail::topology_of(mesh.base().positions(), mesh.base().faces()));
+    } catch (const std::exception& error) {
+        // Not a mesh a cage can be made of: open it as before, and say why nothing was offered.
+        opened(std::move(loaded), path);
+        report(path + ": opened as a base mesh; no cage can be made of it: " + error.what(), false);
+        return;
+    }
+    const auto share = static_cast<std::size_t>(kCageShare * static_cast<double>(mesh.base().num_faces()));
+    cage_triangles_ = std::max(share, smallest_cage_);
+    dense_ = std::move(loaded);
+    pending_ = Pending::DenseMesh;
+    pending_path_ = path;
+}
+
+std::size_t Editor::dense_triangles() const { return dense_ ? dense_->mesh.base().num_faces() : 0; }
+
+void Editor::answer_dense_mesh(bool make_cage) {
+    if (pending_ != Pending::DenseMesh || !dense_) return;
+    pending_ = Pending::None;
+    LoadedDocument loaded = std::move(*dense_);
+    dense_.reset();
+    if (!make_cage) {
+        opened(std::move(loaded), pending_path_);
+        return;
+    }
+    if (cage_triangles_ < smallest_cage_) {
+        pending_ = Pending::RemeshFailed;
+        pending_message_ = "A cage of " + pending_path_ + " needs at least " + std::to_string(smallest_cage_) + " triangles.";
+        report(pending_message_, true);
+        return;
+    }
+    freeze_view_lod();
+    const rgbio::BaseAttributes& looks = *loaded.attributes;
+    remesh_drops_looks_ = loaded.uvs.has_value() || !looks.texcoords.empty() || !looks.colours.empty() || !looks.materials.empty();
+    file_task_ = BackgroundTask::remesh(loaded.mesh.shared_base(), cage_triangles_, pending_path_, document_.geometry().source());
+    report("making a cage of " + std::to_string(cage_triangles_) + " triangles for " + pending_path_ + " ...", false);
+}
+
+void Editor::remeshed(BackgroundTask& task) {
+    if (task.error()) {
+        pending_ = Pending::RemeshFailed;
+        pending_path_ = task.path();
+        pending_message_ = "Could not make a cage of " + task.path() + ":\n" + *task.error() + "\nNothing changed.";
+        report("could not make a cage of " + task.path() + ": " + *task.error(), true);
+        return;
+    }
+    cancel_job();  // nothing may go on working on the mesh being replaced
+    document_.adopt(task.take_document(), std::string(), true);
+    const std::filesystem::path source(task.path());
+    suggested_path_ = (source.parent_path() / (source.stem().string() + "_cage.obj")).string();
+    report("made " + task.summary() + ": unsaved, Save asks where (" + suggested_path_ + " proposed)" +
+               (remesh_drops_looks_ ? "; its texture coordinates, colours and materials are not kept" : ""),
+           false);
+    reset_view();
+    keep_recovery_copy(true);
+}
+
+void Editor::stop_remesh() {
+    if (file_task_ && file_task_->kind() == BackgroundTask::Kind::Remesh) stop_opening();
 }
 
 void Editor::stop_opening() {
+    if (file_task_ && file_task_->kind() == BackgroundTask::Kind::Remesh) {
+        report("stopped making the cage of " + file_task_->path() + ": nothing changed", false);
+        file_task_.reset();  // the remesh stops at its next progress report
+        return;
+    }
     if (!file_task_ || file_task_->kind() != BackgroundTask::Kind::Open) return;
     report("stopped opening " + file_task_->path(), false);
     file_task_.reset();
@@ -178,6 +265,7 @@ void Editor::opened(LoadedDocument loaded, const std::string& path) {
     cancel_job();  // nothing may go on working on the mesh being replaced
     const std::vector<std::string> warnings = std::move(loaded.warnings);
     document_.adopt(std::move(loaded), path);
+    suggested_path_.clear();
     report(warnings.empty() ? "opened " + path : path + ": " + warnings.front() + (warnings.size() > 1 ? " (and more)" : ""), false);
     remember_recent(path);
     reset_view();
@@ -212,7 +300,7 @@ void Editor::answer_pending(bool proceed) {
     switch (question) {
         case Pending::DiscardForQuit: quit_ = proceed; break;
         case Pending::DiscardForOpen:
-            if (proceed) opened(std::move(*opened_), pending_path_);
+            if (proceed) take_opened(std::move(*opened_), pending_path_);
             opened_.reset();
             break;
         case Pending::Overwrite:
@@ -228,6 +316,16 @@ void Editor::answer_pending(bool proceed) {
                 offered_.reset();
             }
             break;
+        case Pending::DenseMesh:
+            if (proceed) {
+                pending_ = Pending::DenseMesh;
+                answer_dense_mesh(true);
+            } else {
+                report("did not open " + pending_path_, false);
+                dense_.reset();
+            }
+            break;
+        case Pending::RemeshFailed: pending_message_.clear(); break;
         case Pending::None: break;
     }
 }

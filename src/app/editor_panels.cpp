@@ -152,8 +152,10 @@ void actions_panel(Editor& editor, PanelState& state) {
 
 void files_panel(Editor& editor, PanelState& state) {
     // The field follows the document, and goes back to it after a file that could not be opened.
-    if (editor.document().path() != state.shown_document_path || editor.open_failures() != state.seen_open_failures) {
-        state.shown_document_path = editor.document().path();
+    // A made document without a file (a cage) shows the name Save proposes.
+    const std::string& shown = editor.document().path().empty() ? editor.suggested_path() : editor.document().path();
+    if (shown != state.shown_document_path || editor.open_failures() != state.seen_open_failures) {
+        state.shown_document_path = shown;
         state.seen_open_failures = editor.open_failures();
         copy_path(state, state.shown_document_path);
     }

@@ -38,6 +38,11 @@ render::Image render_editor_frame(const std::string& file, const HeadlessFrame& 
     Editor editor(frame.size);
     editor.set_covered_right(kPanelCover);
     editor.load(file);
+    return render_editor_frame(editor, frame);
+}
+
+render::Image render_editor_frame(Editor& editor, const HeadlessFrame& frame) {
+    editor.set_covered_right(kPanelCover);
     render::OffscreenContext context(frame.size.x, frame.size.y);
     ImGuiSession session;
     ImGuiIO& io = ImGui::GetIO();

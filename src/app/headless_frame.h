@@ -24,4 +24,9 @@ struct HeadlessFrame {
 // be loaded, std::runtime_error when no OSMesa context can be made.
 render::Image render_editor_frame(const std::string& file, const HeadlessFrame& frame);
 
+class Editor;
+// One frame of `editor` as it stands, dialogs included (a question it asks, a cage being made):
+// the editor's viewport should be frame.size.
+render::Image render_editor_frame(Editor& editor, const HeadlessFrame& frame);
+
 }  // namespace app

@@ -3,7 +3,10 @@
 // free, the dark panel at the top right and status bar at the bottom, the brush ring around the
 // resting mouse, white elsewhere.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <fstream>
+#include <thread>
 
 #include <gtest/gtest.h>
 
@@ -12,6 +15,9 @@
 #include "app/editor.h"
 #include "app/headless_frame.h"
 #include "gl_test_support.h"
+#include "render/image.h"
+#include "small_meshes.h"
+#include "test_paths.h"
 #include "textured_quad.h"
 
 namespace app {
@@ -147,6 +153,48 @@ TEST(HeadlessFrame, TextureModeShowsTheCheckerForAMissingTexture) {
 
 TEST(HeadlessFrame, ALoadErrorIsReported) {
     EXPECT_THROW(render_editor_frame("/nonexistent/mesh.obj", HeadlessFrame{}), std::runtime_error);
+}
+
+// Opening a dense mesh: the question, the cage being made, and the cage with its detail. The frames
+// are written to the test's temporary folder (dense_*.png) for a person to look at.
+TEST(HeadlessFrame, ADenseMeshShowsTheCageQuestionThenTheCageWithItsDetail) {
+    const std::filesystem::path folder = test::fresh_folder("dense_frames");
+    const std::string file = test::write_torus(folder, 120, 60);  // 14,400 triangles
+    HeadlessFrame frame;
+    frame.size = {1280, 800};
+    EditorOptions options;
+    options.viewport = frame.size;
+    options.dense_mesh_triangles = 10000;
+    Editor editor(options);
+    editor.request_open(file);
+    while (editor.file_task() != nullptr) {
+        editor.update(std::chrono::milliseconds(5));
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    ASSERT_EQ(editor.pending(), Pending::DenseMesh);
+    const auto write = [&](const render::Image& image, const char* name) {
+        std::ofstream(folder / name, std::ios::binary) << render::encode_png(image);
+    };
+    const auto dark_share = [](const render::Image& image, int x0, int y0, int x1, int y1) {
+        std::size_t n = 0;
+        for (int y = y0; y < y1; ++y)
+            for (int x = x0; x < x1; ++x) n += is_dark(image.pixel(x, y));
+        return static_cast<double>(n) / static_cast<double>((x1 - x0) * (y1 - y0));
+    };
+    const render::Image question = render_editor_frame(editor, frame);
+    write(question, "dense_question.png");
+    // The modal's dark box in the middle of the window (nothing is open behind it).
+    EXPECT_GT(dark_share(question, 540, 380, 740, 420), 0.5);
+
+    editor.answer_dense_mesh(true);
+    write(render_editor_frame(editor, frame), "dense_making.png");
+    editor.finish_work();
+    ASSERT_NE(editor.document().mesh().base().detail(), nullptr) << editor.message();
+    frame.colouring = render::Colouring::Level;
+    frame.wireframe = true;
+    const render::Image cage = render_editor_frame(editor, frame);
+    write(cage, "dense_cage.png");
+    EXPECT_LT(dark_share(cage, 400, 380, 500, 420), 0.5) << "no dialog is left";
 }
 
 }  // namespace
