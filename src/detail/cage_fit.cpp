@@ -20,23 +20,9 @@ using DenseXYZ = Eigen::Matrix<double, Eigen::Dynamic, 3>;
 // The umbrella Laplacian of the control net (cage_fit.h): interior rows v - mean(ring), boundary rows
 // v - mean(two boundary neighbours).
 StencilMatrix umbrella_laplacian(const LoopTopology& topology) {
-    const std::size_t n = topology.num_vertices();
-    std::vector<Eigen::Triplet<double>> entries;
-    entries.reserve(8 * n);
-    for (std::uint32_t v = 0; v < n; ++v) {
-        const auto ring = topology.ring(v);
-        const auto row = static_cast<Eigen::Index>(v);
-        entries.emplace_back(row, v, 1.0);
-        if (topology.is_boundary(v)) {
-            entries.emplace_back(row, ring.front(), -0.5);
-            entries.emplace_back(row, ring.back(), -0.5);
-        } else {
-            for (std::uint32_t w : ring) entries.emplace_back(row, w, -1.0 / static_cast<double>(ring.size()));
-        }
-    }
-    StencilMatrix l(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
-    l.setFromTriplets(entries.begin(), entries.end());
-    return l;
+    return ring_mask_matrix(topology, [](bool boundary, int valence) {
+        return RingMask{1.0, boundary ? -0.5 : -1.0 / static_cast<double>(valence)};
+    });
 }
 
 }  // namespace fit_internal

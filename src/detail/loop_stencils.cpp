@@ -154,27 +154,34 @@ StencilMatrix subdivision_matrix(const LoopTopology& topology) {
     return s;
 }
 
-StencilMatrix limit_matrix(const LoopTopology& topology) {
+StencilMatrix ring_mask_matrix(const LoopTopology& topology, const std::function<RingMask(bool boundary, int valence)>& mask) {
     const std::size_t n = topology.num_vertices();
     std::vector<Eigen::Triplet<double>> entries;
     entries.reserve(8 * n);
     for (std::uint32_t v = 0; v < n; ++v) {
         const auto ring = topology.ring(v);
         const auto row = static_cast<Eigen::Index>(v);
-        if (topology.is_boundary(v)) {
-            entries.emplace_back(row, v, 2.0 / 3.0);
-            entries.emplace_back(row, ring.front(), 1.0 / 6.0);
-            entries.emplace_back(row, ring.back(), 1.0 / 6.0);
+        const bool boundary = topology.is_boundary(v);
+        const RingMask m = mask(boundary, static_cast<int>(ring.size()));
+        entries.emplace_back(row, v, m.centre);
+        if (boundary) {
+            entries.emplace_back(row, ring.front(), m.neighbour);
+            entries.emplace_back(row, ring.back(), m.neighbour);
         } else {
-            const int valence = static_cast<int>(ring.size());
-            const double c = rgb::loop_limit_ring_weight(valence);
-            entries.emplace_back(row, v, 1.0 - c);
-            for (std::uint32_t w : ring) entries.emplace_back(row, w, c / valence);
+            for (std::uint32_t w : ring) entries.emplace_back(row, w, m.neighbour);
         }
     }
     StencilMatrix l(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
     l.setFromTriplets(entries.begin(), entries.end());
     return l;
+}
+
+StencilMatrix limit_matrix(const LoopTopology& topology) {
+    return ring_mask_matrix(topology, [](bool boundary, int valence) {
+        if (boundary) return RingMask{2.0 / 3.0, 1.0 / 6.0};
+        const double c = rgb::loop_limit_ring_weight(valence);
+        return RingMask{1.0 - c, c / valence};
+    });
 }
 
 LoopStencils limit_stencils(std::size_t cage_vertex_count, std::span<const rgb::Triangle> cage_triangles, int level) {

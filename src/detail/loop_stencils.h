@@ -19,6 +19,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -73,6 +74,14 @@ private:
 StencilMatrix subdivision_matrix(const LoopTopology& topology);
 // V x V: each vertex's limit position from its level's control points.
 StencilMatrix limit_matrix(const LoopTopology& topology);
+// The weights of a vertex and of each neighbour that takes part: every ring neighbour inside, the two
+// boundary neighbours on the boundary.
+struct RingMask {
+    double centre = 0.0, neighbour = 0.0;
+};
+// One row per vertex, from the mask that its boundary flag and valence give (limit_matrix's, the
+// fit's Laplacian).
+StencilMatrix ring_mask_matrix(const LoopTopology& topology, const std::function<RingMask(bool boundary, int valence)>& mask);
 
 // The limit positions of the vertices of level `level` (0 = the cage's own vertices) as rows over
 // the cage's control points: L_level * S_(level-1) * ... * S_0.

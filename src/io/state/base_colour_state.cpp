@@ -2,27 +2,15 @@
 
 #include <algorithm>
 
-#include "io/obj/number_format.h"
+#include "io/state/point_records.h"
 #include "io/state/state_line_reader.h"
 
 namespace rgbio {
 
-namespace {
-
-constexpr std::size_t kColoursPerLine = 8;
-
-}  // namespace
-
 void append_colour_section(std::span<const glm::dvec3> colours, std::string& out, const std::function<void()>& flush_if_full) {
     if (colours.empty()) return;
     out += "#rgb section base-colours " + std::to_string(colours.size()) + "\n";
-    for (std::size_t i = 0; i < colours.size(); i += kColoursPerLine) {
-        out += "#rgb " + std::string(kColourRecord);
-        for (std::size_t k = i; k < std::min(colours.size(), i + kColoursPerLine); ++k)
-            for (int c = 0; c < 3; ++c) append_double(out, colours[k][c]);
-        out += '\n';
-        flush_if_full();
-    }
+    append_point_records(out, kColourRecord, colours, flush_if_full);
 }
 
 std::vector<glm::dvec3> parse_colour_section(std::span<const ObjStateLine> records, std::size_t announced, std::size_t base_vertices,
@@ -36,13 +24,7 @@ std::vector<glm::dvec3> parse_colour_section(std::span<const ObjStateLine> recor
     for (const ObjStateLine& line : records) {
         StateLineReader r(line, file);
         r.word();  // the record's name
-        while (!r.at_end()) {
-            glm::dvec3 colour;
-            for (int c = 0; c < 3; ++c) colour[c] = r.number<double>();
-            // Bounded by the announced count, so that a forged file cannot make the list grow without end.
-            if (colours.size() == announced) r.fail("more colours than the " + std::to_string(announced) + " announced");
-            colours.push_back(colour);
-        }
+        read_point_record(r, colours, announced, "colours");
     }
     if (colours.size() != announced)
         header.fail("section 'base-colours' announces " + std::to_string(announced) + " colours but holds " + std::to_string(colours.size()));

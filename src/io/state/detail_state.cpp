@@ -1,18 +1,11 @@
 #include "io/state/detail_state.h"
 
-#include <algorithm>
 #include <stdexcept>
 
-#include "io/obj/number_format.h"
+#include "io/state/point_records.h"
 #include "io/state/state_line_reader.h"
 
 namespace rgbio {
-
-namespace {
-
-constexpr std::size_t kPointsPerLine = 8;
-
-}  // namespace
 
 void append_detail_section(const rgb::BaseMesh& base, std::string& out, const std::function<void()>& flush_if_full) {
     const rgb::DetailPositions* detail = base.detail();
@@ -23,13 +16,7 @@ void append_detail_section(const rgb::BaseMesh& base, std::string& out, const st
     const rgb::DetailOrigin& origin = detail->origin();
     out += "#rgb detail-origin " + std::to_string(origin.source_triangles) + " " + std::to_string(origin.nearest_points) + " " +
            origin.source + "\n";
-    for (std::size_t i = 0; i < values.size(); i += kPointsPerLine) {
-        out += "#rgb " + std::string(kDetailRecord);
-        for (std::size_t k = i; k < std::min(values.size(), i + kPointsPerLine); ++k)
-            for (int c = 0; c < 3; ++c) append_double(out, values[k][c]);
-        out += '\n';
-        flush_if_full();
-    }
+    append_point_records(out, kDetailRecord, values, flush_if_full);
 }
 
 bool is_detail_record(std::string_view kind) { return kind == kDetailRecord || kind == "detail-level" || kind == "detail-origin"; }
@@ -53,13 +40,7 @@ SavedDetail parse_detail_section(std::span<const ObjStateLine> records, std::siz
             saved.origin.nearest_points = r.number<std::size_t>(announced);
             saved.origin.source = std::string(r.rest());
         } else {
-            while (!r.at_end()) {
-                glm::dvec3 p;
-                for (int c = 0; c < 3; ++c) p[c] = r.number<double>();
-                // Bounded by the announced count, so that a forged file cannot make the list grow without end.
-                if (saved.values.size() == announced) r.fail("more detail positions than the " + std::to_string(announced) + " announced");
-                saved.values.push_back(p);
-            }
+            read_point_record(r, saved.values, announced, "detail positions");
         }
     }
     if (!level_seen) header.fail("section 'detail' has no detail-level record");
