@@ -4,7 +4,7 @@
 RGBSUB_BUILD_PACKAGES=(
   build-essential cmake pkg-config python3-glad
   libglfw3-dev libglm-dev libimgui-dev libstb-dev libtinyobjloader-dev libtinygltf-dev libosmesa6-dev libgl-dev
-  libgtest-dev libbenchmark-dev libopenmesh-dev libeigen3-dev libembree-dev
+  libgtest-dev libbenchmark-dev libopenmesh-dev libeigen3-dev
 )
 # Only the test suite uses these: a virtual display for the editor window (xvfb-run needs xauth),
 # input injection, reference meshes, clang with its libFuzzer runtime for the loader's fuzz target,

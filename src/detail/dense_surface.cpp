@@ -1,8 +1,5 @@
-// The dense mesh M: Embree's float rays as a first guess, a double-precision BVH of ours for every
-// answer (dense_surface.h says why and how).
+// The dense mesh M: a double-precision BVH of ours for every answer (dense_surface.h says why and how).
 #include "detail/dense_surface.h"
-
-#include <embree3/rtcore.h>
 
 #include <algorithm>
 #include <cmath>
@@ -184,26 +181,18 @@ struct Engine {
     std::vector<std::uint32_t> original;   // slot -> triangle index
     double box_pad = 0.0;
     double scale = 0.0;                    // largest coordinate magnitude of M (at least its extent / 2)
-    glm::dvec3 centre{0.0};
     glm::dvec3 lo{0.0}, hi{0.0};           // M's bounding box
-    RTCDevice device = nullptr;
-    RTCScene scene = nullptr;
 
     Engine() = default;
     Engine(const Engine&) = delete;
     Engine& operator=(const Engine&) = delete;
-    ~Engine() {
-        if (scene) rtcReleaseScene(scene);
-        if (device) rtcReleaseDevice(device);
-    }
+    ~Engine() = default;
 
     void build_bvh();
     std::uint32_t build_node(std::vector<BuildNode>& built, std::vector<std::uint32_t>& order,
                              const std::vector<glm::dvec3>& centroids, std::uint32_t begin, std::uint32_t end) const;
     std::uint32_t compact(const std::vector<BuildNode>& built, std::uint32_t i);
-    void build_embree();
 
-    double embree_bound(const glm::dvec3& o, const glm::dvec3& d, double max_distance) const;
     void line_search(const glm::dvec3& o, const glm::dvec3& d, double bound, LineBest& best) const;
     bool line_box(const glm::dvec3& box_lo, const glm::dvec3& box_hi, const glm::dvec3& o, const glm::dvec3& inv,
                   const bool zero[3], double lim, double& key) const;
@@ -308,75 +297,6 @@ std::uint32_t Engine::build_node(std::vector<BuildNode>& built, std::vector<std:
     return index;
 }
 
-void Engine::build_embree() {
-    device = rtcNewDevice(nullptr);
-    if (!device) throw std::runtime_error("DenseSurface: Embree could not create a device");
-    scene = rtcNewScene(device);
-    rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
-    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                                 3 * sizeof(float), positions.size()));
-    auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                                                   3 * sizeof(unsigned), triangles.size()));
-    if (!vertices || !indices) {
-        rtcReleaseGeometry(geometry);
-        throw std::runtime_error("DenseSurface: Embree could not allocate the mesh buffers");
-    }
-    for (std::size_t v = 0; v < positions.size(); ++v)
-        for (int k = 0; k < 3; ++k) vertices[3 * v + static_cast<std::size_t>(k)] = static_cast<float>(positions[v][k]);
-    for (std::size_t f = 0; f < triangles.size(); ++f)
-        for (std::size_t k = 0; k < 3; ++k) indices[3 * f + k] = triangles[f][k];
-    rtcCommitGeometry(geometry);
-    rtcAttachGeometry(scene, geometry);
-    rtcReleaseGeometry(geometry);
-    rtcCommitScene(scene);
-    const RTCError error = rtcGetDeviceError(device);
-    if (error != RTC_ERROR_NONE)
-        throw std::runtime_error("DenseSurface: Embree failed to build the scene (error " +
-                                 std::to_string(static_cast<int>(error)) + ")");
-}
-
-// An upper bound on the nearest |t| that Embree's float rays suggest (max_distance when they find
-// nothing). Only a guess: the double search below decides.
-double Engine::embree_bound(const glm::dvec3& o, const glm::dvec3& d, double max_distance) const {
-    if (std::abs(o.x) > kCoordinateLimit || std::abs(o.y) > kCoordinateLimit || std::abs(o.z) > kCoordinateLimit)
-        return max_distance;
-    const float tfar = max_distance > 1e30 ? std::numeric_limits<float>::infinity()
-                                          : static_cast<float>(max_distance) * 1.0001f + 1e-30f;
-    // The float error of a hit's t is about 1e-7 of the coordinates involved; a bound too tight for a
-    // grazing ray costs a second, full search, never a wrong answer.
-    const double slack = 1e-6 * (scale + glm::length(o - centre));
-    float best = tfar;
-    bool found = false;
-    for (double sign : {1.0, -1.0}) {
-        RTCRayHit rh;
-        rh.ray.org_x = static_cast<float>(o.x);
-        rh.ray.org_y = static_cast<float>(o.y);
-        rh.ray.org_z = static_cast<float>(o.z);
-        rh.ray.dir_x = static_cast<float>(sign * d.x);
-        rh.ray.dir_y = static_cast<float>(sign * d.y);
-        rh.ray.dir_z = static_cast<float>(sign * d.z);
-        rh.ray.tnear = 0.0f;
-        rh.ray.tfar = best;
-        rh.ray.time = 0.0f;
-        rh.ray.mask = 0xffffffffu;
-        rh.ray.id = 0;
-        rh.ray.flags = 0;
-        rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-        rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
-        rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-        RTCIntersectContext context;
-        rtcInitIntersectContext(&context);
-        rtcIntersect1(scene, &context, &rh);
-        if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID) {
-            found = true;
-            best = std::min(best, rh.ray.tfar);
-        }
-    }
-    if (!found) return max_distance;
-    return std::min(max_distance, static_cast<double>(best) * (1.0 + 1e-6) + slack);
-}
-
 // The line's interval through the (padded) box, if it meets |t| <= lim; key is the smallest |t| in it.
 bool Engine::line_box(const glm::dvec3& box_lo, const glm::dvec3& box_hi, const glm::dvec3& o, const glm::dvec3& inv,
                       const bool zero[3], double lim, double& key) const {
@@ -442,10 +362,8 @@ void Engine::line_search(const glm::dvec3& o, const glm::dvec3& d, double bound,
 }
 
 std::optional<SurfaceHit> Engine::ray(const glm::dvec3& o, const glm::dvec3& d, double max_distance) const {
-    const double guess = embree_bound(o, d, max_distance);
     LineBest best;
-    line_search(o, d, guess, best);
-    if (!best.found && guess < max_distance) line_search(o, d, max_distance, best);
+    line_search(o, d, max_distance, best);
     if (!best.found) return std::nullopt;
     const Corners& c = corners[best.slot];
     SurfaceHit hit;
@@ -613,7 +531,6 @@ DenseSurface::DenseSurface(std::vector<glm::dvec3> positions, std::vector<rgb::T
             lo = glm::min(lo, m.positions[v]);
             hi = glm::max(hi, m.positions[v]);
         }
-    m.centre = (lo + hi) / 2.0;
     m.lo = lo;
     m.hi = hi;
     m.scale = std::max({std::abs(lo.x), std::abs(lo.y), std::abs(lo.z), std::abs(hi.x), std::abs(hi.y),
@@ -621,7 +538,6 @@ DenseSurface::DenseSurface(std::vector<glm::dvec3> positions, std::vector<rgb::T
     // Rounding in a triangle's intersection or closest point is far below this.
     m.box_pad = 1e-10 * m.scale + std::numeric_limits<double>::denorm_min();
     m.build_bvh();
-    m.build_embree();
 }
 
 DenseSurface::~DenseSurface() = default;

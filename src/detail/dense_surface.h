@@ -4,15 +4,12 @@
 // normal meets M (the nearest hit within a search distance, in both directions), or, where the line
 // finds no M, at the nearest point of M.
 //
-// Two structures answer the queries. Embree (a private dependency: no Embree header is included
-// here) traces float rays; it is only the fast first guess. Every answer is then computed in double
-// from M's own positions by a bounding volume hierarchy of ours, with conservative (padded) boxes and
-// exact double arithmetic on the triangles (Möller–Trumbore for lines, the exact point-triangle
-// distance for closest points): Embree's float hit bounds the part of the line the double query has
-// to search, and when that part holds no double hit (the float ray hit a triangle that the double
-// line misses by a rounding, near an edge) or Embree found nothing, the double query searches the
-// whole segment |t| <= max_distance. So a result never depends on Embree's float rounding, misses
-// near edges included, and equals what a brute-force loop over all triangles in double gives.
+// A bounding volume hierarchy of ours answers every query in double from M's own positions, with
+// conservative (padded) boxes and exact double arithmetic on the triangles (Möller–Trumbore for
+// lines, the exact point-triangle distance for closest points), so a result equals what a brute-force
+// loop over all triangles in double gives, near edges included. (Embree's float rays served as a first
+// guess at first; they gained little over this search, and Embree's thread-local storage crashed
+// LeakSanitizer's thread tracer in every process that linked it, so it went.)
 //
 // Ties are broken by a total order, so every result is deterministic (whatever the traversal order
 // or the number of threads): a line's hits by smaller |t|, then positive t first, then lower
@@ -52,7 +49,7 @@ class DenseSurface {
 public:
     // M's positions and triangles (indices into positions). Throws std::invalid_argument for no
     // triangles, an index out of range, or a position that is not finite or beyond 1e30 in any
-    // coordinate (Embree works in float). Degenerate (zero-area) triangles are allowed: lines never
+    // coordinate. Degenerate (zero-area) triangles are allowed: lines never
     // hit them, closest points may lie on them. Unused vertices and non-manifold meshes are fine.
     DenseSurface(std::vector<glm::dvec3> positions, std::vector<rgb::Triangle> triangles);
     ~DenseSurface();

@@ -486,7 +486,7 @@ TEST(DenseSurface, FlatGridEdgesAndCornersExactly) {
     EXPECT_EQ(zero->distance, 0.0);
 }
 
-// Two overlapping sheets 1e-9 apart, closer than Embree's floats can tell: the nearer in double wins,
+// Two overlapping sheets 1e-9 apart, closer than floats can tell: the nearer in double wins,
 // from either side, and where only one sheet lies under the line, that one.
 TEST(DenseSurface, NearlyCoincidentSheetsAreOrderedInDouble) {
     Soup m = flat_grid(4);
@@ -688,7 +688,7 @@ TEST(DenseSurface, ThroughputOnAMillionTriangles) {
 
     std::cout << "[ perf ] processor: " << processor_name() << ", " << std::thread::hardware_concurrency()
               << " hardware threads\n"
-              << "[ perf ] build (double BVH + Embree) of " << m.triangles.size() << " triangles: " << build << " s\n"
+              << "[ perf ] build (double BVH) of " << m.triangles.size() << " triangles: " << build << " s\n"
               << "[ perf ] nearest_ray_hits: " << n << " lines (" << found << " hit, search distance " << max_distance
               << "): " << rays << " s, " << static_cast<double>(n) / rays << " rays/s\n"
               << "[ perf ] closest_points: " << n << " points: " << closest_time << " s, "
