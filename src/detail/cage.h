@@ -9,7 +9,8 @@
 // meshoptimizer's meshopt_simplify was the other candidate: it collapses by an error bound on an
 // index buffer and does not promise manifoldness or topology, so it is not used.
 //
-// Plain data in and out: positions and rgb::Triangle index triples, counter-clockwise outside.
+// Plain data in and out: positions and rgb::Triangle index triples, counter-clockwise outside. The
+// topology it keeps, and the smallest cage of each, are mesh_topology.h's.
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -19,50 +20,10 @@
 
 #include <glm/vec3.hpp>
 
+#include "detail/mesh_topology.h"
 #include "rgb/mesh/base_mesh.h"
 
 namespace rgbdetail {
-
-// One connected component (faces joined through shared vertex indices).
-struct ComponentTopology {
-    std::size_t vertices = 0;        // vertices used by the component's faces
-    std::size_t edges = 0;
-    std::size_t faces = 0;
-    std::size_t boundary_loops = 0;
-    long euler = 0;                  // vertices - edges + faces
-    std::uint32_t first_vertex = 0;  // the component's smallest vertex index (ties in the order)
-    double area = 0.0;
-
-    // 2 - 2g - b = χ for an orientable surface.
-    long genus() const { return (2 - euler - static_cast<long>(boundary_loops)) / 2; }
-};
-
-// The components in a canonical order: by Euler characteristic, then boundary loops (ascending),
-// then faces (descending), then first vertex. Two meshes have the same topology when the sequences
-// of (euler, boundary_loops) agree; unused vertices belong to no component.
-struct MeshTopology {
-    std::vector<ComponentTopology> components;
-};
-
-// Why the triangles are not an oriented 2-manifold triangle mesh over vertex_count vertices (an index
-// out of range, a repeated corner, a directed edge used twice, an edge in three faces, two faces on
-// the same three vertices, a vertex whose faces form more than one fan), or nothing.
-std::optional<std::string> manifold_problem(std::size_t vertex_count, std::span<const rgb::Triangle> triangles);
-
-// Throws std::invalid_argument with manifold_problem's reason when the mesh is not an oriented
-// manifold.
-MeshTopology topology_of(std::span<const glm::dvec3> positions, std::span<const rgb::Triangle> triangles);
-
-// The fewest triangles a manifold triangle mesh (a simplicial surface: no two faces on the same
-// corners, no two edges between the same vertices) of genus g with b boundary loops can have; the
-// derivation is in cage.cpp. 4 for a sphere, 1 for a disc, 6 for an annulus, 14 for a torus, 8 for
-// a torus with one hole, 24 for genus 2.
-std::size_t smallest_component_triangles(long genus, std::size_t boundary_loops);
-// The sum over the components.
-std::size_t smallest_cage_triangles(const MeshTopology& topology);
-
-// A user-readable reason why a cage of topology c cannot stand for a mesh of topology m, or nothing.
-std::optional<std::string> topology_mismatch(const MeshTopology& m, const MeshTopology& c);
 
 struct CageOptions {
     // First pass: refuse collapses that turn a face's normal by more than this (degrees); a second
@@ -92,7 +53,7 @@ struct Cage {
 // returned as it is. Throws std::invalid_argument for an empty, one-triangle, all-degenerate
 // (zero-area) or non-finite or non-manifold mesh, and for a target below smallest_cage_triangles
 // (the message names that number: "the smallest is N triangles"). Where that bound is not
-// attainable (it is exact for closed surfaces, genus 0 and a torus with one hole; see cage.cpp) or
+// attainable (it is exact for closed surfaces, genus 0 and a torus with one hole; see mesh_topology.cpp) or
 // the search does not find it, a component stalls above its share: the others give up the excess
 // when they can, and otherwise the target is refused with the count the stalled components reached
 // ("the smallest that works here is N triangles"). Deterministic for given options.
