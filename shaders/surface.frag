@@ -9,6 +9,8 @@ const int kColourMaterial = 3;
 const int kColourVertex = 4;
 const int kColourChecker = 5;
 const int kColourTexture = 6;
+const int kColourDistance = 7;
+const int kDistanceBands = 11;  // render/colour_map.h
 // render/surface_appearance.h
 const uint kNoTexture = 0xffffffffu;
 const uint kUnreadableTexture = 0xfffffffeu;
@@ -28,6 +30,8 @@ uniform int u_colouring;
 uniform vec3 u_plain_colour;
 uniform vec3 u_rgb_colours[3];
 uniform vec3 u_level_colours[kMaxLevelColours];
+uniform vec3 u_distance_colours[kDistanceBands];
+uniform bool u_distance_measured;  // the codes carry distance bands (bits 24-31)
 uniform vec3 u_checker_colours[2];
 uniform float u_checker_cells;  // per unit of texture coordinate
 uniform sampler2DArray u_textures;  // the materials' diffuse textures, one layer each
@@ -53,6 +57,7 @@ vec3 checker() {
 vec3 base_colour(vec3 texel) {
     if (u_colouring == kColourRgb) return u_rgb_colours[min(v_code & 3u, 2u)];
     if (u_colouring == kColourLevel) return u_level_colours[min(int((v_code >> 8) & 255u), kMaxLevelColours - 1)];
+    if (u_colouring == kColourDistance && u_distance_measured) return u_distance_colours[min(int(v_code >> 24), kDistanceBands - 1)];
     if (u_colouring == kColourMaterial && v_material_colour.a > 0.0) return v_material_colour.rgb;
     if (u_colouring == kColourVertex && v_vertex_colour.a > 0.0) return v_vertex_colour.rgb;
     if (u_colouring == kColourChecker || (u_colouring == kColourTexture && v_texture == kUnreadableTexture)) return checker();

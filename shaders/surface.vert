@@ -3,7 +3,7 @@
 // the barycentric coordinate used by the wireframe, follows from gl_VertexID alone.
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
-layout(location = 2) in uint a_code;  // bits 0-1: RGB colour, bits 8-15: face level
+layout(location = 2) in uint a_code;  // bits 0-1: RGB colour, bits 8-15: face level, 24-31: distance band
 // The file's look (render/surface_appearance.h); alpha 0: the file gives no colour there.
 layout(location = 3) in vec4 a_material_colour;
 layout(location = 4) in vec4 a_vertex_colour;

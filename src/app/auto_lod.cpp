@@ -1,31 +1,28 @@
 #include "app/auto_lod.h"
 
 #include <algorithm>
-#include <cstdint>
 
-#include <glm/common.hpp>
-#include <glm/geometric.hpp>
-
+#include "rgb/lod/limit_error.h"
+#include "rgb/lod/lod_criteria.h"
 #include "rgb/lod/lod_driver.h"
 #include "rgb/mesh/mesh.h"
+#include "rgb/values/surface_error.h"
 
 namespace app {
 
 namespace {
 
-// Of the base mesh, so that the wanted length (and the result) does not depend on the current detail.
-double bounding_box_diagonal(const rgb::BaseMesh& base) {
-    glm::dvec3 lo(1e300), hi(-1e300);
-    for (std::uint32_t v = 0; v < base.num_vertices(); ++v) {
-        lo = glm::min(lo, base.position(v));
-        hi = glm::max(hi, base.position(v));
-    }
-    return glm::distance(lo, hi);
-}
-
+// The thresholds are shares of the base mesh's size, so that they (and the result) do not depend on the
+// current detail.
 rgb::LodSettings driver_settings(const rgb::Mesh& mesh, const AutoLodSettings& s) {
     rgb::LodSettings out;
-    out.threshold = s.max_edge_fraction * bounding_box_diagonal(mesh.base());
+    const double diagonal = rgb::bounding_box_diagonal(mesh.base());
+    if (mesh.base().detail()) {
+        out.value = rgb::on_mesh(rgb::detail_error_value(mesh.shared_base()));
+        out.threshold = s.max_distance_fraction * diagonal;
+    } else {
+        out.threshold = s.max_edge_fraction * diagonal;
+    }
     out.max_triangles = s.triangle_budget;
     return out;
 }

@@ -203,6 +203,12 @@ void Document::set_position_source(render::PositionSource source) {
     resync();
 }
 
+void Document::set_detail_distance(bool on) {
+    if (geometry_.detail_distance() == on) return;
+    geometry_.set_detail_distance(on);
+    resync();
+}
+
 Document::DisplayChanges Document::take_display_changes() {
     DisplayChanges taken = std::exchange(display_changes_, DisplayChanges{});
     // Several updates since the last take: one sorted, coalesced list.

@@ -103,6 +103,9 @@ public:
     bool display_behind() const;
     // Which positions the triangles show (and picking finds).
     void set_position_source(render::PositionSource source);
+    // Whether the triangles carry their distance to the dense mesh, for the distance heat map
+    // (render::SurfaceGeometry::set_detail_distance): on only while it is shown, as it costs.
+    void set_detail_distance(bool on);
     // The slots geometry() changed since the last call (sorted, coalesced), or that it was rebuilt
     // whole: what the renderer must upload.
     struct DisplayChanges {

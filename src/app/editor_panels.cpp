@@ -36,6 +36,7 @@ constexpr DisplayMode kDisplayModes[] = {
     {"vertex colours", render::Shading::Smooth, render::Colouring::VertexColour},
     {"texture checker", render::Shading::Smooth, render::Colouring::Checker},
     {"diffuse texture", render::Shading::Smooth, render::Colouring::Texture},
+    {"distance to dense mesh", render::Shading::Smooth, render::Colouring::DetailDistance},  // with detail only
 };
 
 
@@ -129,14 +130,25 @@ void actions_panel(Editor& editor, PanelState& state) {
     hover_tooltip("Every face to this level, coarse to fine over the next frames (Esc stops)");
     if (ImGui::Button("Sample level under cursor (S)")) editor.sample_level_under_cursor();
     AutoLodSettings& lod = editor.auto_lod_settings();
+    // On a cage with detail the budget goes where the surface departs most from the dense mesh.
+    const bool detail = editor.document().mesh().base().detail() != nullptr;
     int budget = static_cast<int>(lod.triangle_budget);
     ImGui::DragInt("triangle budget", &budget, 1000.0f, 100, 20000000);
-    hover_tooltip("Automatic LOD refines the longest edges until the mesh has this many triangles");
+    hover_tooltip(detail ? "Automatic LOD refines where the surface departs most from the dense mesh until the mesh has this many triangles"
+                         : "Automatic LOD refines the longest edges until the mesh has this many triangles");
     lod.triangle_budget = static_cast<std::size_t>(std::max(budget, 100));
-    float edge = static_cast<float>(lod.max_edge_fraction * 100.0);
-    ImGui::SliderFloat("max edge", &edge, 0.05f, 10.0f, "%.2f %% of size", ImGuiSliderFlags_Logarithmic);
-    hover_tooltip("Edges longer than this share of the mesh's size get refined");
-    lod.max_edge_fraction = edge / 100.0;
+    if (detail) {
+        float distance = static_cast<float>(lod.max_distance_fraction * 100.0);
+        ImGui::SliderFloat("max distance", &distance, 0.0001f, 1.0f, "%.4f %% of size", ImGuiSliderFlags_Logarithmic);
+        hover_tooltip("Where the surface departs from the dense mesh by more than this share of the mesh's size, it gets refined,\n"
+                      "the farthest first (the distance heat map in Display shows the same measure)");
+        lod.max_distance_fraction = distance / 100.0;
+    } else {
+        float edge = static_cast<float>(lod.max_edge_fraction * 100.0);
+        ImGui::SliderFloat("max edge", &edge, 0.05f, 10.0f, "%.2f %% of size", ImGuiSliderFlags_Logarithmic);
+        hover_tooltip("Edges longer than this share of the mesh's size get refined");
+        lod.max_edge_fraction = edge / 100.0;
+    }
     if (ImGui::Button("Automatic LOD")) editor.start_auto_lod();
     const UndoHistory& history = editor.document().history();
     const std::string undo = history.can_undo() ? "Undo " + history.undo_label() : std::string("Undo");
@@ -196,19 +208,24 @@ void files_panel(Editor& editor, PanelState& state) {
     }
 }
 
-void display_panel(render::RenderOptions& options) {
+// `detail`: the mesh is a cage with detail, which the distance heat map needs.
+void display_panel(render::RenderOptions& options, bool detail) {
     if (!ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    const auto offered = [detail](const DisplayMode& mode) { return detail || mode.colouring != render::Colouring::DetailDistance; };
+    // A mode not offered (the distance heat map after opening a mesh without detail) falls back to the first.
     const DisplayMode* current = &kDisplayModes[0];
     for (const DisplayMode& mode : kDisplayModes)
-        if (mode.shading == options.shading && mode.colouring == options.colouring) current = &mode;
+        if (offered(mode) && mode.shading == options.shading && mode.colouring == options.colouring) current = &mode;
     if (ImGui::BeginCombo("mode", current->name)) {
         for (const DisplayMode& mode : kDisplayModes)
-            if (ImGui::Selectable(mode.name, &mode == current)) current = &mode;
+            if (offered(mode) && ImGui::Selectable(mode.name, &mode == current)) current = &mode;
         ImGui::EndCombo();
     }
     hover_tooltip("The heat map gives every level one colour of its own. Material colours (Kd), vertex colours and the checker\n"
             "over the texture coordinates show the file's data, interpolated linearly over each base face (a preview:\n"
-            "a refined save keeps materials, but not yet texture coordinates or colours)");
+            "a refined save keeps materials, but not yet texture coordinates or colours). On a cage with detail, the\n"
+            "distance to the dense mesh colours each triangle by its largest departure from it, in fixed bands of the\n"
+            "mesh's size (the legend gives them in % and in units)");
     options.shading = current->shading;
     options.colouring = current->colouring;
     ImGui::Checkbox("wireframe", &options.wireframe);
@@ -315,7 +332,7 @@ void draw_panels(Editor& editor, PanelState& state, render::RenderOptions& optio
         actions_panel(editor, state);
         detail_panel(editor);
         files_panel(editor, state);
-        display_panel(options);
+        display_panel(options, editor.document().mesh().base().detail() != nullptr);
         statistics_panel(editor, state);
         shortcuts_panel();
         ImGui::PopItemWidth();

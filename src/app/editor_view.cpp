@@ -13,6 +13,7 @@ void EditorView::draw(Editor& editor, glm::ivec2 framebuffer, bool show_cursor) 
     // The document's displayed triangles as far as they have caught up (Editor::update), which
     // picking uses too: the renderer uploads what changed.
     document.set_position_source(options_.positions);
+    document.set_detail_distance(options_.colouring == render::Colouring::DetailDistance);
     const render::SurfaceGeometry& geometry = document.shown();
     const Document::DisplayChanges changes = document.take_display_changes();
     renderer_.show(document.mesh(), geometry, changes.ranges, changes.rebuilt);

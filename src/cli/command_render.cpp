@@ -23,14 +23,17 @@ namespace cli {
 namespace {
 
 constexpr std::string_view kUsage =
-    "usage: rgbsub render IN.obj -o OUT.png [--size WxH] [--mode shaded|flat|rgb|level] [--wire]\n"
+    "usage: rgbsub render IN.obj -o OUT.png [--size WxH] [--mode shaded|flat|rgb|level|distance] [--wire]\n"
     "                     [--view AZIMUTH,ELEVATION] [--limit] [--base] [--screen-lod PX [--lod-view AZ,EL]]\n"
     "                     [--max-triangles N] [--strict] [--sharp-angle DEG] [--boundary edge-only|edge-and-corner]\n"
     "Renders the mesh headless (OSMesa, no display needed), framed automatically.\n"
     "  -o, --output PATH   the PNG to write (saved like OBJ files: see docs/files.md)\n"
     "  --size WxH          image size in pixels (default 1024x768)\n"
     "  --mode MODE         shaded (smooth), flat, rgb (triangle types: green/red/blue),\n"
-    "                      level (heat map of face levels with a legend); default shaded\n"
+    "                      level (heat map of face levels with a legend), distance (on a cage\n"
+    "                      with detail, made by rgbsub remesh: each triangle's largest distance\n"
+    "                      to the dense mesh, in fixed bands from 0.001% to 1% of the mesh's size,\n"
+    "                      with a legend in % and in units; see docs/detail.md); default shaded\n"
     "  --wire              draw the triangle edges\n"
     "  --view AZ,EL        camera azimuth and elevation in degrees (default 30,20)\n"
     "  --limit             limit-surface positions where the mesh holds a vertex's ring,\n"
@@ -88,8 +91,10 @@ void apply_mode(const std::string& mode, render::RenderOptions& options) {
         options.colouring = render::Colouring::RgbType;
     } else if (mode == "level") {
         options.colouring = render::Colouring::Level;
+    } else if (mode == "distance") {
+        options.colouring = render::Colouring::DetailDistance;
     } else {
-        throw UsageError("--mode must be shaded, flat, rgb or level, got '" + mode + "'");
+        throw UsageError("--mode must be shaded, flat, rgb, level or distance, got '" + mode + "'");
     }
 }
 
@@ -136,6 +141,8 @@ int run_render(std::span<const std::string> args) {
     std::vector<std::string> warnings;
     rgb::Mesh mesh = with_sharp_options(arguments, rgbio::load_mesh(input, &warnings, read_options(arguments)));
     for (const std::string& warning : warnings) std::cerr << "rgbsub render: " << input << ": " << warning << '\n';
+    if (options.colouring == render::Colouring::DetailDistance && !mesh.base().detail())
+        throw std::invalid_argument(input + ": --mode distance needs a cage with detail (made by rgbsub remesh), and this mesh has none");
     render::Image image;
     try {
         image = render::render_headless(mesh, options, view, nullptr, [&](const render::OrbitCamera& camera) {

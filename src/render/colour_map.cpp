@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 
-
 namespace render {
 
 glm::vec3 rgb_type_colour(rgb::Colour colour) {
@@ -25,6 +24,20 @@ glm::vec3 level_colour(int level) {
         glm::vec3(0.60f, 0.25f, 0.78f), glm::vec3(0.42f, 0.30f, 0.62f), glm::vec3(0.55f, 0.55f, 0.55f),
         glm::vec3(0.92f, 0.92f, 0.92f)};
     return table[static_cast<std::size_t>(std::clamp(level, 0, static_cast<int>(table.size()) - 1))];
+}
+
+int distance_band(double fraction) {
+    return static_cast<int>(std::ranges::upper_bound(kDistanceBandEdges, fraction) - kDistanceBandEdges.begin());
+}
+
+glm::vec3 distance_colour(int band) {
+    // Dark blue to cyan, green, yellow, orange and red: neighbouring bands differ in hue, and far reads as hot.
+    static constexpr std::array<glm::vec3, kDistanceBands> table{
+        glm::vec3(0.16f, 0.20f, 0.55f), glm::vec3(0.15f, 0.38f, 0.85f), glm::vec3(0.10f, 0.60f, 0.92f),
+        glm::vec3(0.10f, 0.76f, 0.72f), glm::vec3(0.28f, 0.80f, 0.35f), glm::vec3(0.65f, 0.86f, 0.18f),
+        glm::vec3(0.98f, 0.84f, 0.15f), glm::vec3(0.98f, 0.58f, 0.10f), glm::vec3(0.92f, 0.33f, 0.12f),
+        glm::vec3(0.78f, 0.12f, 0.14f), glm::vec3(0.50f, 0.04f, 0.30f)};
+    return table[static_cast<std::size_t>(std::clamp(band, 0, kDistanceBands - 1))];
 }
 
 glm::vec3 checker_colour(int parity) { return parity % 2 == 0 ? glm::vec3(0.93f, 0.93f, 0.9f) : glm::vec3(0.2f, 0.3f, 0.55f); }

@@ -1,6 +1,7 @@
 #include "render/renderer.h"
 
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -19,7 +20,6 @@
 namespace render {
 namespace {
 
-constexpr glm::vec3 kPlainColour{0.78f, 0.78f, 0.76f};
 constexpr glm::vec3 kWireColour{0.12f, 0.12f, 0.12f};
 constexpr glm::vec3 kBackColour{0.62f, 0.36f, 0.32f};
 constexpr glm::vec3 kBaseMeshColour{0.1f, 0.1f, 0.1f};
@@ -27,6 +27,7 @@ constexpr glm::vec3 kSharpEdgeColour{0.85f, 0.05f, 0.55f};
 constexpr glm::vec3 kLegendTextColour{0.1f, 0.1f, 0.1f};
 constexpr float kBrushWidthPx = 2.0f;
 constexpr float kOverlayDepthBias = 1e-3f;
+static_assert(kDistanceBands == 11, "shaders/surface.frag's kDistanceBands");
 
 // A vertex array over one tightly packed buffer, for the small line and overlay geometry.
 class SimpleVertices {
@@ -189,6 +190,12 @@ void Renderer::set_positions(PositionSource source) {
     reupload_all();
 }
 
+void Renderer::set_detail_distance(bool on) {
+    if (state_->geometry.detail_distance() == on) return;
+    state_->geometry.set_detail_distance(on);
+    reupload_all();
+}
+
 void Renderer::set_appearance(std::shared_ptr<const SurfaceAppearance> appearance) {
     state_->geometry.set_appearance(std::move(appearance));
     reupload_all();
@@ -197,6 +204,7 @@ void Renderer::set_appearance(std::shared_ptr<const SurfaceAppearance> appearanc
 void Renderer::draw(const OrbitCamera& camera, const RenderOptions& options, glm::ivec2 viewport) {
     State& s = *state_;
     set_positions(options.positions);
+    set_detail_distance(options.colouring == Colouring::DetailDistance);
     sync();
 
     glViewport(0, 0, viewport.x, viewport.y);
@@ -229,6 +237,11 @@ void Renderer::draw(const OrbitCamera& camera, const RenderOptions& options, glm
     surface.set("u_plain_colour", kPlainColour);
     surface.set_array("u_rgb_colours", rgb_colours, 3);
     surface.set_array("u_level_colours", level_colours.data(), kMaxLevelColours);
+    std::vector<glm::vec3> distance_colours(kDistanceBands);
+    for (int band = 0; band < kDistanceBands; ++band) distance_colours[static_cast<std::size_t>(band)] = distance_colour(band);
+    surface.set_array("u_distance_colours", distance_colours.data(), kDistanceBands);
+    const std::optional<double> distance_scale = s.drawn().distance_scale();
+    surface.set("u_distance_measured", distance_scale.has_value());
     const glm::vec3 checker_colours[2] = {checker_colour(0), checker_colour(1)};
     surface.set_array("u_checker_colours", checker_colours, 2);
     surface.set("u_checker_cells", kCheckerCells);
@@ -258,9 +271,14 @@ void Renderer::draw(const OrbitCamera& camera, const RenderOptions& options, glm
     if (options.base_mesh_overlay) draw_lines(s.base_lines, kBaseMeshColour);
     if (options.sharp_edges) draw_lines(s.sharp_lines, kSharpEdgeColour);
 
-    if (options.colouring == Colouring::Level && options.level_legend) {
+    const glm::ivec2 legend_area{viewport.x, viewport.y - static_cast<int>(options.bottom_inset_px)};
+    std::vector<OverlayVertex> legend;
+    if (options.legend && options.colouring == Colouring::Level) legend = level_legend(max_level, legend_area, kLegendTextColour);
+    if (options.legend && options.colouring == Colouring::DetailDistance && distance_scale)
+        legend = distance_legend(*distance_scale, legend_area, kLegendTextColour);
+    if (!legend.empty()) {
         glDisable(GL_DEPTH_TEST);
-        s.overlay.upload(level_legend(max_level, {viewport.x, viewport.y - static_cast<int>(options.bottom_inset_px)}, kLegendTextColour));
+        s.overlay.upload(legend);
         s.overlay_program.use();
         s.overlay_program.set("u_viewport_size", glm::vec2(viewport));
         s.overlay.draw(GL_TRIANGLES);

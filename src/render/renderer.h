@@ -27,8 +27,10 @@ enum class Shading { Smooth, Flat };
 // material's diffuse texture over the texture coordinates) show the geometry's SurfaceAppearance;
 // faces the file gives no such data have the plain colour (Checker: the cell of (0, 0)). Texture shows
 // a material without a texture (or a face without texture coordinates) in its diffuse colour, and one
-// whose texture could not be read as the checker.
-enum class Colouring { Plain, RgbType, Level, Material, VertexColour, Checker, Texture };
+// whose texture could not be read as the checker. DetailDistance is the heat map of each face's distance
+// to the dense mesh of a cage with detail (colour_map.h's bands, with a legend); a mesh without detail
+// shows the plain colour.
+enum class Colouring { Plain, RgbType, Level, Material, VertexColour, Checker, Texture, DetailDistance };
 
 // A circle on the surface: where a sphere around `centre` cuts it.
 struct BrushCursor {
@@ -45,7 +47,7 @@ struct RenderOptions {
     PositionSource positions = PositionSource::Displayed;
     bool base_mesh_overlay = false;
     bool sharp_edges = true;  // edges along tagged base edges as coloured lines (when there are any)
-    bool level_legend = true;  // shown with Colouring::Level
+    bool legend = true;  // of the heat maps: shown with Colouring::Level and Colouring::DetailDistance
     float bottom_inset_px = 0.0f;  // a strip at the bottom that overlays (the legend) keep clear of
     std::optional<BrushCursor> brush;
     glm::vec3 background{1.0f};
@@ -77,6 +79,9 @@ public:
     // Rebuilds and uploads everything (what an observer-less renderer would do after each edit).
     void reupload_all();
     void set_positions(PositionSource source);
+    // Whether the attached mesh's geometry measures each face's distance to the dense mesh
+    // (SurfaceGeometry::set_detail_distance); draw() turns it on with Colouring::DetailDistance only.
+    void set_detail_distance(bool on);
     // What the attached mesh's faces look like (surface_appearance.h), for the appearance modes; until
     // the next attach or detach.
     void set_appearance(std::shared_ptr<const SurfaceAppearance> appearance);

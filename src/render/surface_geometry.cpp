@@ -4,10 +4,14 @@
 
 #include <glm/geometric.hpp>
 
+#include "render/colour_map.h"
 #include "render/mesh_changes.h"
 #include "rgb/mesh/mesh.h"
 #include "rgb/mesh/vertex_rules.h"
+#include "rgb/support/parallel.h"
+#include "rgb/values/hierarchy_evaluator.h"
 #include "rgb/values/loop_geometry.h"
+#include "rgb/values/surface_error.h"
 
 namespace render {
 namespace {
@@ -62,8 +66,23 @@ std::uint32_t face_code(const rgb::Mesh& mesh, rgb::FaceId f) {
            kCodeLiveBit;
 }
 
+// The code bits of live face f's distance band, its largest departure from the dense mesh over `diagonal`.
+std::uint32_t distance_bits(const rgb::Mesh& mesh, rgb::FaceId f, rgb::HierarchyEvaluator& evaluator, double diagonal) {
+    const double error = rgb::face_surface_error(mesh, evaluator, f).max_error;
+    return static_cast<std::uint32_t>(distance_band(error / diagonal)) << kCodeDistanceShift;
+}
+
 }  // namespace
 
+struct SurfaceGeometry::DistanceMeasure {
+    explicit DistanceMeasure(std::shared_ptr<const rgb::BaseMesh> over)
+        : base(std::move(over)), evaluator(*base), diagonal(rgb::bounding_box_diagonal(*base)) {}
+    std::shared_ptr<const rgb::BaseMesh> base;  // the evaluator's
+    rgb::HierarchyEvaluator evaluator;
+    double diagonal;
+};
+
+SurfaceGeometry::SurfaceGeometry(PositionSource source) : source_(source) {}
 SurfaceGeometry::SurfaceGeometry(SurfaceGeometry&&) noexcept = default;
 SurfaceGeometry& SurfaceGeometry::operator=(SurfaceGeometry&&) noexcept = default;
 SurfaceGeometry::~SurfaceGeometry() = default;
@@ -72,6 +91,11 @@ void SurfaceGeometry::set_appearance(std::shared_ptr<const SurfaceAppearance> ap
     channels_.reset();
     vertex_rgba_.clear();
     appearance_ = std::move(appearance);
+}
+
+std::optional<double> SurfaceGeometry::distance_scale() const {
+    if (!distance_) return std::nullopt;
+    return distance_->diagonal;
 }
 
 int SurfaceGeometry::max_face_level() const {
@@ -146,16 +170,17 @@ void SurfaceGeometry::count(std::uint32_t code, int delta) {
     level_counts_[(code >> kCodeLevelShift) & 0xffu] += static_cast<std::size_t>(delta);
 }
 
-void SurfaceGeometry::write_slot(const rgb::Mesh& mesh, rgb::FaceId f, bool with_look) {
+void SurfaceGeometry::write_slot(const rgb::Mesh& mesh, rgb::FaceId f, bool alone) {
     SurfaceVertex* slot = &vertices_[3 * static_cast<std::size_t>(f.idx)];
     count(slot[0].code, -1);
-    AppearanceVertex* look = channels_ && with_look ? &appearance_vertices_[3 * static_cast<std::size_t>(f.idx)] : nullptr;
+    AppearanceVertex* look = channels_ && alone ? &appearance_vertices_[3 * static_cast<std::size_t>(f.idx)] : nullptr;
     if (!mesh.is_live(f)) {
         std::fill(slot, slot + 3, SurfaceVertex{});
         if (look) std::fill(look, look + 3, AppearanceVertex{});
         return;
     }
-    const std::uint32_t code = face_code(mesh, f);
+    std::uint32_t code = face_code(mesh, f);
+    if (distance_ && alone) code |= distance_bits(mesh, f, distance_->evaluator, distance_->diagonal);
     const auto& corners = mesh.face_vertices(f);
     for (int i = 0; i < 3; ++i) slot[i] = {positions_[corners[i].idx], corner_normal(mesh, f, i), code};
     if (look) std::ranges::copy(channels_->corners(mesh, f, vertex_rgba_, source_ == PositionSource::Limit), look);
@@ -167,8 +192,9 @@ void SurfaceGeometry::rebuild(const rgb::Mesh& mesh) {
     appearance_vertices_.clear();
     colour_counts_ = {};
     level_counts_ = {};
-    // The base mesh may be another one (a retag): the channels start afresh over it.
+    // The base mesh may be another one (a retag): the channels and the distance measure start afresh over it.
     channels_ = appearance_ ? std::make_unique<AppearanceChannels>(mesh.shared_base(), *appearance_) : nullptr;
+    distance_ = detail_distance_ && mesh.base().detail() ? std::make_unique<DistanceMeasure>(mesh.shared_base()) : nullptr;
     // All colours at once, in parallel (the values update() gives single vertices).
     vertex_rgba_ = channels_ ? channels_->vertex_colours(mesh, source_ == PositionSource::Limit) : std::vector<std::uint32_t>();
     resize(mesh);
@@ -176,6 +202,19 @@ void SurfaceGeometry::rebuild(const rgb::Mesh& mesh) {
     for (rgb::VertexId v : mesh.vertices()) update_normal(mesh, v);
     for (std::uint32_t f = 0; f < mesh.face_capacity(); ++f) write_slot(mesh, rgb::FaceId(f), false);
     if (channels_) channels_->all_corners(mesh, vertex_rgba_, source_ == PositionSource::Limit, appearance_vertices_);
+    if (distance_) measure_all_distances(mesh);
+}
+
+void SurfaceGeometry::measure_all_distances(const rgb::Mesh& mesh) {
+    rgb::parallel_for(mesh.face_capacity(), std::size_t(1) << 12, [&](std::size_t begin, std::size_t end) {
+        rgb::HierarchyEvaluator evaluator(mesh.base());  // it caches, so one per block
+        for (std::size_t i = begin; i < end; ++i) {
+            const rgb::FaceId f(static_cast<std::uint32_t>(i));
+            if (!mesh.is_live(f)) continue;
+            const std::uint32_t bits = distance_bits(mesh, f, evaluator, distance_->diagonal);
+            for (std::size_t c = 0; c < 3; ++c) vertices_[3 * i + c].code |= bits;
+        }
+    });
 }
 
 // Marks over slots for one update, so that each vertex and face is handled once (the change lists

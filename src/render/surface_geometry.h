@@ -7,10 +7,13 @@
 // its one-ring. With a SurfaceAppearance, a second array beside it holds each corner's colours,
 // texture coordinate and texture, slot for slot; its colours and texture coordinates are the exact
 // channels at the positions' level (surface_appearance.h), updated with the positions: a vertex
-// whose position may have changed gets its colour again, a face rewritten its corners' UVs.
+// whose position may have changed gets its colour again, a face rewritten its corners' UVs. On a cage
+// with detail the code can carry the face's distance to the dense mesh too (set_detail_distance),
+// measured again whenever its slot is written.
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <utility>
 #include <vector>
@@ -48,6 +51,7 @@ static_assert(sizeof(SurfaceVertex) == 28, "the vertex layout in surface_buffer.
 inline constexpr std::uint32_t kCodeColourMask = 0x3u;
 inline constexpr int kCodeLevelShift = 8;
 inline constexpr std::uint32_t kCodeLiveBit = 1u << 16;
+inline constexpr int kCodeDistanceShift = 24;  // the distance band (colour_map.h), with set_detail_distance
 
 // Consecutive face slots [first, first + count).
 struct SlotRange {
@@ -58,7 +62,7 @@ struct SlotRange {
 
 class SurfaceGeometry {
 public:
-    explicit SurfaceGeometry(PositionSource source = PositionSource::Displayed) : source_(source) {}
+    explicit SurfaceGeometry(PositionSource source = PositionSource::Displayed);
 
     PositionSource source() const { return source_; }
     void set_source(PositionSource source) { source_ = source; }
@@ -69,6 +73,16 @@ public:
     // What the faces look like (null: nothing but geometry); takes effect at the next rebuild.
     const std::shared_ptr<const SurfaceAppearance>& appearance() const { return appearance_; }
     void set_appearance(std::shared_ptr<const SurfaceAppearance> appearance);
+
+    // Whether each face's code carries the band of its distance to the dense mesh (distance_band of
+    // rgb::face_surface_error over distance_scale()), for Colouring::DetailDistance: on a mesh with
+    // detail (elsewhere the bands stay 0). About 15 detail lookups per face written, so only while it
+    // is shown. Takes effect at the next rebuild.
+    bool detail_distance() const { return detail_distance_; }
+    void set_detail_distance(bool on) { detail_distance_ = on; }
+    // The length the bands are shares of (rgb::bounding_box_diagonal of the base mesh), while they are
+    // measured; else nullopt.
+    std::optional<double> distance_scale() const;
 
     // Recomputes every slot from the mesh.
     void rebuild(const rgb::Mesh& mesh);
@@ -116,8 +130,11 @@ private:
     // Corner i of f's normal: its vertex's, except at an infinitely sharp crease (rgb/rules/sharp_features.h),
     // where only the faces on f's side of the creases count, so that the shading breaks along it.
     glm::vec3 corner_normal(const rgb::Mesh& mesh, rgb::FaceId f, int i) const;
-    // `with_look`: the appearance's corners too (a rebuild writes them all at once, in parallel).
-    void write_slot(const rgb::Mesh& mesh, rgb::FaceId f, bool with_look = true);
+    // `alone`: the appearance's corners and the distance band too (a rebuild computes those for every
+    // slot at once, in parallel).
+    void write_slot(const rgb::Mesh& mesh, rgb::FaceId f, bool alone = true);
+    // Every live slot's distance band, in parallel.
+    void measure_all_distances(const rgb::Mesh& mesh);
     void count(std::uint32_t code, int delta);
 
     struct Marks {
@@ -129,6 +146,9 @@ private:
     };
 
     PositionSource source_;
+    bool detail_distance_ = false;
+    struct DistanceMeasure;
+    std::unique_ptr<DistanceMeasure> distance_;  // over the base mesh of the last rebuild, while measured
     std::shared_ptr<const SurfaceAppearance> appearance_;
     std::unique_ptr<AppearanceChannels> channels_;  // over the base mesh of the last rebuild
     std::vector<std::uint32_t> vertex_rgba_;         // by vertex slot, with vertex colours

@@ -3,6 +3,7 @@
 // free, the dark panel at the top right and status bar at the bottom, the brush ring around the
 // resting mouse, white elsewhere.
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <fstream>
@@ -10,13 +11,18 @@
 
 #include <gtest/gtest.h>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include "app/editor.h"
 #include "app/headless_frame.h"
 #include "gl_test_support.h"
+#include "io/mesh_file.h"
+#include "render/colour_map.h"
 #include "render/image.h"
+#include "rgb/lod/requests.h"
 #include "small_meshes.h"
+#include "test_meshes.h"
 #include "test_paths.h"
 #include "textured_quad.h"
 
@@ -195,6 +201,37 @@ TEST(HeadlessFrame, ADenseMeshShowsTheCageQuestionThenTheCageWithItsDetail) {
     const render::Image cage = render_editor_frame(editor, frame);
     write(cage, "dense_cage.png");
     EXPECT_LT(dark_share(cage, 400, 380, 500, 420), 0.5) << "no dialog is left";
+}
+
+// The distance heat map: on a cage with detail the mesh in the bands' colours and the legend with every
+// band's swatch (written to the test's temporary folder as distance_frame.png for a person to look
+// at); on a mesh without detail the mode is not offered, and the frame shows the plain shading.
+TEST(HeadlessFrame, DistanceHeatMapOnACageWithDetailOnly) {
+    const std::filesystem::path folder = test::fresh_folder("distance_frames");
+    rgb::Mesh cage = render_test::bumpy_cage(1, 4);
+    rgb::set_level(cage, 3, rgb::Sphere{{0.0, 0.0, 1.0}, 0.7});
+    rgbio::save_mesh(cage, (folder / "cage.obj").string());
+    HeadlessFrame frame;
+    frame.size = {1280, 800};
+    frame.colouring = render::Colouring::DetailDistance;
+    // Pixels in each band's colour unlit, as its swatch shows it (up to the rounding to bytes).
+    const auto swatch_pixels = [](const render::Image& image) {
+        std::array<std::size_t, render::kDistanceBands> counts{};
+        for (int band = 0; band < render::kDistanceBands; ++band) {
+            const glm::ivec3 swatch(glm::round(255.0f * render::distance_colour(band)));
+            for (int y = 0; y < image.height; ++y)
+                for (int x = 0; x < image.width; ++x) {
+                    const glm::ivec3 d = glm::abs(glm::ivec3(glm::u8vec3(image.pixel(x, y))) - swatch);
+                    counts[static_cast<std::size_t>(band)] += std::max({d.r, d.g, d.b}) <= 1;
+                }
+        }
+        return counts;
+    };
+    const render::Image heat = render_editor_frame((folder / "cage.obj").string(), frame);
+    std::ofstream(folder / "distance_frame.png", std::ios::binary) << render::encode_png(heat);
+    for (std::size_t count : swatch_pixels(heat)) EXPECT_GE(count, 16u * 16u);
+    for (std::size_t count : swatch_pixels(render_editor_frame(std::string(RGBSUB_SOURCE_DIR) + "/assets/default.obj", frame)))
+        EXPECT_EQ(count, 0u);
 }
 
 }  // namespace

@@ -2,14 +2,17 @@
 // checks are properties a wrong picture breaks: image size, where the mesh covers the image seen
 // face-on and edge-on, how many colours flat and smooth shading give, which colours each mode shows.
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include <glm/common.hpp>
 #include <glm/vec4.hpp>
 
+#include "cli/commands.h"
 #include "command_test_support.h"
 #include "gl_test_support.h"
 #include "obj_test_support.h"
+#include "render/colour_map.h"
 #include "render/image.h"
 
 namespace cli {
@@ -112,6 +115,41 @@ TEST_F(RenderCommand, ModesShowTheirColours) {
     const render_test::PixelCounts level = counts("level");
     EXPECT_GT(level.blue, 100u);
     EXPECT_GT(level.green + level.red, 100u);
+}
+
+// --mode distance on a cage made by remesh: the cage's flat triangles far from the dense mesh (the
+// farthest bands: red), the same refined to the detail's level on it (the nearest band: blue), the
+// legend's swatches in the bands' colours beside them; a mesh without detail is refused, saying why.
+TEST_F(RenderCommand, DistanceModeShowsACagesDistanceToItsDenseMesh) {
+    const std::string octahedron = write("octahedron.obj", rgbio::test::kOctahedron);
+    ASSERT_EQ(test::run_command({"refine", octahedron, "-o", path("dense.obj"), "--level", "3", "--plain"}).exit_code, 0);
+    ASSERT_EQ(test::run_command({"remesh", path("dense.obj"), "-o", path("cage.obj"), "--cage-triangles", "8"}).exit_code, 0);
+    ASSERT_EQ(test::run_command({"refine", path("cage.obj"), "-o", path("on_dense.obj"), "--level", "3"}).exit_code, 0);
+    const std::vector<std::string> options{"--size", "640x480", "--mode", "distance"};
+    // The colours of the mesh's upper half, above the legend in the bottom-left corner.
+    const auto upper_half = [](const render::Image& image) {
+        const auto half = static_cast<std::ptrdiff_t>(image.rgba.size() / 2);
+        return render_test::count_pixels(render::Image{image.width, image.height / 2, {image.rgba.begin(), image.rgba.begin() + half}});
+    };
+
+    const render::Image cage = render(path("cage.obj"), options);
+    const std::vector<render_test::Swatch> legend = render_test::legend_column(cage, 20, 12);
+    ASSERT_EQ(legend.size(), static_cast<std::size_t>(render::kDistanceBands));
+    for (int band = 0; band < render::kDistanceBands; ++band) {
+        const glm::vec3 colour = render::distance_colour(band);
+        const glm::u8vec4 swatch = legend[static_cast<std::size_t>(render::kDistanceBands - 1 - band)].colour;
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(swatch[c], std::round(255.0f * colour[c]), 1.0) << "band " << band;
+    }
+    const render_test::PixelCounts far = upper_half(cage);
+    EXPECT_GT(far.red, 5000u);
+    EXPECT_EQ(far.blue, 0u);
+    const render_test::PixelCounts near = upper_half(render(path("on_dense.obj"), options));
+    EXPECT_EQ(near.red, 0u);
+    EXPECT_GT(near.blue, 5000u);
+
+    const test::CommandRun refused = test::run_command({"render", octahedron, "-o", path("plain.png"), "--mode", "distance"});
+    EXPECT_EQ(refused.exit_code, exit_bad_input);
+    EXPECT_NE(refused.err.find("--mode distance needs a cage with detail"), std::string::npos) << refused.err;
 }
 
 }  // namespace

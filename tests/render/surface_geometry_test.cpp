@@ -8,11 +8,13 @@
 #include <span>
 #include <vector>
 
+#include "render/colour_map.h"
 #include "render/mesh_changes.h"
 #include "render/surface_geometry.h"
 #include "rgb/lod/refine.h"
 #include "rgb/lod/requests.h"
 #include "rgb/mesh/mesh.h"
+#include "rgb/values/surface_error.h"
 #include "test_meshes.h"
 
 namespace {
@@ -24,6 +26,7 @@ using render::SurfaceGeometry;
 
 void expect_equals_rebuild(const rgb::Mesh& mesh, const SurfaceGeometry& incremental) {
     SurfaceGeometry fresh(incremental.source());
+    fresh.set_detail_distance(incremental.detail_distance());
     fresh.rebuild(mesh);
     ASSERT_EQ(incremental.vertices().size(), fresh.vertices().size());
     for (std::size_t i = 0; i < fresh.vertices().size(); ++i)
@@ -137,6 +140,52 @@ TEST(SurfaceGeometry, OneSplitRewritesOnlyItsNeighbourhood) {
     EXPECT_GT(rewritten, 0u);
     EXPECT_LT(rewritten, 100u);
     expect_equals_rebuild(mesh, geometry);
+}
+
+// On a cage with detail each face's code carries the band of its distance to the dense surface, found
+// independently here (brute force over the detail's points), as a share of the base mesh's
+// bounding-box diagonal; it follows refining and coarsening (new faces and reused slots) as a rebuild
+// gives it, and the bands stay 0 where the distance is not measured.
+TEST(SurfaceGeometry, DetailDistanceBandsAreEachFacesDistanceToTheDenseSurface) {
+    rgb::Mesh mesh = render_test::bumpy_cage(0, 4);
+    const double diagonal = rgb::bounding_box_diagonal(mesh.base());
+    MeshChanges changes(mesh);
+    SurfaceGeometry geometry;
+    geometry.set_detail_distance(true);
+    geometry.rebuild(mesh);
+    ASSERT_EQ(geometry.distance_scale(), diagonal);
+    std::array<int, render::kDistanceBands> faces_per_band{};
+    const auto expect_bands = [&] {
+        for (rgb::FaceId f : mesh.faces()) {
+            const int band = render::distance_band(render_test::brute_force_detail_distance(mesh, f) / diagonal);
+            ++faces_per_band[static_cast<std::size_t>(band)];
+            for (int c = 0; c < 3; ++c)
+                ASSERT_EQ(geometry.vertices()[3 * f.idx + c].code >> render::kCodeDistanceShift, static_cast<std::uint32_t>(band))
+                    << "face slot " << f.idx;
+        }
+    };
+    expect_bands();
+    for (int target : {2, 4, 3, 1}) {
+        SCOPED_TRACE(testing::Message() << "after set_level " << target);
+        rgb::set_level(mesh, target, rgb::Sphere{{0.3, 0.2, 0.9}, 0.8});
+        geometry.update(mesh, changes);
+        changes.clear();
+        expect_bands();
+        expect_equals_rebuild(mesh, geometry);
+    }
+    std::size_t bands_seen = 0;
+    for (int count : faces_per_band) bands_seen += count > 0;
+    EXPECT_GE(bands_seen, 5u) << "the test sees several bands, the finest faces' (on the detail) among them";
+    EXPECT_GT(faces_per_band[0], 0);
+
+    SurfaceGeometry unmeasured;
+    unmeasured.rebuild(mesh);
+    EXPECT_FALSE(unmeasured.distance_scale());
+    for (const render::SurfaceVertex& v : unmeasured.vertices()) EXPECT_EQ(v.code >> render::kCodeDistanceShift, 0u);
+    SurfaceGeometry without_detail;
+    without_detail.set_detail_distance(true);
+    without_detail.rebuild(render_test::icosphere(1));
+    EXPECT_FALSE(without_detail.distance_scale()) << "nothing to measure against";
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <array>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include "rgb/mesh/detail_positions.h"
@@ -30,44 +31,64 @@ glm::dvec3 target_position(const BaseMesh& base, HierarchyEvaluator& evaluator, 
     return evaluator.limit_position(p);
 }
 
-SurfaceError displayed_surface_error(const Mesh& mesh) {
+SurfaceError face_surface_error(const Mesh& mesh, HierarchyEvaluator& evaluator, FaceId f) {
     const BaseMesh& base = mesh.base();
-    HierarchyEvaluator evaluator(base);
     SurfaceError out;
-    for (FaceId f : mesh.faces()) {
-        const int level = mesh.level(f);
-        const std::uint32_t g = base_face_of(mesh, f);
-        std::array<Numerators, 3> corners;
-        std::array<glm::dvec3, 3> shown;
-        for (int c = 0; c < 3; ++c) {
-            const VertexId v = mesh.face_vertices(f)[static_cast<std::size_t>(c)];
-            corners[static_cast<std::size_t>(c)] = numerators_at(*in_face(base, mesh.address(v), g), level + 2);
-            shown[static_cast<std::size_t>(c)] = displayed_position(mesh, v);
-        }
-        // The samples of the face are those of the triangle of Σl it is a piece of that lie in it.
-        HierarchyTriangle parent;
-        parent.face = g;
-        parent.level = level;
-        const std::array<SurfacePoint, 3> t = parent_triangle(mesh, f, g);
-        for (std::size_t c = 0; c < 3; ++c) parent.corners[c] = numerators_at(t[c], level);
-        const std::int64_t area = cross(corners[0], corners[1], corners[2]);
-        for (const SampleWeights& w : sample_weights()) {
-            const SurfacePoint s = parent.sample(w);
-            const Numerators q = numerators_at(s, level + 2);
-            const std::int64_t w0 = cross(q, corners[1], corners[2]), w1 = cross(corners[0], q, corners[2]),
-                               w2 = cross(corners[0], corners[1], q);
-            if (w0 < 0 || w1 < 0 || w2 < 0) continue;
-            const std::array<double, 3> weights{double(w0) / double(area), double(w1) / double(area), double(w2) / double(area)};
-            const glm::dvec3 limit = target_position(base, evaluator, s);
-            const double error = glm::distance(interpolate(shown, weights), limit);
-            ++out.samples;
-            if (error > out.max_error) {
-                out.max_error = error;
-                out.where = limit;
-            }
+    const int level = mesh.level(f);
+    const std::uint32_t g = base_face_of(mesh, f);
+    std::array<Numerators, 3> corners;
+    std::array<glm::dvec3, 3> shown;
+    for (int c = 0; c < 3; ++c) {
+        const VertexId v = mesh.face_vertices(f)[static_cast<std::size_t>(c)];
+        corners[static_cast<std::size_t>(c)] = numerators_at(*in_face(base, mesh.address(v), g), level + 2);
+        shown[static_cast<std::size_t>(c)] = displayed_position(mesh, v);
+    }
+    // The samples of the face are those of the triangle of Σl it is a piece of that lie in it.
+    HierarchyTriangle parent;
+    parent.face = g;
+    parent.level = level;
+    const std::array<SurfacePoint, 3> t = parent_triangle(mesh, f, g);
+    for (std::size_t c = 0; c < 3; ++c) parent.corners[c] = numerators_at(t[c], level);
+    const std::int64_t area = cross(corners[0], corners[1], corners[2]);
+    for (const SampleWeights& w : sample_weights()) {
+        const SurfacePoint s = parent.sample(w);
+        const Numerators q = numerators_at(s, level + 2);
+        const std::int64_t w0 = cross(q, corners[1], corners[2]), w1 = cross(corners[0], q, corners[2]),
+                           w2 = cross(corners[0], corners[1], q);
+        if (w0 < 0 || w1 < 0 || w2 < 0) continue;
+        const std::array<double, 3> weights{double(w0) / double(area), double(w1) / double(area), double(w2) / double(area)};
+        const glm::dvec3 limit = target_position(base, evaluator, s);
+        const double error = glm::distance(interpolate(shown, weights), limit);
+        ++out.samples;
+        if (error > out.max_error) {
+            out.max_error = error;
+            out.where = limit;
         }
     }
     return out;
+}
+
+SurfaceError displayed_surface_error(const Mesh& mesh) {
+    HierarchyEvaluator evaluator(mesh.base());
+    SurfaceError out;
+    for (FaceId f : mesh.faces()) {
+        const SurfaceError face = face_surface_error(mesh, evaluator, f);
+        out.samples += face.samples;
+        if (face.max_error > out.max_error) {
+            out.max_error = face.max_error;
+            out.where = face.where;
+        }
+    }
+    return out;
+}
+
+double bounding_box_diagonal(const BaseMesh& base) {
+    glm::dvec3 lo(1e300), hi(-1e300);
+    for (std::uint32_t v = 0; v < base.num_vertices(); ++v) {
+        lo = glm::min(lo, base.position(v));
+        hi = glm::max(hi, base.position(v));
+    }
+    return glm::distance(lo, hi);
 }
 
 }  // namespace rgb

@@ -9,6 +9,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "rgb/mesh/handles.h"
 #include "rgb/mesh/surface_point.h"
 
 namespace rgb {
@@ -28,6 +29,16 @@ struct SurfaceError {
     std::size_t samples = 0;
 };
 
+// One live face's part of the measure: the largest error at its samples (the display's distance heat
+// map colours each face by it). `evaluator` is over the mesh's base and may be shared between calls.
+SurfaceError face_surface_error(const Mesh& mesh, HierarchyEvaluator& evaluator, FaceId f);
+
+// The largest error over every face (face_surface_error's), the first face in slot order where tied.
 SurfaceError displayed_surface_error(const Mesh& mesh);
+
+// The length that percentages of the mesh's size are of (tolerances and automatic LOD in the editor,
+// the distance heat map's scale): the diagonal of the base mesh's bounding box, so that it does not
+// change as the detail does.
+double bounding_box_diagonal(const BaseMesh& base);
 
 }  // namespace rgb
