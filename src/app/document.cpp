@@ -34,10 +34,7 @@ void Document::adopt(LoadedDocument loaded, std::string path, bool dirty) {
     uv_channel_ = std::move(loaded.uvs);
     uv_layout_.reset();
     display_changes_ = DisplayChanges{{}, true};
-    path_ = std::move(path);
-    history_.clear();
-    dirty_ = dirty;
-    ++changes_count_;
+    start_history(std::move(path), dirty);
 }
 
 void Document::adopt(rgb::Mesh mesh, std::string path) {
@@ -46,16 +43,29 @@ void Document::adopt(rgb::Mesh mesh, std::string path) {
     replace_mesh(std::move(mesh));
     uv_channel_.reset();
     uv_layout_.reset();
-    path_ = std::move(path);
+    start_history(std::move(path), false);
+}
+
+void Document::start_history(std::string path, bool unsaved) {
     history_.clear();
-    dirty_ = false;
+    saved_position_ = history_.position();
+    unsaved_setting_ = unsaved;
+    start_file_ = unsaved ? std::string() : path;
+    start_file_saved_over_ = false;
+    path_ = std::move(path);
     ++changes_count_;
 }
 
 void Document::save(const std::string& path, const rgbio::SaveOptions& options) {
     rgbio::save_mesh_file(mesh_, path, with_attributes(options));
+    if (!rgbio::is_gltf_path(path)) mark_saved(path);
+}
+
+void Document::mark_saved(const std::string& path) {
     path_ = path;
-    dirty_ = false;
+    saved_position_ = history_.position();
+    unsaved_setting_ = false;
+    start_file_saved_over_ = start_file_saved_over_ || path == start_file_;
 }
 
 std::shared_ptr<const rgb::UvLayout> Document::uv_layout() {
@@ -76,7 +86,7 @@ void Document::set_uv_interpolation(rgb::UvInterpolation interpolation) {
     if (!uv_channel_ || uv_channel_->interpolation == interpolation) return;
     uv_channel_->interpolation = interpolation;
     uv_layout_.reset();
-    dirty_ = true;
+    unsaved_setting_ = true;
     ++changes_count_;
     // The display shows the UVs the option gives.
     if (const auto& shown = geometry_.appearance(); shown && shown->uvs) {
@@ -93,9 +103,11 @@ rgbio::SaveOptions Document::with_attributes(rgbio::SaveOptions options) {
     return options;
 }
 
-void Document::saved_as(const std::string& path, std::uint64_t changes) {
-    path_ = path;
-    dirty_ = dirty_ && changes != changes_count_;
+void Document::saved_as(const std::string& path, const SaveMark& mark) {
+    const bool setting_changed_since = unsaved_setting_ && mark.changes != changes_count_;
+    mark_saved(path);
+    saved_position_ = mark.position;
+    unsaved_setting_ = setting_changed_since;
 }
 
 void Document::begin_edit(std::string label) {
@@ -115,9 +127,8 @@ void Document::keep_room(std::size_t faces) {
 
 void Document::keep_room_for_edit() { keep_room(mesh_.num_faces() + mesh_.num_faces() / 4); }
 
-void Document::end_edit(bool changed, std::optional<std::string> script) {
-    history_.end_edit(changed, std::move(script));
-    dirty_ = dirty_ || changed;
+void Document::end_edit(bool changed, std::optional<std::string> script, std::optional<std::string> label) {
+    history_.end_edit(changed, std::move(script), std::move(label));
     changes_count_ += changed;
 }
 
@@ -131,7 +142,6 @@ bool Document::begin_crossing(bool (UndoHistory::*begin)()) {
     keep_room_for_edit();
     const std::uint64_t base = mesh_.base().serial();
     if (!(history_.*begin)()) return false;
-    dirty_ = true;
     ++changes_count_;
     // A retag moved every vertex without telling the observers.
     if (mesh_.base().serial() != base) resync();
@@ -140,7 +150,6 @@ bool Document::begin_crossing(bool (UndoHistory::*begin)()) {
 
 void Document::set_sharp_features(const rgb::SharpFeatures& features, std::string label) {
     history_.retag(std::move(label), features);
-    dirty_ = true;
     ++changes_count_;
     resync();
 }
@@ -167,6 +176,10 @@ constexpr std::size_t kDisplayPartFaces = std::size_t(1) << 13;
 
 bool Document::display_behind() const {
     return changes_->everything() || changes_->changed_faces().size() - faces_caught_up_ > kDisplayPartFaces;
+}
+
+bool Document::display_up_to_date() const {
+    return changes_->empty() && !display_changes_.rebuilt && display_changes_.ranges.empty();
 }
 
 bool Document::catch_up_part() {

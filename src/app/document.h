@@ -34,28 +34,43 @@ public:
     void adopt(LoadedDocument loaded, std::string path, bool dirty = false);
     // Adopts `mesh` as an unsaved document named `path` (may be empty).
     void adopt(rgb::Mesh mesh, std::string path);
-    // Throws rgbio::SaveError. Clears the unsaved mark and makes `path` the document's file. Writes
-    // glTF for a .glb or .gltf path, else OBJ; with_attributes(options) either way.
+    // Throws rgbio::SaveError. Writes an OBJ, with_attributes(options), clears the unsaved mark and
+    // makes `path` the document's file; a .glb or .gltf path is an export (rgbio::is_gltf_path): it
+    // writes glTF and leaves the document as it was (its file, its unsaved mark).
     void save(const std::string& path, const rgbio::SaveOptions& options);
     // `options` with what rides on the base mesh (materials, groups, colours from the file read, the
     // exact texture coordinates' layout), for saves made elsewhere (in the background).
     rgbio::SaveOptions with_attributes(rgbio::SaveOptions options);
     // The file's look (materials, vertex colours, texture coordinates) the geometry shows; null if none.
     const std::shared_ptr<const render::SurfaceAppearance>& appearance() const { return geometry_.appearance(); }
-    // A copy saved elsewhere (in the background) reached `path`: the file is the document's, and
-    // clean if nothing changed since the copy was made at change count `changes`.
-    void saved_as(const std::string& path, std::uint64_t changes);
+    // The state of the document a copy saved elsewhere (in the background) holds, taken when the copy
+    // is made.
+    struct SaveMark {
+        std::uint64_t changes = 0;   // changes()
+        std::uint64_t position = 0;  // UndoHistory::position()
+    };
+    SaveMark save_mark() const { return {changes_count_, history_.position()}; }
+    // That copy reached `path`, an OBJ: the file is the document's, and it holds the mesh whenever
+    // the history is back at the copy's position.
+    void saved_as(const std::string& path, const SaveMark& mark);
 
     rgb::Mesh& mesh() { return mesh_; }
     const rgb::Mesh& mesh() const { return mesh_; }
     const std::string& path() const { return path_; }
-    bool dirty() const { return dirty_; }
+    // Unsaved: the mesh is not at the history's position its file holds (an undo back to it makes
+    // the document saved again), or a setting of the file changed since.
+    bool dirty() const { return unsaved_setting_ || history_.crossing() || history_.position() != saved_position_; }
+    // The file the history's edits start from, as it was opened ("" for a mesh made or recovered
+    // here), and whether it has been saved over since, so that it holds some of those edits.
+    const std::string& edits_start_from() const { return start_file_; }
+    bool start_file_saved_over() const { return start_file_saved_over_; }
     // Counts the changes of the mesh (edits, undo, redo) since the document was made.
     std::uint64_t changes() const { return changes_count_; }
 
-    // Around every undoable edit: changed == false means the edit did nothing and leaves no step.
+    // Around every undoable edit: changed == false means the edit did nothing and leaves no step
+    // (UndoHistory::end_edit).
     void begin_edit(std::string label);
-    void end_edit(bool changed, std::optional<std::string> script = std::nullopt);
+    void end_edit(bool changed, std::optional<std::string> script = std::nullopt, std::optional<std::string> label = std::nullopt);
     // Puts the mesh back as it was at begin_edit, leaving no step; false if no edit is under way.
     // Throws std::logic_error if it cannot (the history is then cleared).
     bool abandon_edit();
@@ -101,6 +116,9 @@ public:
     // Whether the display has more changes of the mesh left to catch up with than one part of the
     // catching up takes (a few milliseconds).
     bool display_behind() const;
+    // Whether the displayed triangles show the mesh as it is and every change of them has been taken
+    // (take_display_changes): until then the window keeps drawing frames without input.
+    bool display_up_to_date() const;
     // Which positions the triangles show (and picking finds).
     void set_position_source(render::PositionSource source);
     // Whether the triangles carry their distance to the dense mesh, for the distance heat map
@@ -122,6 +140,10 @@ private:
     void replace_mesh(rgb::Mesh mesh);
     // Rebuilds what follows the mesh from scratch.
     void resync();
+    // A new history over the mesh, that of the file `path` (none: "") unless `unsaved`.
+    void start_history(std::string path, bool unsaved);
+    // The file `path` holds the mesh as it is now, with everything set.
+    void mark_saved(const std::string& path);
     // Brings the geometry and index up to date with the next part of the changes; true once all are in.
     bool catch_up_part();
 
@@ -134,7 +156,10 @@ private:
     // Its journal observes the mesh first, before anything that could fail while told of a change.
     UndoHistory history_{mesh_};
     std::string path_;
-    bool dirty_ = false;
+    std::uint64_t saved_position_ = 0;  // the history's position() the file holds
+    bool unsaved_setting_ = false;      // or work that is in no file (a recovered copy, a cage made here)
+    std::string start_file_;
+    bool start_file_saved_over_ = false;
     std::uint64_t changes_count_ = 0;
     std::optional<rgb::UvChannel> uv_channel_;
     std::shared_ptr<const rgb::UvLayout> uv_layout_;

@@ -174,6 +174,10 @@ void Editor::finish_work() {
     }
 }
 
+bool Editor::needs_frames() const {
+    return job() != nullptr || painting_ || file_task_ != nullptr || !document_.display_up_to_date();
+}
+
 void Editor::queue(std::unique_ptr<MeshJob> job) { jobs_.push_back(std::move(job)); }
 
 void Editor::finish_front() {
@@ -337,7 +341,10 @@ void Editor::cancel_job() {
     MeshJob& front = *jobs_.front();
     if (front_begun_) {
         front.cancel();
-        if (front.makes_edit()) document_.end_edit(front.changed(), front.script());
+        // Work stopped part way has no script (a script says whole requests): its label says why.
+        const std::optional<std::string> script = front.script();
+        if (front.makes_edit())
+            document_.end_edit(front.changed(), script, script ? std::nullopt : std::optional(front.label() + ", stopped"));
     }
     report(front.cancelled_message(front_begun_ && front.changed()), false);
     jobs_.clear();

@@ -117,6 +117,10 @@ public:
     void update(std::chrono::microseconds job_slice);
     // Runs the queued work and the files being read or written to their end (tests, headless frames).
     void finish_work();
+    // Whether frames must keep coming without input: a stroke, a whole-mesh job or a file task under
+    // way, or a display that has not caught up with the mesh (Document::display_up_to_date). The
+    // window waits for input otherwise.
+    bool needs_frames() const;
 
     // ---- brush ----
     bool painting() const { return painting_; }
@@ -172,6 +176,7 @@ public:
     // themselves, like the CLI's screenshot) instead of setting the message.
     void load(const std::string& path);
     bool save();                         // to the document's path
+    // A .glb or .gltf path exports: the document stays the file it was (Document::save).
     bool save_as(const std::string& path);
     // What the window does: read or write in the background (file_task() shows how it goes), and
     // ask first when there are unsaved changes (once the file has been read: a file that cannot be
@@ -267,6 +272,8 @@ private:
     void crease_drag_to(glm::vec2 px);
     void end_crease_drag();
     void remember_recent(const std::string& path);
+    // What the status line says after a glTF export.
+    std::string exported_message(const std::string& path) const;
     void report(std::string message, bool error);
     void recover_from(const std::exception& failure);
     bool busy() const { return !jobs_.empty() || painting_ || crease_drag_.has_value(); }
@@ -303,7 +310,7 @@ private:
     // Files read or written in the background, one at a time.
     std::unique_ptr<BackgroundTask> file_task_;
     std::optional<std::string> save_when_idle_;  // a save waiting for the work under way
-    std::uint64_t saved_changes_ = 0;             // the document's change count in the copy being saved
+    Document::SaveMark saved_mark_;                // the document's state in the copy being saved
     bool quit_after_save_ = false;
     std::optional<LoadedDocument> opened_;  // read, waiting for the answer to DiscardForOpen
     std::optional<LoadedDocument> dense_;   // read, waiting for the answer to DenseMesh

@@ -8,6 +8,7 @@
 #include "app/editor.h"
 #include "detail/cage.h"
 #include "io/files/atomic_file.h"
+#include "io/gltf_export.h"
 #include "io/obj/obj_error.h"
 
 namespace app {
@@ -46,33 +47,53 @@ bool Editor::save_as(const std::string& path) {
     if (refuse_if_busy("save")) return false;
     try {
         document_.save(path, save_options_);
-        report("saved " + path, false);
-        suggested_path_.clear();
     } catch (const rgbio::SaveError& error) {
         report(error.what(), true);
         return false;
     }
+    if (rgbio::is_gltf_path(path)) {
+        report(exported_message(path), false);
+        return true;
+    }
+    report("saved " + path, false);
+    suggested_path_.clear();
     remember_recent(path);
     if (recovery_) recovery_->remove_own();
     return true;
 }
 
+std::string Editor::exported_message(const std::string& path) const {
+    return "exported " + path + " (glTF, without the adaptive state: " + document_title(document_) + " stays the document)";
+}
+
+// The script replays on the file the history's edits start from, whatever the document was saved as
+// since; a file saved over since holds some of the edits already, so replaying them there would
+// apply them twice.
 bool Editor::save_strokes(const std::string& path) {
     const UndoHistory::SessionScript session = document_.history().session_script();
-    const std::string opened = document_.path().empty() ? std::string("the mesh") : document_.path();
+    const std::string& start = document_.edits_start_from();
+    const std::string opened = start.empty() ? std::string("the mesh") : start;
+    const std::string saved_over =
+        document_.start_file_saved_over() ? opened + " has been saved with these edits since: replay them on a copy of it as it was opened" : "";
     try {
         rgbio::write_file_atomically(path, "# rgbsub edit session on " + opened + ": rgbsub apply " + opened + " " + path +
-                                               " -o OUT.obj replays it\n" + session.text);
+                                               " -o OUT.obj replays it\n" + (saved_over.empty() ? "" : "# " + saved_over + "\n") +
+                                               session.text);
     } catch (const rgbio::SaveError& error) {
         report(error.what(), true);
         return false;
     }
-    if (session.unscripted_steps > 0)
-        report("saved the strokes to " + path + ", but " + std::to_string(session.unscripted_steps) +
-                   " edit(s) in effect (automatic LOD, or stopped before the end) have no script: a replay will differ",
-               true);
-    else
-        report("saved the strokes to " + path, false);
+    std::string message = "saved the strokes to " + path + (saved_over.empty() ? "" : "; " + saved_over);
+    if (session.unscripted_steps == 0) {
+        report(message, false);
+        return true;
+    }
+    std::string causes;
+    for (const std::string& label : session.unscripted_labels) causes += (causes.empty() ? "" : ", ") + label;
+    const bool one = session.unscripted_steps == 1;
+    report(message + ", but " + std::to_string(session.unscripted_steps) + (one ? " edit in effect has" : " edits in effect have") +
+               " no script (" + causes + "): a replay will differ",
+           true);
     return true;
 }
 
@@ -127,7 +148,7 @@ void Editor::start_save(const std::string& path) {
         return;
     }
     save_when_idle_.reset();
-    saved_changes_ = document_.changes();
+    saved_mark_ = document_.save_mark();
     file_task_ = BackgroundTask::save(document_.mesh(), path, document_.with_attributes(save_options_));
     report("saving " + path + " ...", false);
 }
@@ -150,8 +171,12 @@ void Editor::poll_file_task() {
         open_failures_ += task->kind() == BackgroundTask::Kind::Open;
         return;
     }
+    if (task->kind() == BackgroundTask::Kind::Save && rgbio::is_gltf_path(task->path())) {
+        report(exported_message(task->path()), false);
+        return;
+    }
     if (task->kind() == BackgroundTask::Kind::Save) {
-        document_.saved_as(task->path(), saved_changes_);
+        document_.saved_as(task->path(), saved_mark_);
         suggested_path_.clear();
         remember_recent(task->path());
         report("saved " + task->path() + " in " + std::to_string(static_cast<int>(task->seconds() * 1000.0)) + " ms", false);

@@ -162,12 +162,11 @@ GLFWwindow* open_window() {
     return window;
 }
 
-// Whether frames must keep coming without input: work to show, files to take, or a stroke.
-bool working(const Editor& editor) { return editor.job() != nullptr || editor.painting() || editor.file_task() != nullptr; }
-
 // Whether the frames only wait for a file read or written on another thread: then they come a few
 // times a second, to move the progress bar and take the result, and leave the processor to it.
-bool only_waiting_for_a_file(const Editor& editor) { return editor.job() == nullptr && !editor.painting() && editor.file_task() != nullptr; }
+bool only_waiting_for_a_file(const Editor& editor) {
+    return editor.job() == nullptr && !editor.painting() && editor.file_task() != nullptr && editor.document().display_up_to_date();
+}
 
 void run_loop(GLFWwindow* window, WindowState& state, const WindowLaunch& launch, Clock::time_point start) {
     Editor& editor = *state.editor;
@@ -186,17 +185,18 @@ void run_loop(GLFWwindow* window, WindowState& state, const WindowLaunch& launch
         }
         if (launch.frames && file_shown && frames_after_shown >= *launch.frames) break;
         // Idle: sleep until input arrives (waking now and then for the recovery copy's timer), and
-        // draw only if something happened. Counted frames (--frames) are always drawn.
+        // draw only if something happened. Counted frames (--frames) are always drawn, and so are
+        // frames until the display has caught up with the mesh (Editor::needs_frames).
         if (only_waiting_for_a_file(editor) && frame >= 2) {
             glfwWaitEventsTimeout(0.05);
-        } else if (working(editor) || frame < 2 || launch.frames) {
+        } else if (editor.needs_frames() || frame < 2 || launch.frames) {
             glfwPollEvents();
         } else {
             glfwWaitEventsTimeout(1.0);
-            if (!state.redraw && !working(editor)) {
+            if (!state.redraw && !editor.needs_frames()) {
                 const std::string message = editor.message();
                 editor.run_guarded([&] { editor.update(pacer.slice()); });
-                if (editor.message() == message) continue;
+                if (editor.message() == message && !editor.needs_frames()) continue;
             }
         }
         state.redraw = false;

@@ -1,5 +1,6 @@
 #include "app/undo_history.h"
 
+#include <algorithm>
 #include <utility>
 
 #include "rgb/mesh/mesh.h"
@@ -15,13 +16,13 @@ void UndoHistory::begin_edit(std::string label) {
     journal_.start();
 }
 
-void UndoHistory::end_edit(bool changed, std::optional<std::string> script) {
+void UndoHistory::end_edit(bool changed, std::optional<std::string> script, std::optional<std::string> label) {
     if (!journal_.recording()) return;
     rgb::JournalRecord record = journal_.stop();
     if (!changed || record.empty()) return;
     for (const Step& step : redo_) bytes_ -= step.record.bytes();
     redo_.clear();
-    push(undo_, Step{std::move(pending_label_), std::move(record), std::move(script), std::nullopt});
+    push(undo_, Step{label ? std::move(*label) : std::move(pending_label_), std::move(record), std::move(script), std::nullopt, next_serial_++});
 }
 
 void UndoHistory::retag(std::string label, const rgb::SharpFeatures& features) {
@@ -30,7 +31,7 @@ void UndoHistory::retag(std::string label, const rgb::SharpFeatures& features) {
     rgb::set_sharp_features(mesh_, features);
     for (const Step& step : redo_) bytes_ -= step.record.bytes();
     redo_.clear();
-    push(undo_, Step{std::move(label), {}, std::nullopt, std::move(replaced)});
+    push(undo_, Step{std::move(label), {}, std::nullopt, std::move(replaced), next_serial_++});
 }
 
 // An edit, or a crossing (then its step goes back where it was, whole).
@@ -57,7 +58,7 @@ bool UndoHistory::begin_cross(std::deque<Step>& from, std::deque<Step>& to) {
     if (step.retag) {
         rgb::SharpFeatures replaced = mesh_.base().sharp_features();
         rgb::set_sharp_features(mesh_, *step.retag);
-        push(to, Step{std::move(step.label), {}, std::move(step.script), std::move(replaced)});
+        push(to, Step{std::move(step.label), {}, std::move(step.script), std::move(replaced), step.serial});
         return true;
     }
     journal_.start();
@@ -79,7 +80,7 @@ bool UndoHistory::continue_crossing(std::size_t max_steps) {
     }
     Crossing crossed = std::move(*crossing_);
     crossing_.reset();
-    push(*crossed.to, Step{std::move(crossed.step.label), journal_.stop(), std::move(crossed.step.script), std::nullopt});
+    push(*crossed.to, Step{std::move(crossed.step.label), journal_.stop(), std::move(crossed.step.script), std::nullopt, crossed.step.serial});
     return true;
 }
 
@@ -98,11 +99,12 @@ void UndoHistory::stop_crossing() {
         push(*stopped.from, std::move(stopped.step));
         return;
     }
+    // Both parts lead to states no step led to before, and no script says a part of a step.
     Step rest = std::move(stopped.step);
     rest.record.truncate(stopped.cursor);
-    rest.script.reset();
-    if (!rest.record.empty()) push(*stopped.from, Step{rest.label, std::move(rest.record), std::nullopt, std::nullopt});
-    push(*stopped.to, Step{std::move(rest.label), std::move(reverted), std::nullopt, std::nullopt});
+    const std::string label = rest.label + ", in part";
+    if (!rest.record.empty()) push(*stopped.from, Step{label, std::move(rest.record), std::nullopt, std::nullopt, next_serial_++});
+    push(*stopped.to, Step{label, std::move(reverted), std::nullopt, std::nullopt, next_serial_++});
 }
 
 bool UndoHistory::cross(std::deque<Step>& from, std::deque<Step>& to) {
@@ -128,21 +130,29 @@ void UndoHistory::clear() {
     redo_.clear();
     bytes_ = 0;
     forgotten_ = {};
+    bottom_ = next_serial_++;
 }
 
 UndoHistory::SessionScript UndoHistory::session_script() const {
     SessionScript session = forgotten_;
-    for (const Step& step : undo_) {
-        if (step.script) session.text += *step.script;
-        else ++session.unscripted_steps;
-    }
+    for (const Step& step : undo_) session.add(step.script, step.label);
     return session;
+}
+
+void UndoHistory::SessionScript::add(const std::optional<std::string>& script, const std::string& label) {
+    if (script) {
+        text += *script;
+        return;
+    }
+    ++unscripted_steps;
+    if (std::find(unscripted_labels.begin(), unscripted_labels.end(), label) == unscripted_labels.end())
+        unscripted_labels.push_back(label);
 }
 
 void UndoHistory::forget_if_stale() {
     if (!journal_.take_unrecorded_change()) return;
     SessionScript in_effect = session_script();
-    ++in_effect.unscripted_steps;  // the change itself
+    in_effect.add(std::nullopt, "a change outside the undo history");  // the change itself
     clear();
     forgotten_ = std::move(in_effect);
 }
@@ -164,8 +174,8 @@ void UndoHistory::enforce_bound() {
         std::deque<Step>& side = undo_.empty() ? redo_ : undo_;
         if (&side == &undo_) {
             // Still in effect, only no longer undoable.
-            if (side.front().script) forgotten_.text += *side.front().script;
-            else ++forgotten_.unscripted_steps;
+            forgotten_.add(side.front().script, side.front().label);
+            bottom_ = side.front().serial;
         }
         bytes_ -= side.front().record.bytes();
         side.pop_front();

@@ -10,8 +10,10 @@
 // edits in effect can be saved as a script that `rgbsub apply` replays to the same mesh.
 #include <cstddef>
 #include <deque>
+#include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "rgb/mesh/journal.h"
 #include "rgb/rules/sharp_features.h"
@@ -28,9 +30,9 @@ public:
     explicit UndoHistory(rgb::Mesh& mesh, std::size_t byte_bound = std::size_t{1} << 30);
 
     // Around one undoable change of the mesh. end_edit with changed == false forgets it; `script`
-    // says what it did, if a script can.
+    // says what it did, if a script can; a `label` replaces begin_edit's (work stopped part way).
     void begin_edit(std::string label);
-    void end_edit(bool changed, std::optional<std::string> script = std::nullopt);
+    void end_edit(bool changed, std::optional<std::string> script = std::nullopt, std::optional<std::string> label = std::nullopt);
     bool editing() const { return journal_.recording(); }
     // Gives the base mesh other crease tags (rgb::set_sharp_features) as one step, outside any edit:
     // a retag keeps every slot, so the journal's records stay valid, and its step sets the tags it
@@ -69,12 +71,18 @@ public:
     void stop_crossing();
 
     // The script of every step in effect (undone ones left out, those forgotten for the memory
-    // bound kept), and how many of them no script could say.
+    // bound kept), and how many of them no script could say, with their labels (each once).
     struct SessionScript {
         std::string text;
         std::size_t unscripted_steps = 0;
+        std::vector<std::string> unscripted_labels;
+        void add(const std::optional<std::string>& script, const std::string& label);
     };
     SessionScript session_script() const;
+
+    // Names the state of the mesh in the history: the same after an undo and its redo, different
+    // for a new edit or a step stopped part way (meaningless while a step crosses).
+    std::uint64_t position() const { return undo_.empty() ? bottom_ : undo_.back().serial; }
 
     std::size_t bytes() const { return bytes_; }
     std::size_t byte_bound() const { return byte_bound_; }
@@ -87,6 +95,8 @@ private:
         std::optional<std::string> script;
         // For a retag, the tags that crossing the step sets (then `record` is empty).
         std::optional<rgb::SharpFeatures> retag;
+        // The position() the step leads to, applied forwards (kept while it crosses back and forth).
+        std::uint64_t serial = 0;
     };
     // Pops the newest step of `from` and starts reverting it into a step for `to`.
     bool begin_cross(std::deque<Step>& from, std::deque<Step>& to);
@@ -113,6 +123,8 @@ private:
     };
     std::optional<Crossing> crossing_;
     SessionScript forgotten_;  // steps in effect that the bound dropped from undo_
+    std::uint64_t next_serial_ = 1;
+    std::uint64_t bottom_ = 0;  // position() below the oldest step of undo_
 };
 
 }  // namespace app

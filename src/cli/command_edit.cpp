@@ -2,7 +2,9 @@
 // to the headless command instead of failing inside GLFW.
 #include <cstdlib>
 #include <iostream>
+#include <stdexcept>
 
+#include "app/editor.h"
 #include "app/editor_window.h"
 #include "app/headless_frame.h"
 #include "cli/arguments.h"
@@ -32,10 +34,19 @@ int write_screenshot(const std::string& file, const std::string& output, const s
         frame.colouring = render::Colouring::Checker;
     } else if (mode == "texture") {
         frame.colouring = render::Colouring::Texture;
+    } else if (mode == "distance") {
+        frame.colouring = render::Colouring::DetailDistance;
     } else if (mode != "shaded") {
-        throw UsageError("--mode must be shaded, wire, rgb, level, material, colours, checker or texture, got '" + mode + "'");
+        throw UsageError("--mode must be shaded, wire, rgb, level, material, colours, checker, texture or distance, got '" + mode + "'");
     }
-    rgbio::write_file_atomically(output, render::encode_png(app::render_editor_frame(file, frame)));
+    app::EditorOptions options;
+    options.viewport = frame.size;
+    options.covered_right = app::kPanelCover;
+    app::Editor editor(options);
+    editor.load(file);
+    if (frame.colouring == render::Colouring::DetailDistance && !editor.document().mesh().base().detail())
+        throw std::invalid_argument(file + ": --mode distance needs a cage with detail (made by rgbsub remesh), and this mesh has none");
+    rgbio::write_file_atomically(output, render::encode_png(app::render_editor_frame(editor, frame)));
     return exit_ok;
 }
 
@@ -45,14 +56,16 @@ int run_edit(std::span<const std::string> args) {
     const Arguments arguments(args, {kStrictSwitch}, {"--frames", "--screenshot", "--mode"});
     if (arguments.has("--help")) {
         std::cout << "usage: rgbsub edit [FILE.obj] [--frames N] [--screenshot OUT.png [--mode MODE]] [--strict]\n"
-                     "Opens the editor window (needs a display) on FILE.obj, or on the default mesh.\n"
+                     "Opens the editor window (needs a display) on FILE.obj, or on the default mesh;\n"
+                     "'rgbsub FILE.obj [OPTIONS]' is short for 'rgbsub edit FILE.obj [OPTIONS]'.\n"
                      "  --frames N          quit after N frames once FILE is shown, printing the times\n"
                      "                      from launch to the first frame and to FILE shown\n"
                      "  --screenshot PATH   write one editor frame, panels included, as a PNG and exit\n"
                      "                      (headless through OSMesa: no display needed)\n"
                      "  --mode MODE         for the screenshot: shaded, wire, rgb, level, or the file's look:\n"
                      "                      material (Kd), colours (vertex colours), checker (over the UVs),\n"
-                     "                      texture (map_Kd over the UVs; Kd without one)\n"
+                     "                      texture (map_Kd over the UVs; Kd without one), or distance (a\n"
+                     "                      cage with detail only: its distance to the dense mesh)\n"
                   << kStrictHelp;
         return exit_ok;
     }

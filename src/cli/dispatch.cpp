@@ -1,6 +1,8 @@
 #include "cli/dispatch.h"
 
 #include <algorithm>
+#include <cctype>
+#include <filesystem>
 #include <iostream>
 #include <new>
 #include <stdexcept>
@@ -27,7 +29,7 @@ constexpr Command commands[] = {RGBSUB_COMMANDS(RGBSUB_COMMAND_ENTRY)};
 void print_help(std::ostream& out) {
     out << "rgbsub: paint level of detail onto a triangle mesh with RGB subdivision (exact Loop)\n\n"
            "usage: rgbsub [COMMAND] [ARGS...]    without a COMMAND: rgbsub "
-        << commands[0].name << "\n\ncommands:\n";
+        << commands[0].name << "\n       rgbsub FILE.obj [ARGS...]  is  rgbsub " << commands[0].name << " FILE.obj [ARGS...]\n\ncommands:\n";
     std::size_t name_width = 0;
     for (const Command& command : commands) name_width = std::max(name_width, command.name.size());
     for (const Command& command : commands) {
@@ -65,6 +67,15 @@ int run_command(const Command& command, std::span<const std::string> args) {
     }
 }
 
+// Whether a first word that is no command names a mesh for the editor: an existing file (not a
+// folder), or a name with a mesh file's extension (which the editor then reports if it cannot read).
+bool names_a_mesh(const std::string& word) {
+    std::string extension = std::filesystem::path(word).extension().string();
+    std::ranges::transform(extension, extension.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    std::error_code error;
+    return extension == ".obj" || extension == ".glb" || extension == ".gltf" || std::filesystem::is_regular_file(word, error);
+}
+
 }  // namespace
 
 int dispatch(std::span<const std::string> args) {
@@ -77,6 +88,8 @@ int dispatch(std::span<const std::string> args) {
     for (const Command& command : commands) {
         if (command.name == first) return run_command(command, args.subspan(1));
     }
+    // `rgbsub FILE.obj [ARGS...]` as `rgbsub` alone: the editor.
+    if (names_a_mesh(first)) return run_command(commands[0], args);
     std::cerr << "rgbsub: unknown command '" << first << "'; 'rgbsub --help' lists the commands\n";
     return exit_usage;
 }

@@ -98,7 +98,8 @@ struct Renderer::State {
     ShaderProgram overlay_program{"overlay.vert", "overlay.frag"};
     SurfaceBuffer surface;
     SimpleVertices base_lines;
-    SimpleVertices sharp_lines;  // follows the surface: rebuilt whenever it changes
+    SimpleVertices sharp_lines;  // follows the surface: uploaded again whenever it changes
+    SharpEdgeLines sharp_edges;
     SimpleVertices overlay;
     TextureArray textures;
     SurfaceGeometry geometry;
@@ -110,6 +111,13 @@ struct Renderer::State {
     const SurfaceGeometry* shown = nullptr;
 
     const SurfaceGeometry& drawn() const { return shown ? *shown : geometry; }
+
+    // The sharp edges after the slots `changed` of `mesh` were rewritten (all of them: `rebuilt`).
+    void follow_sharp_edges(const rgb::Mesh& shown_mesh, std::span<const SlotRange> changed, bool rebuilt) {
+        if (rebuilt) sharp_edges.rebuild(shown_mesh);
+        else sharp_edges.update(shown_mesh, changed);
+        sharp_lines.upload(sharp_edges.lines(drawn()));
+    }
 
     void count_upload(std::uint64_t before, std::size_t ranges) {
         stats.last_sync_bytes = surface.bytes_uploaded() - before;
@@ -143,6 +151,7 @@ void Renderer::detach() {
     state_->geometry = SurfaceGeometry(state_->geometry.source());
     state_->surface.upload_all({});
     state_->base_lines.upload(std::vector<glm::vec3>{});
+    state_->sharp_edges = SharpEdgeLines();
     state_->sharp_lines.upload(std::vector<glm::vec3>{});
 }
 
@@ -156,9 +165,11 @@ void Renderer::show(const rgb::Mesh& mesh, const SurfaceGeometry& geometry, std:
         s.base_lines.upload(base_mesh_lines(mesh));
         s.surface.upload_all(geometry.vertices(), geometry.appearance_vertices());
         s.count_upload(before, 1);
+        s.follow_sharp_edges(mesh, {}, true);
     } else if (!changed.empty()) {
         s.surface.upload(geometry.vertices(), geometry.appearance_vertices(), changed);
         s.count_upload(before, changed.size());
+        s.follow_sharp_edges(mesh, changed, false);
     }
 }
 
@@ -170,7 +181,7 @@ void Renderer::sync() {
     s.changes->clear();
     s.surface.upload(s.geometry.vertices(), s.geometry.appearance_vertices(), ranges);
     s.count_upload(before, ranges.size());
-    s.sharp_lines.upload(sharp_edge_lines(*s.mesh, s.geometry));
+    s.follow_sharp_edges(*s.mesh, ranges, false);
 }
 
 void Renderer::reupload_all() {
@@ -181,7 +192,7 @@ void Renderer::reupload_all() {
     s.geometry.rebuild(*s.mesh);
     s.surface.upload_all(s.geometry.vertices(), s.geometry.appearance_vertices());
     s.count_upload(before, 1);
-    s.sharp_lines.upload(sharp_edge_lines(*s.mesh, s.geometry));
+    s.follow_sharp_edges(*s.mesh, {}, true);
 }
 
 void Renderer::set_positions(PositionSource source) {

@@ -41,5 +41,47 @@ TEST(DisplayCatchUp, TheUndoOfALargeEditIsShownOverSeveralFramesAndEndsAsARebuil
     EXPECT_EQ(shown.triangles_of(rgb::Colour::Green), 3674u);
 }
 
+// The window draws frames without input only while Editor::needs_frames(): this is what a user sees
+// after a whole-mesh job or an undo once the mouse rests.
+class WindowFrames : public ::testing::Test {
+protected:
+    // Frames as the window draws them until it waits for input: each one runs the editor for `slice`
+    // and takes the display's changes, as drawing does.
+    void draw_until_idle(std::chrono::microseconds slice) {
+        for (int frames = 0; editor.needs_frames() && frames < 100000; ++frames) {
+            editor.update(slice);
+            editor.document().take_display_changes();
+        }
+    }
+    // What is drawn (the geometry as far as it has caught up) against a rebuild from the mesh.
+    void expect_display_current(const char* after) {
+        const render::SurfaceGeometry& shown = editor.document().shown();
+        render::SurfaceGeometry rebuilt(shown.source());
+        rebuilt.rebuild(editor.document().mesh());
+        EXPECT_TRUE(std::ranges::equal(shown.vertices(), rebuilt.vertices())) << "stale display after " << after;
+        EXPECT_TRUE(editor.document().display_up_to_date()) << after;
+    }
+    Editor editor{kViewport};
+};
+
+TEST_F(WindowFrames, KeepComingUntilTheDisplayHasCaughtUpWithAJobAndAnUndo) {
+    ASSERT_TRUE(editor.open(test::asset_path("bunny.obj")));
+    draw_until_idle(std::chrono::microseconds(1));
+    // Frames whose job takes most of the slice leave the display behind (it catches up at least
+    // kMinDisplaySlice a frame); the job ends with the display still catching up.
+    editor.start_flood_fill(3);  // 3674 -> 235,136 triangles
+    draw_until_idle(std::chrono::milliseconds(30));
+    ASSERT_EQ(editor.job(), nullptr);
+    ASSERT_EQ(editor.document().mesh().num_faces(), 235136u);
+    expect_display_current("set all to level 3");
+
+    // An undo of the set all, over frames of the window's usual slice.
+    editor.key_pressed(Key::Z, Modifiers{.ctrl = true});
+    draw_until_idle(std::chrono::milliseconds(10));
+    ASSERT_EQ(editor.document().mesh().num_faces(), 3674u);
+    expect_display_current("undo");
+    EXPECT_FALSE(editor.needs_frames()) << "then the window idles";
+}
+
 }  // namespace
 }  // namespace app

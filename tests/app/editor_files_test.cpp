@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -16,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include "app/background_task.h"
+#include "app/crease_tool.h"
 #include "app/editor.h"
 #include "editor_fixture.h"
 #include "io/base_uvs.h"
@@ -362,6 +364,114 @@ TEST_F(DroppedAndRecentFiles, RecentFilesListTheLastFilesUsedNewestFirst) {
     ASSERT_GE(recent.size(), 3u);
     EXPECT_LT(recent.size(), 20u) << "the list stays short";
     for (std::size_t i = 0; i < recent.size(); ++i) EXPECT_EQ(recent[i], opened[opened.size() - 1 - i]);
+}
+
+// The document and its file, with copies of the default mesh in a folder of the test's own.
+using DocumentFile = DroppedAndRecentFiles;
+
+// Saving as .glb or .gltf exports: the document stays the OBJ (its title, its Ctrl+S target and its
+// unsaved mark), so Ctrl+S still writes the OBJ with the adaptive state, which reopens.
+TEST_F(DocumentFile, SavingAsGltfExportsAndTheDocumentStaysTheObj) {
+    const std::string obj = mesh_copy("cat.obj");
+    ASSERT_TRUE(editor.open(obj));
+    editor.start_flood_fill(1);
+    editor.finish_work();
+    ASSERT_EQ(editor.window_title(), "cat.obj* - rgbsub");
+    // In the background as the window does (Ctrl+Shift+S), and right away.
+    editor.request_save_as((folder_ / "cat.glb").string());
+    editor.finish_work();
+    ASSERT_TRUE(editor.save_as((folder_ / "cat.gltf").string())) << editor.message();
+    EXPECT_TRUE(std::filesystem::exists(folder_ / "cat.glb"));
+    EXPECT_TRUE(std::filesystem::exists(folder_ / "cat.gltf"));
+    EXPECT_EQ(editor.document().path(), obj);
+    EXPECT_TRUE(editor.document().dirty()) << "an export saves nothing of the document";
+    EXPECT_EQ(editor.window_title(), "cat.obj* - rgbsub");
+    EXPECT_NE(editor.message().find("exported"), std::string::npos) << editor.message();
+
+    editor.key_pressed(Key::S, {.ctrl = true});
+    editor.finish_work();
+    EXPECT_FALSE(editor.document().dirty()) << editor.message();
+    EXPECT_EQ(editor.window_title(), "cat.obj - rgbsub");
+    Editor reopened(kViewport);
+    ASSERT_TRUE(reopened.open(obj)) << reopened.message();
+    EXPECT_TRUE(rgbtest::same_mesh(reopened.document().mesh(), editor.document().mesh())) << "the adaptive state, at level 1";
+}
+
+// Undoing back to the state of the file marks it saved again; redoing past it, unsaved. Over frames
+// too (an undo too large for one frame).
+TEST_F(DocumentFile, UndoingBackToTheSavedStateMarksTheFileSaved) {
+    const std::string obj = mesh_copy("cat.obj");
+    ASSERT_TRUE(editor.open(obj));
+    editor.start_flood_fill(1);
+    editor.finish_work();
+    ASSERT_TRUE(editor.document().dirty());
+    editor.key_pressed(Key::Z, {.ctrl = true});
+    editor.finish_work();
+    EXPECT_FALSE(editor.document().dirty()) << "back to the opened file";
+    EXPECT_EQ(editor.window_title(), "cat.obj - rgbsub");
+    editor.key_pressed(Key::Y, {.ctrl = true});
+    editor.finish_work();
+    EXPECT_TRUE(editor.document().dirty());
+
+    // Saved at level 1: then level 4 (a step that undoes over frames) and back.
+    ASSERT_TRUE(editor.save());
+    editor.start_flood_fill(4);
+    editor.finish_work();
+    ASSERT_TRUE(editor.document().dirty());
+    ASSERT_TRUE(editor.undo());
+    ASSERT_NE(editor.job(), nullptr) << "the undo goes on over frames";
+    EXPECT_TRUE(editor.document().dirty()) << "half way back";
+    editor.finish_work();
+    EXPECT_FALSE(editor.document().dirty()) << "back to the saved file";
+    ASSERT_TRUE(editor.undo());
+    EXPECT_TRUE(editor.document().dirty()) << "before the save: not what the file holds";
+    // A new edit from there loses the way back to the saved state.
+    editor.start_flood_fill(2);
+    editor.finish_work();
+    editor.start_flood_fill(1);
+    editor.finish_work();
+    EXPECT_TRUE(editor.document().dirty()) << "the same mesh as the file, but not through its history";
+}
+
+// Ctrl+E's script names the file its edits start from (the one opened, not a later Save as), and
+// its warning names the edits in effect that no script says, by what they were.
+TEST_F(DocumentFile, TheStrokesScriptNamesTheFileItsEditsStartFromAndWhatItCannotSay) {
+    const std::string obj = mesh_copy("start.obj");
+    ASSERT_TRUE(editor.open(obj));
+    editor.start_flood_fill(1);
+    editor.finish_work();
+    ASSERT_TRUE(editor.save_as((folder_ / "later.obj").string()));
+    editor.start_flood_fill(2);
+    editor.finish_work();
+    const std::filesystem::path script = folder_ / "session.lod";
+    ASSERT_TRUE(editor.save_strokes(script.string()));
+    EXPECT_FALSE(editor.message_is_error()) << editor.message();
+    std::string header;
+    std::getline(std::ifstream(script), header);
+    EXPECT_NE(header.find("rgbsub apply " + obj + " " + script.string()), std::string::npos) << header;
+    EXPECT_EQ(header.find("later.obj"), std::string::npos) << header;
+
+    ASSERT_TRUE(editor.set_sharp_features(with_edges_above(editor.document().mesh(), 30.0), "tag edges above 30 degrees"));
+    editor.start_view_lod();
+    editor.finish_work();
+    editor.freeze_view_lod();
+    ASSERT_TRUE(editor.save_strokes(script.string()));
+    EXPECT_TRUE(editor.message_is_error());
+    EXPECT_NE(editor.message().find("2 edits in effect have no script"), std::string::npos) << editor.message();
+    EXPECT_NE(editor.message().find("tag edges above 30 degrees"), std::string::npos) << editor.message();
+    EXPECT_NE(editor.message().find("view-dependent LOD"), std::string::npos) << editor.message();
+    EXPECT_EQ(editor.message().find("automatic LOD"), std::string::npos) << editor.message();
+
+    // Saved over the file the edits start from: the script says the file holds them now.
+    ASSERT_TRUE(editor.open(obj));
+    editor.start_flood_fill(1);
+    editor.finish_work();
+    ASSERT_TRUE(editor.save());
+    ASSERT_TRUE(editor.save_strokes(script.string()));
+    std::stringstream text;
+    text << std::ifstream(script).rdbuf();
+    EXPECT_NE(text.str().find("# " + obj + " has been saved with these edits since"), std::string::npos) << text.str();
+    EXPECT_NE(editor.message().find("saved with these edits since"), std::string::npos) << editor.message();
 }
 
 }  // namespace

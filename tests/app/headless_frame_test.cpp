@@ -14,6 +14,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "app/crease_tool.h"
 #include "app/editor.h"
 #include "app/headless_frame.h"
 #include "gl_test_support.h"
@@ -232,6 +233,54 @@ TEST(HeadlessFrame, DistanceHeatMapOnACageWithDetailOnly) {
     for (std::size_t count : swatch_pixels(heat)) EXPECT_GE(count, 16u * 16u);
     for (std::size_t count : swatch_pixels(render_editor_frame(std::string(RGBSUB_SOURCE_DIR) + "/assets/default.obj", frame)))
         EXPECT_EQ(count, 0u);
+}
+
+// Sharp edges (issue 33): the crease tool's tags are drawn in the magenta of `rgbsub render` in every
+// display mode, as sharp_edges_screenshot_test.cpp checks render's (sharp_<mode>.png in the test's
+// temporary folder for a person to look at). The machined part at level 2, its 44 edges above 30
+// degrees tagged, against the same part untagged.
+TEST(HeadlessFrame, SharpEdgesAreMagentaLinesInEveryDisplayMode) {
+    const std::filesystem::path folder = test::fresh_folder("sharp_frames");
+    HeadlessFrame frame;
+    frame.size = {800, 600};
+    Editor tagged(frame.size), untagged(frame.size);
+    for (Editor* editor : {&tagged, &untagged}) {
+        editor->set_covered_right(kPanelCover);
+        editor->load(test::asset_path("machined_part.obj"));
+        editor->start_flood_fill(2);
+        editor->finish_work();
+    }
+    ASSERT_TRUE(tagged.set_sharp_features(with_edges_above(tagged.document().mesh(), 30.0), "tag edges above 30 degrees"));
+    // render's test's magenta, in the part of the frame the panel and the status bar leave free.
+    const auto magenta = [&](const render::Image& image) {
+        std::size_t n = 0;
+        for (int y = 0; y < frame.size.y - 40; ++y)
+            for (int x = 0; x < frame.size.x - static_cast<int>(kPanelCover); ++x) {
+                const glm::u8vec4 p = image.pixel(x, y);
+                n += p.r > 150 && p.b > 80 && p.g + 60 < p.b;
+            }
+        return n;
+    };
+    struct Mode {
+        const char* name;
+        render::Shading shading;
+        render::Colouring colouring;
+        bool wireframe;
+    };
+    const Mode modes[] = {{"shaded", render::Shading::Smooth, render::Colouring::Plain, false},
+                          {"wire", render::Shading::Smooth, render::Colouring::Plain, true},
+                          {"rgb", render::Shading::Flat, render::Colouring::RgbType, false},
+                          {"level", render::Shading::Smooth, render::Colouring::Level, false},
+                          {"material", render::Shading::Smooth, render::Colouring::Material, false},
+                          {"checker", render::Shading::Smooth, render::Colouring::Checker, false}};
+    for (const Mode& mode : modes) {
+        frame.shading = mode.shading;
+        frame.colouring = mode.colouring;
+        frame.wireframe = mode.wireframe;
+        const render::Image shown = render_editor_frame(tagged, frame);
+        std::ofstream(folder / (std::string("sharp_") + mode.name + ".png"), std::ios::binary) << render::encode_png(shown);
+        EXPECT_GT(magenta(shown), magenta(render_editor_frame(untagged, frame)) + 300) << mode.name << ": 44 crease edges, several pixels each";
+    }
 }
 
 }  // namespace

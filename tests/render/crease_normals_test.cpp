@@ -2,7 +2,7 @@
 // on its side of the creases through its vertex. On the machined part with its rim and corner edges
 // tagged, every face lies in a flat region bounded by creases, so every corner's normal is its own
 // face's normal; untagged, the rounded part has none like that at the rims. Incremental updates still
-// equal a rebuild.
+// equal a rebuild, and so do the sharp edges' lines followed slot by slot.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,11 +12,13 @@
 #include <glm/trigonometric.hpp>
 
 #include "render/mesh_changes.h"
+#include "render/sharp_edge_lines.h"
 #include "render/surface_geometry.h"
 #include "rgb/lod/refine.h"
 #include "rgb/lod/requests.h"
 #include "rgb/mesh/mesh.h"
 #include "rgb/mesh/sharp_angle.h"
+#include "rgb/mesh/sharp_edges.h"
 #include "support/obj_reader.h"
 
 namespace {
@@ -67,6 +69,28 @@ TEST(CreaseNormals, IncrementalUpdatesOfATaggedMeshEqualARebuild) {
         ASSERT_EQ(geometry.vertices().size(), fresh.vertices().size());
         for (std::size_t i = 0; i < fresh.vertices().size(); ++i)
             ASSERT_EQ(geometry.vertices()[i], fresh.vertices()[i]) << "slot " << i / 3 << " after level " << level;
+    }
+}
+
+// What the editor draws of the creases after each change (render::SharpEdgeLines::update over the
+// slots the change rewrote) is what a look at every slot finds: one line per edge rgb::sharp_mesh_edges
+// lists, at the corners shown.
+TEST(CreaseNormals, SharpEdgeLinesFollowedSlotBySlotEqualALookAtEverySlot) {
+    rgb::Mesh mesh = machined_part(true);
+    render::MeshChanges changes(mesh);
+    render::SurfaceGeometry geometry;
+    geometry.rebuild(mesh);
+    render::SharpEdgeLines followed;
+    followed.rebuild(mesh);
+    for (int level : {2, 3, 1, 0}) {
+        rgb::set_level(mesh, level, rgb::Sphere{{4.0, 0.0, 2.0}, 1.5});
+        followed.update(mesh, geometry.update(mesh, changes));
+        changes.clear();
+        render::SharpEdgeLines fresh;
+        fresh.rebuild(mesh);
+        const std::vector<glm::vec3> lines = fresh.lines(geometry);
+        EXPECT_EQ(followed.lines(geometry), lines) << "after level " << level;
+        EXPECT_EQ(lines.size(), 2 * rgb::sharp_mesh_edges(mesh).size()) << "after level " << level;
     }
 }
 
