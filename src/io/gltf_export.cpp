@@ -1,9 +1,6 @@
 #include "io/gltf_export.h"
 
-#include <algorithm>
-#include <cctype>
-#include <filesystem>
-
+#include "io/files/save_target.h"
 #include "rgb/mesh/face_location.h"
 #include "rgb/values/limit_normals.h"
 #include "rgb/values/loop_geometry.h"
@@ -13,11 +10,7 @@
 
 namespace rgbio {
 
-bool is_gltf_path(const std::string& path) {
-    std::string extension = std::filesystem::path(path).extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
-    return extension == ".glb" || extension == ".gltf";
-}
+bool is_gltf_path(const std::string& path) { return has_extension(path, ".glb") || has_extension(path, ".gltf"); }
 
 GltfMesh gltf_mesh(const rgb::Mesh& mesh, const SaveOptions& options) {
     GltfMesh out;

@@ -107,19 +107,24 @@ void write_obj(const rgb::Mesh& mesh, const SaveOptions& options, const std::str
     WrittenRecords written_faces(options.progress.part(faces_from, state_from), face_records);
     WrittenRecords written_state(options.progress.part(state_from, 1.0), state_records);
 
+    std::vector<std::uint32_t> obj_index(mesh.vertex_capacity(), UINT32_MAX);
+    std::uint32_t written = 0;
+    for (rgb::VertexId v : mesh.vertices()) obj_index[v.idx] = written++;
+    // Made before the header, which counts them: a file cut just before its t lines is then known as cut.
+    std::string tag_lines;
+    append_tag_lines(mesh, obj_index, tag_lines);
+
     std::string& out = output.buffer();
     out += "# rgbsub mesh: " + std::to_string(mesh.num_vertices()) + " vertices, " + std::to_string(order.faces.size()) +
            " triangles; positions: " + (options.positions == SavedPositions::Limit ? "limit" : "displayed") +
+           tag_lines_note(static_cast<std::size_t>(std::count(tag_lines.begin(), tag_lines.end(), '\n'))) +
            // Lets the reader tell a file cut before its state from one saved without it.
            (options.state ? std::string(kSavedStateNote) : std::string()) + "\n";
     if (attributes)
         for (const std::string& library : library_references(*attributes, output_folder)) out += "mtllib " + library + "\n";
-    std::vector<std::uint32_t> obj_index(mesh.vertex_capacity(), UINT32_MAX);
-    std::uint32_t written = 0;
     const std::vector<std::uint8_t> display_levels =
         options.positions == SavedPositions::Limit ? std::vector<std::uint8_t>() : rgb::display_levels(mesh);
     for (rgb::VertexId v : mesh.vertices()) {
-        obj_index[v.idx] = written++;
         append_vector(out, "v", written_position(mesh, v, options.positions, display_levels));
         if (!colours.empty())
             for (int c = 0; c < 3; ++c) append_double(out, colours[v.idx][c]);
@@ -183,7 +188,7 @@ void write_obj(const rgb::Mesh& mesh, const SaveOptions& options, const std::str
     }
     written_vertices.done();
     written_faces.done();
-    append_tag_lines(mesh, obj_index, out);
+    out += tag_lines;
     if (options.state)
         write_state(mesh, options.positions == SavedPositions::Limit, display_levels, out,
                     [&] {

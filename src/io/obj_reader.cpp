@@ -98,6 +98,10 @@ std::shared_ptr<rgb::Mesh> adaptive_mesh(SavedState& saved, const ObjRecords& re
 // used up (the positions move into the result).
 LoadedMesh read_records(ObjRecords&& records, const std::string& name, const ReadOptions& options,
                         const std::function<void()>& release_text) {
+    const std::size_t vertices = records.positions.size();
+    // Read before the text is released: the tag lines are views into it, and a saved file that does
+    // not match its state (edited elsewhere) loads as a plain mesh with these tags.
+    const FileTags tags = parse_tag_lines(records.tags, vertices, name);
     std::vector<std::string> warnings;
     if (!records.state.empty()) {
         std::optional<SavedState> saved = parse_state(records.state, name, records.positions.size(), records.polygons.size());
@@ -122,9 +126,8 @@ LoadedMesh read_records(ObjRecords&& records, const std::string& name, const Rea
                                "program: " + reason + "; it is loaded as a plain mesh");
         }
     }
-    const std::size_t vertices = records.positions.size();
     LoadedMesh loaded = validate_mesh(records, name, options);
-    attach_file_tags(parse_tag_lines(records.tags, vertices, name), loaded, name);
+    attach_file_tags(tags, loaded, name);
     loaded.warnings.insert(loaded.warnings.begin(), warnings.begin(), warnings.end());
     options.progress.done();
     return loaded;

@@ -1,8 +1,11 @@
 // Saving never leaves a partial file: failures (file too large / disk full, read-only folder,
 // parent not a folder) keep the old file byte for byte and leave no temporary behind; streamed
-// chunks arrive in order whatever their sizes; names up to the file system's limit save.
+// chunks arrive in order whatever their sizes; names up to the file system's limit save; saves to
+// one hard-linked file at the same time leave one of them whole.
 #include <csignal>
 #include <filesystem>
+#include <latch>
+#include <thread>
 
 #include <sys/resource.h>
 #include <unistd.h>
@@ -164,6 +167,30 @@ TEST_F(AtomicFile, NewFilesGetTheUsualPermissions) {
     write_file_atomically(path("new.obj"), "v 1 2 3\n");
     ::umask(previous);
     EXPECT_EQ(fs::status(path("new.obj")).permissions(), fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
+}
+
+// Two saves through the two names of a hard-linked file (written in place) overlap: each writes
+// the whole file in turn, so it ends as one of them, never a mix or one cut to the other's length.
+// The contents differ in size, so an overlap without a lock shows as a mix or a wrong length.
+TEST_F(AtomicFile, SavesToOneHardLinkedFileAtOnceLeaveOneOfThemWhole) {
+    write_file_atomically(path("a.obj"), "old content\n");
+    fs::create_hard_link(path("a.obj"), path("b.obj"));
+    const std::string longer(3 * AtomicFileWriter::kBufferBytes, 'l'), shorter(AtomicFileWriter::kBufferBytes + 1, 's');
+    for (int round = 0; round < 16; ++round) {
+        std::latch start(2);
+        auto save = [&](const std::string& name, const std::string& content) {
+            start.arrive_and_wait();
+            write_file_atomically(path(name), content);
+        };
+        std::thread other(save, "b.obj", std::cref(shorter));
+        save("a.obj", longer);
+        other.join();
+        const std::string saved = read(path("a.obj"));
+        ASSERT_TRUE(saved == longer || saved == shorter) << "round " << round << ": a file of " << saved.size()
+                                                         << " bytes that is neither save";
+        ASSERT_EQ(fs::hard_link_count(path("a.obj")), 2u);
+    }
+    EXPECT_EQ(entries(), 2u);
 }
 
 }  // namespace

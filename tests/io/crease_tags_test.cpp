@@ -70,6 +70,9 @@ TEST(CreaseTags, MalformedTagLinesAreErrorsNamingTheLine) {
         {"t crease 2/1/0 0 9 10", "vertex index 9 is out of range"},
         {"t corner 1/1/0 -1 10", "vertex index -1 is out of range"},
         {"t crease 2/1/0 0 2", "announces 3 values, the line has 2"},
+        // Counts whose sum wraps around to the number of values on the line.
+        {"t crease 18446744073709551614/1/3 0 1", "announces more than 2 values, the line has 2"},
+        {"t corner 18446744073709551615/1/2 0 1", "announces more than 2 values, the line has 2"},
         {"t crease 2-1-0 0 2 10", "expected the value counts INTS/FLOATS/STRINGS"},
         {"t crease 3/1/0 0 2 4 10", "a crease needs pairs of vertex indices"},
         {"t corner 2/3/0 1 2 10 10 10", "expected one sharpness, or one per vertex (2)"},

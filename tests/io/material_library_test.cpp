@@ -1,9 +1,11 @@
 // Material libraries next to an OBJ file: names, diffuse colours and textures as the .mtl says,
-// paths resolved against the right folder, and every missing piece a warning, never an error.
+// paths resolved against the right folder, and every missing piece a warning, never an error. Each
+// library is read once, and what libraries may cost is capped: one beyond the cap is a warning.
 #include <filesystem>
 
 #include <gtest/gtest.h>
 
+#include "io/materials/material_library.h"
 #include "obj_test_support.h"
 #include "scratch_folder.h"
 
@@ -63,6 +65,49 @@ TEST_F(MaterialLibrary, ALibraryThatIsNotAFileIsNotRead) {
     write("model.obj", std::string("mtllib dir.mtl\n") + kTriangle + "f 1 2 3\n");
     const LoadedMesh mesh = read_obj_file(path("model.obj"));
     EXPECT_TRUE(has_warning(mesh.warnings, "was not read (cannot read the file: it is a directory)"));
+}
+
+// A small OBJ naming one library thousands of times (in several spellings) reads it once.
+TEST_F(MaterialLibrary, ALibraryNamedManyTimesIsReadOnce) {
+    write("materials/paint.mtl", "newmtl Skin\nKd 0.25 0.5 0.75\nnewmtl Plain\nKd 1 0 0\n");
+    std::string obj;
+    for (int i = 0; i < 3000; ++i) obj += i % 2 ? "mtllib materials/paint.mtl\n" : "mtllib ./materials/../materials/paint.mtl\n";
+    write("model.obj", obj + kTriangle + "usemtl Skin\nf 1 2 3\n");
+    const LoadedMesh mesh = read_obj_file(path("model.obj"));
+    ASSERT_EQ(mesh.materials.size(), 2u);
+    EXPECT_EQ(mesh.materials[0].name, "Skin");
+    EXPECT_EQ(mesh.materials[1].name, "Plain");
+    EXPECT_TRUE(mesh.warnings.empty()) << mesh.warnings.front();
+}
+
+// A library larger than the libraries of a mesh may take together (made sparse: no disk space, and
+// removed with the folder) is not read: a warning naming it, and the mesh loads.
+TEST_F(MaterialLibrary, AnOversizedLibraryIsAWarning) {
+    write("small.mtl", "newmtl Skin\nKd 0.25 0.5 0.75\n");
+    write("huge.mtl", "newmtl Huge\nKd 1 0 0\n");
+    fs::resize_file(folder_ / "huge.mtl", kMaxMaterialLibraryBytes + 1);
+    write("model.obj", std::string("mtllib small.mtl huge.mtl\n") + kTriangle + "usemtl Skin\nf 1 2 3\n");
+    const LoadedMesh mesh = read_obj_file(path("model.obj"));
+    EXPECT_EQ(mesh.triangles.size(), 1u);
+    ASSERT_EQ(mesh.materials.size(), 1u);
+    EXPECT_EQ(mesh.materials[0].name, "Skin");
+    EXPECT_TRUE(has_warning(mesh.warnings, "material library '" + path("huge.mtl") + "' was not read (it is " +
+                                               std::to_string(kMaxMaterialLibraryBytes + 1) + " bytes, beyond the 16 MiB"))
+        << mesh.warnings.front();
+}
+
+// Libraries that define more materials together than a mesh may read: the one that passes the
+// cap is not read, with a warning naming it; the ones before it are.
+TEST_F(MaterialLibrary, LibrariesDefiningTooManyMaterialsAreWarnings) {
+    std::string many;
+    for (std::size_t i = 0; i < kMaxLibraryMaterials; ++i) many += "newmtl m" + std::to_string(i) + "\n";
+    write("many.mtl", many);
+    write("one.mtl", "newmtl Skin\nKd 0.25 0.5 0.75\n");
+    write("model.obj", std::string("mtllib many.mtl one.mtl\n") + kTriangle + "usemtl m0\nf 1 2 3\n");
+    const LoadedMesh mesh = read_obj_file(path("model.obj"));
+    EXPECT_EQ(mesh.materials.size(), kMaxLibraryMaterials);
+    EXPECT_TRUE(has_warning(mesh.warnings, "material library '" + path("one.mtl") + "' was not read (it defines 1 material"))
+        << mesh.warnings.front();
 }
 
 }  // namespace

@@ -2,7 +2,7 @@
 // records field by field, and for a bad line the same error (kind, line and message), wherever the
 // blocks are cut. The text mixes everything whose meaning depends on earlier lines: indices (also
 // negative ones), labels set before a block and used in it, colours starting part way, line ends of
-// all three kinds, skipped statements.
+// all three kinds, skipped statements, state and tag lines (every kind of line the parser keeps).
 #include <random>
 #include <string>
 #include <tuple>
@@ -50,7 +50,9 @@ std::string mixed_obj(unsigned seed, std::size_t lines) {
             const char* skipped[] = {"vn 0 0 1", "l 1 2", "p 1", "curv 0 1 1 2", "foo bar", "mtllib a.mtl b.mtl"};
             line = skipped[pick(6)];
         } else if (kind == 12) {
-            line = pick(2) ? "# a comment" : "#rgb not a state " + std::to_string(i);
+            const std::string comments[] = {"# a comment", "#rgb not a state " + std::to_string(i),
+                                            "t crease 2/1/0 0 " + std::to_string(i) + " 10"};
+            line = comments[pick(3)];
         } else {
             line = pick(2) ? "" : "  \t";
         }
@@ -85,11 +87,14 @@ void expect_same_records(const ObjRecords& a, const ObjRecords& b) {
     expect_same_skipped(a.normals, b.normals, "vn");
     expect_same_skipped(a.unsupported, b.unsupported, "unsupported");
     expect_same_skipped(a.unknown, b.unknown, "unknown");
-    ASSERT_EQ(a.state.size(), b.state.size());
-    for (std::size_t i = 0; i < a.state.size(); ++i) {
-        EXPECT_EQ(a.state[i].text, b.state[i].text);
-        EXPECT_EQ(a.state[i].line, b.state[i].line);
+    for (auto lines : {&ObjRecords::state, &ObjRecords::tags}) {
+        ASSERT_EQ((a.*lines).size(), (b.*lines).size());
+        for (std::size_t i = 0; i < (a.*lines).size(); ++i) {
+            EXPECT_EQ((a.*lines)[i].text, (b.*lines)[i].text);
+            EXPECT_EQ((a.*lines)[i].line, (b.*lines)[i].line);
+        }
     }
+    EXPECT_EQ(std::tie(a.v_line_starts, a.f_line_starts, a.last_line), std::tie(b.v_line_starts, b.f_line_starts, b.last_line));
 }
 
 ObjError error_of(const std::string& text, std::size_t blocks) {
@@ -112,6 +117,17 @@ TEST(ObjBlocks, EveryCutGivesTheRecordsOfOnePiece) {
             expect_same_records(parse_obj_in_blocks(text, "blocks.obj", blocks), whole);
         }
     }
+}
+
+// A file large enough for parse_obj to cut it into blocks on its own (4 MiB a block, as many as
+// the cores), and into more blocks than that.
+TEST(ObjBlocks, ALargeFileGivesTheRecordsOfOnePiece) {
+    const std::string text = mixed_obj(21, 600000);
+    ASSERT_GE(text.size(), std::size_t(8) << 20);
+    const ObjRecords whole = parse_obj_in_blocks(text, "large.obj", 1);
+    ASSERT_FALSE(whole.tags.empty());
+    expect_same_records(parse_obj(text, "large.obj"), whole);
+    expect_same_records(parse_obj_in_blocks(text, "large.obj", 16), whole);
 }
 
 TEST(ObjBlocks, LabelsSetBeforeABlockReachItsFaces) {

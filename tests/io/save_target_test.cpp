@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include "io/files/atomic_file.h"
+#include "io/files/save_target.h"
 #include "io/obj/obj_error.h"
 #include "scratch_folder.h"
 
@@ -242,6 +243,16 @@ TEST_F(SaveTarget, FoldersAndEmptyNamesAreRefused) {
     EXPECT_EQ(save_error(""), "cannot save '': the file name is empty");
     EXPECT_TRUE(fs::is_empty(folder_ / "sub"));
     EXPECT_EQ(entries(), 1u);
+}
+
+// What an output's extension selects (glTF binary or JSON, ...) does not depend on its case.
+TEST(SaveExtension, ComparedWithoutRegardToCase) {
+    EXPECT_TRUE(has_extension("out/NAME.GLB", ".glb"));
+    EXPECT_TRUE(has_extension("name.Gltf", ".gltf"));
+    EXPECT_TRUE(has_extension("name.glb", ".glb"));
+    EXPECT_FALSE(has_extension("name.glbx", ".glb"));
+    EXPECT_FALSE(has_extension("glb", ".glb"));
+    EXPECT_FALSE(has_extension("name.glb/", ".glb"));
 }
 
 }  // namespace

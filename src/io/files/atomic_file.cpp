@@ -6,6 +6,7 @@
 #include <utility>
 
 #include <fcntl.h>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -146,8 +147,12 @@ void AtomicFileWriter::overwrite_in_place() {
     if (file < 0) fail(named_, "cannot open it for writing", errno);
     struct Closer {
         int fd;
-        ~Closer() { ::close(fd); }
+        ~Closer() { ::close(fd); }  // also releases the lock
     } closer{file};
+    // Another save in place of this file (through any of its names) waits until this one is done:
+    // two overlapping would leave a mix of both, or one cut to the other's length.
+    while (::flock(file, LOCK_EX) != 0)
+        if (errno != EINTR) fail(named_, "cannot lock it for writing", errno);
     struct stat now {};
     if (::fstat(file, &now) != 0 || now.st_dev != before.st_dev || now.st_ino != before.st_ino)
         throw SaveError("cannot save " + named_ + ": the file was replaced by another program while saving; nothing written");

@@ -19,7 +19,8 @@
 // so a full disk or a size limit is reported before the file is touched; the file is overwritten,
 // truncated and fsynced with SIGINT, SIGTERM and SIGHUP held back. That phase is not atomic against
 // a crash or an I/O error: if a write fails there, the temporary file is kept and the error names it,
-// as it then holds the only complete copy.
+// as it then holds the only complete copy. That phase holds an exclusive flock on the file, so two
+// saves in place at the same time take turns and the file ends as one of them, whole.
 #include <cstddef>
 #include <memory>
 #include <string>

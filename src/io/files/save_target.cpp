@@ -1,8 +1,11 @@
 #include "io/files/save_target.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <vector>
 
 #include <fcntl.h>
@@ -11,6 +14,12 @@
 #include "io/obj/obj_error.h"
 
 namespace rgbio {
+
+bool has_extension(const std::string& path, std::string_view extension) {
+    const std::string actual = std::filesystem::path(path).extension().string();
+    return std::equal(actual.begin(), actual.end(), extension.begin(), extension.end(),
+                      [](unsigned char a, unsigned char b) { return std::tolower(a) == std::tolower(b); });
+}
 namespace {
 
 constexpr int kMaxLinkHops = 40;  // as the kernel's own limit on nested symbolic links

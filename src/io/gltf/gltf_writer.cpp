@@ -12,6 +12,7 @@
 #include <tiny_gltf.h>
 
 #include "io/files/atomic_file.h"
+#include "io/files/save_target.h"
 #include "io/obj/obj_error.h"
 
 namespace rgbio {
@@ -232,7 +233,7 @@ std::string format_gltf(const GltfMesh& mesh, GltfContainer container, const std
 }
 
 void save_gltf(const GltfMesh& mesh, const std::string& path) {
-    const bool binary = fs::path(path).extension() == ".glb";
+    const bool binary = has_extension(path, ".glb");
     const fs::path folder = fs::path(path).parent_path();
     write_file_atomically(path, format_gltf(mesh, binary ? GltfContainer::Binary : GltfContainer::Json,
                                             folder.empty() ? std::string(".") : folder.string()));

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <map>
 #include <set>
-#include <sstream>
+#include <istream>
+#include <streambuf>
+#include <string_view>
 
 #include <tiny_obj_loader.h>
 
@@ -22,21 +24,62 @@ std::string trimmed(const std::string& s) {
     return b == std::string::npos ? std::string() : s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
 }
 
-// Appends the library's materials; false (with a warning) when it cannot be read.
-bool read_library(const fs::path& path, std::vector<Material>& materials, std::vector<std::string>& warnings) {
-    std::string text;
-    try {
-        text = read_text_file(path.string());
-    } catch (const ObjError& e) {
-        warnings.push_back("material library " + quoted_file_text(path.string(), 200) + " was not read (" + e.reason() +
+// An input stream over text in memory, for tinyobjloader, without the copy std::istringstream makes.
+class TextStreamBuffer : public std::streambuf {
+public:
+    explicit TextStreamBuffer(std::string_view text) {
+        // Only the get area is set: nothing is ever written through the pointer.
+        char* begin = const_cast<char*>(text.data());
+        setg(begin, begin, begin + text.size());
+    }
+};
+
+// What the libraries read so far have cost (kMaxMaterialLibraryBytes, kMaxLibraryMaterials).
+struct LibraryCost {
+    std::uintmax_t bytes = 0;
+    std::size_t materials = 0;
+};
+
+// An upper bound of the materials a library defines, counted before tinyobjloader makes them.
+std::size_t announced_materials(std::string_view text) {
+    std::size_t count = 0;
+    for (std::size_t at = text.find("newmtl"); at != std::string_view::npos; at = text.find("newmtl", at + 1)) ++count;
+    return count;
+}
+
+// Appends the library's materials; false (with a warning) when it cannot be read or would take the
+// libraries beyond what they may cost.
+bool read_library(const fs::path& path, LibraryCost& cost, std::vector<Material>& materials, std::vector<std::string>& warnings) {
+    auto not_read = [&](const std::string& why) {
+        warnings.push_back("material library " + quoted_file_text(path.string(), 200) + " was not read (" + why +
                            "); faces keep their material names");
         return false;
+    };
+    // Its size first, before any of it is read.
+    std::error_code error;
+    const std::uintmax_t bytes = fs::file_size(path, error);
+    if (!error && cost.bytes + bytes > kMaxMaterialLibraryBytes)
+        return not_read("it is " + std::to_string(bytes) + " bytes, beyond the " + std::to_string(kMaxMaterialLibraryBytes >> 20) +
+                        " MiB that the material libraries of a mesh may take together");
+    FileText text;
+    try {
+        text = read_file_text(path.string());
+        text.check_not_shrunk();
+    } catch (const ObjError& e) {
+        return not_read(e.reason());
     }
-    std::istringstream in(text);
+    const std::size_t defined = announced_materials(text.view());
+    if (cost.materials + defined > kMaxLibraryMaterials)
+        return not_read("it defines " + std::to_string(defined) + " materials, beyond the " + std::to_string(kMaxLibraryMaterials) +
+                        " that the material libraries of a mesh may define together");
+    cost.bytes += text.view().size();
+    cost.materials += defined;
+    TextStreamBuffer buffer(text.view());
+    std::istream in(&buffer);
     std::map<std::string, int> by_name;
     std::vector<tinyobj::material_t> read;
-    std::string warning, error;
-    tinyobj::LoadMtl(&by_name, &read, &in, &warning, &error);
+    std::string warning, parse_error;
+    tinyobj::LoadMtl(&by_name, &read, &in, &warning, &parse_error);
     for (const tinyobj::material_t& m : read) {
         Material material;
         material.name = trimmed(m.name);
@@ -87,7 +130,15 @@ std::vector<Material> read_material_libraries(const std::vector<std::string>& li
                                               const FaceLabels& face_materials, std::vector<std::string>& warnings) {
     std::vector<Material> materials;
     bool all_read = true;
-    for (const std::string& library : libraries) all_read = read_library(resolve_file_reference(library, obj_folder), materials, warnings) && all_read;
+    LibraryCost cost;
+    std::set<fs::path> seen;  // canonical paths: a library named again (in any spelling) is read once
+    for (const std::string& library : libraries) {
+        const fs::path path = resolve_file_reference(library, obj_folder);
+        std::error_code error;
+        const fs::path canonical = fs::weakly_canonical(path, error);
+        if (!seen.insert(error ? path : canonical).second) continue;
+        all_read = read_library(path, cost, materials, warnings) && all_read;
+    }
     warn_about_missing_textures(materials, warnings);
     // An unread library was reported already; without any library, names are all a file has.
     if (all_read && !libraries.empty()) warn_about_undefined_materials(materials, face_materials, warnings);

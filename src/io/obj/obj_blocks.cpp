@@ -104,6 +104,7 @@ void append_records(ObjRecords& into, const ObjRecords& block) {
                              append(into.state, block.state);
                          });
     append(into.texcoords, block.texcoords);
+    append(into.tags, block.tags);
     join_skipped(into.texcoord_w, block.texcoord_w);
     append(into.material_libraries, block.material_libraries);
     into.line_elements += block.line_elements;

@@ -9,6 +9,7 @@ namespace rgbio {
 namespace {
 
 constexpr std::string_view kHeaderStart = "# rgbsub mesh: ";
+constexpr std::string_view kTagLinesStart = "; ", kTagLinesEnd = " tag lines (t)";
 
 // Reads "NUMBER<suffix>" off the front of text.
 bool read_count(std::string_view& text, std::string_view suffix, std::size_t& count) {
@@ -47,12 +48,23 @@ ObjError truncated(const SavedFileHeader& header, std::size_t vertices, std::siz
 
 }  // namespace
 
+std::string tag_lines_note(std::size_t count) {
+    return count == 0 ? std::string() : std::string(kTagLinesStart) + std::to_string(count) + std::string(kTagLinesEnd);
+}
+
 std::optional<SavedFileHeader> read_saved_file_header(std::string_view text) {
     if (!text.starts_with(kHeaderStart)) return std::nullopt;
     text.remove_prefix(kHeaderStart.size());
     SavedFileHeader header;
     if (!read_count(text, " vertices, ", header.vertices) || !read_count(text, " triangles", header.triangles)) return std::nullopt;
-    header.state = text.substr(0, text.find_first_of("\r\n")).find(kSavedStateNote) != std::string_view::npos;
+    const std::string_view rest = text.substr(0, text.find_first_of("\r\n"));
+    header.state = rest.find(kSavedStateNote) != std::string_view::npos;
+    const std::size_t tag_lines_end = rest.find(kTagLinesEnd);
+    const std::size_t tag_lines_start = rest.substr(0, tag_lines_end).rfind(kTagLinesStart);
+    if (tag_lines_end != std::string_view::npos && tag_lines_start != std::string_view::npos) {
+        std::string_view count = rest.substr(tag_lines_start + kTagLinesStart.size());
+        if (!read_count(count, kTagLinesEnd, header.tag_lines)) header.tag_lines = 0;
+    }
     return header;
 }
 
@@ -62,10 +74,13 @@ void check_saved_file_complete(const SavedFileHeader& header, const ObjRecords& 
     // The state's end line marks a complete file; without state, the newline after the last face.
     const bool state_cut = (header.state && records.state.empty()) || (!records.state.empty() && records.state.back().text != "end");
     const bool last_line_cut = records.state.empty() && ends_mid_line(text);
-    if (vertices >= header.vertices && faces >= header.triangles && !state_cut && !last_line_cut) return;
+    const bool tags_cut = records.tags.size() < header.tag_lines;
+    if (vertices >= header.vertices && faces >= header.triangles && !state_cut && !last_line_cut && !tags_cut) return;
     throw truncated(header, vertices, faces, count_body(text).last_line, file,
                     state_cut       ? "; its adaptive state (#rgb lines) is missing or stops before its end line"
                     : last_line_cut ? ", and its last line stops without a newline"
+                    : tags_cut      ? "; it announces " + std::to_string(header.tag_lines) + " tag lines (t) and holds " +
+                                     std::to_string(records.tags.size())
                                     : "");
 }
 

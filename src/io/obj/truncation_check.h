@@ -1,7 +1,8 @@
 #pragma once
 // Files rgbsub saves start with "# rgbsub mesh: N vertices, M triangles" (mesh_file.cpp), followed
-// on that line by kSavedStateNote when #rgb state lines end the file, end every line with a
-// newline, and end their state with "#rgb end". A file with that header that breaks
+// on that line by a count of their t lines when they have any (tag_lines_note) and by
+// kSavedStateNote when #rgb state lines end the file, end every line with a newline, and end their
+// state with "#rgb end". A file with that header that breaks
 // those promises was cut short (an interrupted save or copy), and saying so names the real cause
 // better than whatever the cut-off content looks like (a bow-tie, an out-of-range value...).
 #include <cstddef>
@@ -18,15 +19,20 @@ inline constexpr std::string_view kSavedStateNote = "; adaptive state: #rgb line
 
 struct SavedFileHeader {
     std::size_t vertices = 0, triangles = 0;
-    bool state = false;  // the header announces #rgb state lines
+    std::size_t tag_lines = 0;  // t lines (crease_tags.h) announced: a file cut just before them looks whole otherwise
+    bool state = false;         // the header announces #rgb state lines
 };
+
+// What the header says of `count` t lines: "; N tag lines (t)", nothing for none (so that files
+// without tags stay as they were).
+std::string tag_lines_note(std::size_t count);
 
 // The header on the first line, if the text has one.
 std::optional<SavedFileHeader> read_saved_file_header(std::string_view text);
 
-// Throws ObjError(Truncated) when the parsed file holds fewer vertices or faces than its header
-// announces, its announced state is missing or lacks its end line, or (without state) its last
-// line lacks its newline.
+// Throws ObjError(Truncated) when the parsed file holds fewer vertices, faces or t lines than its
+// header announces, its announced state is missing or lacks its end line, or (without state) its
+// last line lacks its newline.
 void check_saved_file_complete(const SavedFileHeader& header, const ObjRecords& records, std::string_view text,
                                const std::string& file);
 

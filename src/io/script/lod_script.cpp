@@ -4,6 +4,8 @@
 #include <cmath>
 #include <sstream>
 
+#include <glm/geometric.hpp>
+
 #include "io/files/file_text.h"
 #include "io/obj/number_format.h"
 #include "io/obj/obj_error.h"
@@ -111,7 +113,10 @@ DabEdit dab_edit(const LineReader& r) {
     DabEdit dab{r.point(1, "a dab coordinate"), std::nullopt};
     if (r.size() == 7) {
         dab.view = r.point(4, "a view direction component");
-        if (!(dab.view->x != 0.0 || dab.view->y != 0.0 || dab.view->z != 0.0)) r.fail("the view direction must not be zero");
+        // A length that underflows to 0 or a subnormal (0 0 -1e-300), or overflows, gives no direction to paint along.
+        if (!std::isnormal(glm::length(*dab.view)))
+            r.fail("the view direction must not be zero: its length must be a normal positive double (not 0, subnormal or "
+                   "infinite)");
     }
     return dab;
 }

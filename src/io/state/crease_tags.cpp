@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <functional>
+#include <iterator>
 #include <unordered_set>
 
 #include "io/obj/number_format.h"
@@ -73,9 +74,13 @@ FileTags parse_tag_lines(std::span<const ObjStateLine> lines, std::size_t file_v
                 c.remove_prefix(std::min(slash + 1, c.size()));
             }
         }
-        if (w.size() != 2 + counts[0] + counts[1] + counts[2])
-            fail(shown(w[1]) + " announces " + std::to_string(counts[0] + counts[1] + counts[2]) + " values, the line has " +
-                 std::to_string(w.size() - 2));
+        const std::size_t values = w.size() - 2;
+        // Each count is checked on its own first: crafted counts can wrap their sum around to `values`.
+        const bool each_fits = std::all_of(std::begin(counts), std::end(counts), [&](std::size_t c) { return c <= values; });
+        if (!each_fits || counts[0] + counts[1] + counts[2] != values)
+            fail(shown(w[1]) + " announces " +
+                 (each_fits ? std::to_string(counts[0] + counts[1] + counts[2]) : "more than " + std::to_string(values)) +
+                 " values, the line has " + std::to_string(values));
         const bool crease = name == "crease", corner = name == "corner";
         if (name == "interpolateboundary") {
             int k = -1;

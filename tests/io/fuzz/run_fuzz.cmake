@@ -1,5 +1,7 @@
 # cmake -DSOURCE=... -DBINARY=... -DGENERATOR=... -DMAKE_PROGRAM=... -DSECONDS=... -P run_fuzz.cmake
-# Builds the fuzz project with clang and runs it for SECONDS, seeded with small OBJ files.
+# Builds the fuzz project with clang and runs it for SECONDS, seeded with the small OBJ files of
+# seeds/ (plain ones, and saved files with tags, UVs, colours and labels made with the rgbsub binary)
+# and libFuzzer's random seed.
 # GENERATOR and MAKE_PROGRAM are the outer build's (CMAKE_GENERATOR, CMAKE_MAKE_PROGRAM).
 foreach(required SOURCE BINARY GENERATOR MAKE_PROGRAM SECONDS)
   if(NOT DEFINED ${required})
