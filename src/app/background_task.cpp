@@ -99,8 +99,11 @@ std::unique_ptr<BackgroundTask> BackgroundTask::remesh(std::shared_ptr<const rgb
             loaded.geometry.rebuild(loaded.mesh);
             loaded.index.rebuild(loaded.mesh, loaded.geometry);
             const rgbdetail::RemeshReport& report = remeshed.report;
-            shared->summary = "a cage of " + std::to_string(report.cage_triangles) + " triangles with the detail of " + path + " to level " +
-                              std::to_string(report.detail_level) + " (" + std::to_string(report.detail_points) + " points, " +
+            const std::string levels = report.finest_detail_level > report.detail_level
+                                           ? "levels " + std::to_string(report.detail_level) + ".." + std::to_string(report.finest_detail_level)
+                                           : "level " + std::to_string(report.detail_level);
+            shared->summary = "a cage of " + std::to_string(report.cage_triangles) + " triangles with the detail of " + path + " to " +
+                              levels + " (" + std::to_string(report.detail_points) + " points, " +
                               std::to_string(report.nearest_points) + " nearest instead of a ray hit)";
             shared->document.emplace(std::move(loaded));
         } catch (const rgbdetail::Stopped&) {

@@ -48,8 +48,14 @@ void print_detail(std::ostream& out, const rgb::BaseMesh& base) {
     if (!detail) return;
     const rgb::DetailOrigin& origin = detail->origin();
     out << "detail: from " << (origin.source.empty() ? std::string("an unnamed surface") : origin.source) << " ("
-        << origin.source_triangles << " triangles), stored to level " << detail->level() << " ("
-        << rgb::DetailPositions::grid_points(base, detail->level()).size() << " points; finer levels interpolate it)\n";
+        << origin.source_triangles << " triangles), stored to level";
+    if (detail->coarsest_level() == detail->finest_level())
+        out << ' ' << detail->finest_level();
+    else
+        out << "s " << detail->coarsest_level() << ".." << detail->finest_level()
+            << " (each base face its own, each base edge its coarser face's)";
+    out << ", " << rgb::DetailPositions::num_points(base, detail->face_levels())
+        << " points; finer levels interpolate them linearly (inside a face its grid triangle, on a base edge its two samples)\n";
     out << "detail points on the nearest point of the surface (no ray hit along the limit normal): " << origin.nearest_points << '\n';
 }
 

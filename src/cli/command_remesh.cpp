@@ -9,6 +9,7 @@
 #include "cli/mesh_io_support.h"
 #include "cli/progress.h"
 #include "detail/remesh.h"
+#include "io/files/save_target.h"
 #include "io/mesh_file.h"
 #include "io/script/triangle_limit.h"
 #include "rgb/mesh/mesh.h"
@@ -62,14 +63,14 @@ int run_remesh(std::span<const std::string> args) {
                      "normal meets IN, else IN's nearest point. OUT.obj is the cage with its detail; refine, apply,\n"
                      "render, info and the editor work on it like on any saved file, without IN.\n"
                   << kStrictHelp
-                  << "  --sharp-angle DEG   tag the cage's edges sharper than DEG as creases (after the fit, which\n"
-                     "                      is smooth Loop's)\n";
+                  << "  --sharp-angle DEG   tag the cage's edges sharper than DEG as creases before the fit, which\n"
+                     "                      then places the creased limit surface; OUT.obj keeps the tags\n";
         return exit_ok;
     }
     if (arguments.positional().size() != 1) throw UsageError("expects exactly one IN.obj");
     const std::optional<std::string> output = arguments.value("--output");
     if (!output) throw UsageError("needs -o OUT.obj");
-    if (!output->ends_with(".obj") && !output->ends_with(".OBJ")) throw UsageError("writes an OBJ (OUT.obj): the detail lives in its state");
+    if (!rgbio::has_extension(*output, ".obj")) throw UsageError("writes an OBJ (OUT.obj): the detail lives in its state");
     const bool given_cage = arguments.has("--cage");
     if (!given_cage && !arguments.has("--cage-triangles")) throw UsageError("needs --cage-triangles N (or --cage CAGE.obj)");
     const auto limit = static_cast<std::size_t>(
@@ -87,6 +88,9 @@ int run_remesh(std::span<const std::string> args) {
     const rgbio::LoadedAsset asset = load_input("remesh", input, arguments);
     warn_dropped(input, asset);
     const PlainMesh dense = displayed_mesh(asset.mesh);
+    // load_input has checked the angle's range. The cage is tagged, and fitted with the tags, inside
+    // remesh: the cage it makes exists only there.
+    if (arguments.has(kSharpAngleOption)) options.sharp_angle = arguments.number(kSharpAngleOption, 0.0);
     if (given_cage) {
         const rgbio::LoadedAsset cage = load_input("remesh", *arguments.value("--cage"), arguments);
         PlainMesh plain = displayed_mesh(cage.mesh);
@@ -106,13 +110,15 @@ int run_remesh(std::span<const std::string> args) {
             throw std::invalid_argument(input + ": " + e.what());
         }
     }
-    rgb::Mesh mesh(remeshed.base);
-    mesh = with_sharp_options(arguments, std::move(mesh));
+    const rgb::Mesh mesh(remeshed.base);
     const rgbdetail::RemeshReport& r = remeshed.report;
     std::cout << "rgbsub remesh: cage of " << r.cage_triangles << " triangles, fitted: distance to the mesh rms " << r.fit_before.rms
               << " -> " << r.fit_after.rms << ", max " << r.fit_before.max << " -> " << r.fit_after.max << '\n'
-              << "rgbsub remesh: detail to level " << r.detail_level << ", " << r.detail_points << " points, " << r.nearest_points
-              << " on the nearest point (no ray hit within " << r.search_distance << ")\n";
+              << "rgbsub remesh: detail to level " << r.detail_level;
+    if (r.finest_detail_level > r.detail_level) std::cout << ".." << r.finest_detail_level << " (each cage face as dense as the mesh over it)";
+    std::cout << ", " << r.detail_points << " points, ";
+    if (r.feature_points > 0) std::cout << r.feature_points << " on the mesh's sharp features, ";
+    std::cout << r.nearest_points << " on the nearest point (no ray hit within " << r.search_distance << ")\n";
     if (arguments.has("--timings"))
         std::cout << "rgbsub remesh: seconds: cage " << r.seconds_cage << ", fit " << r.seconds_fit << ", detail " << r.seconds_detail << '\n';
     rgbio::SaveOptions save;

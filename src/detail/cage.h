@@ -1,8 +1,9 @@
 #pragma once
 // The cage of a dense mesh: a coarse manifold triangle mesh with the dense mesh's topology (as its
 // indices give it: vertices that merely share a position stay apart), for `rgbsub remesh` (issue 28)
-// to subdivide and fit. The simplification is OpenMesh's Decimater (quadric error), whose collapse
-// test (TriConnectivity::is_collapse_ok: the link condition, no interior edge between two boundary
+// to subdivide and fit. The simplification is OpenMesh's decimation (its quadric error and normal
+// flip modules and its collapse, in a faster loop of ours: cage.cpp), whose collapse test
+// (TriConnectivity::is_collapse_ok: the link condition, no interior edge between two boundary
 // vertices) keeps the surface manifold and its Euler characteristic and boundary loops; a guard
 // module of ours also refuses ears and keeps each boundary loop long enough for the smallest cage,
 // and every cage is checked (manifold, topology) before it is returned.
@@ -11,6 +12,7 @@
 //
 // Plain data in and out: positions and rgb::Triangle index triples, counter-clockwise outside. The
 // topology it keeps, and the smallest cage of each, are mesh_topology.h's.
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -20,7 +22,9 @@
 
 #include <glm/vec3.hpp>
 
+#include "detail/dense_features.h"
 #include "detail/mesh_topology.h"
+#include "detail/progress.h"
 #include "rgb/mesh/base_mesh.h"
 
 namespace rgbdetail {
@@ -35,6 +39,14 @@ struct CageOptions {
     // components to give up the excess, or refuses the target).
     std::size_t max_flips = 20000;
     std::uint32_t seed = 1;
+    // The dense mesh's sharp features to keep (dense_features.h), or none: a feature vertex is only
+    // collapsed along a feature edge into its neighbour on the chain, never so that a feature edge
+    // merges away, and the chains' anchors stay; so every feature chain of M is a chain of the cage's
+    // edges between kept vertices, and no flip crosses one.
+    const FeatureGraph* features = nullptr;
+    // Told the share of the decimation done, many times while it runs (the faces removed, of those to
+    // remove); returning false stops make_cage, which then throws Stopped.
+    ProgressFunction progress;
 };
 
 struct Cage {
@@ -42,6 +54,8 @@ struct Cage {
     std::vector<rgb::Triangle> triangles;
     // For each cage vertex, the input vertex it is (collapses keep original vertices and positions).
     std::vector<std::uint32_t> source_vertex;
+    // The cage edges (a < b) that stand for chains of CageOptions::features, ascending.
+    std::vector<std::array<std::uint32_t, 2>> feature_edges;
     // Edge flips made where the collapses stalled above a component's share (0 but near the
     // smallest counts).
     std::size_t flips = 0;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <Eigen/SparseCholesky>
 
@@ -17,19 +18,37 @@ namespace fit_internal {
 
 using DenseXYZ = Eigen::Matrix<double, Eigen::Dynamic, 3>;
 
-// The umbrella Laplacian of the control net (cage_fit.h): interior rows v - mean(ring), boundary rows
-// v - mean(two boundary neighbours).
+// The umbrella Laplacian of the control net (cage_fit.h), row v: v - mean(the neighbours that shape
+// the surface at v). Those are v's whole ring where the surface is smooth (smooth and dart vertices),
+// only its two crease neighbours at a crease vertex (a boundary vertex is one, with its boundary
+// neighbours), and none at a corner, whose row is empty. Smoothing a crease vertex over its whole
+// ring would pull it off the crease towards the faces on either side and round the sharp edge the
+// tags keep; a corner is the end of several creases, so no mean of neighbours is a shape it should
+// tend to, and the samples alone place it.
 StencilMatrix umbrella_laplacian(const LoopTopology& topology) {
-    return ring_mask_matrix(topology, [](bool boundary, int valence) {
-        return RingMask{1.0, boundary ? -0.5 : -1.0 / static_cast<double>(valence)};
-    });
+    const std::size_t n = topology.num_vertices();
+    std::vector<Eigen::Triplet<double>> entries;
+    entries.reserve(8 * n);
+    for (std::uint32_t v = 0; v < n; ++v) {
+        const rgb::VertexRule rule = topology.rule(v);
+        if (rule == rgb::VertexRule::Corner) continue;
+        const bool along_creases = rule == rgb::VertexRule::Crease;
+        const std::vector<std::uint32_t> creases = along_creases ? topology.sharp_neighbours(v) : std::vector<std::uint32_t>{};
+        const std::span<const std::uint32_t> neighbours = along_creases ? std::span<const std::uint32_t>(creases) : topology.ring(v);
+        const auto row = static_cast<Eigen::Index>(v);
+        entries.emplace_back(row, v, 1.0);
+        for (std::uint32_t w : neighbours) entries.emplace_back(row, w, -1.0 / static_cast<double>(neighbours.size()));
+    }
+    StencilMatrix lap(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+    lap.setFromTriplets(entries.begin(), entries.end());
+    return lap;
 }
 
 }  // namespace fit_internal
 }  // namespace
 
 FitResult fit_cage(const std::vector<glm::dvec3>& cage_positions, const std::vector<rgb::Triangle>& cage_triangles,
-                   const TargetFunction& closest_on_m, const FitOptions& options) {
+                   const rgb::SharpFeatures& cage_features, const TargetFunction& closest_on_m, const FitOptions& options) {
     if (options.iterations < 0) throw std::invalid_argument("fit_cage: iterations must be >= 0");
     if (options.sample_level < 0 || options.sample_level > 4)
         throw std::invalid_argument("fit_cage: sample_level must be in 0-4");
@@ -38,8 +57,9 @@ FitResult fit_cage(const std::vector<glm::dvec3>& cage_positions, const std::vec
     if (!closest_on_m) throw std::invalid_argument("fit_cage: no closest-point function");
 
     const std::size_t n = cage_positions.size();
-    const LoopTopology topology(n, cage_triangles);
-    const LoopStencils stencils = limit_stencils(n, cage_triangles, options.sample_level);
+    const LoopTopology topology(n, cage_triangles, cage_features);
+    const LoopStencils stencils = limit_stencils(n, cage_triangles, cage_features, options.sample_level);
+    report_share(options.progress, 0.0);  // the stencils and the factorization take a fraction of a second each
     // Column-major copies for the products A^T x (a row-major A would be transposed on the fly).
     const Eigen::SparseMatrix<double> a = stencils.limit;
     const Eigen::SparseMatrix<double> lap = fit_internal::umbrella_laplacian(topology);
@@ -51,6 +71,7 @@ FitResult fit_cage(const std::vector<glm::dvec3>& cage_positions, const std::vec
     Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(normal);
     if (solver.info() != Eigen::Success)
         throw std::runtime_error("fit_cage: the normal equations could not be factored (lambda 0 on a cage the samples do not determine?)");
+    report_share(options.progress, 0.0);
 
     fit_internal::DenseXYZ p(static_cast<Eigen::Index>(n), 3);
     for (std::size_t i = 0; i < n; ++i)
@@ -73,10 +94,17 @@ FitResult fit_cage(const std::vector<glm::dvec3>& cage_positions, const std::vec
                 squared[i] = d.x * d.x + d.y * d.y + d.z * d.z;
             }
         };
-        if (options.parallel_targets)
-            rgb::parallel_for(m, 256, find);
-        else
-            find(0, m);
+        // The passes share the fit's progress; a chunk of 8192 closest points takes a few tens of
+        // milliseconds.
+        const ProgressFunction pass_progress =
+            part_of(options.progress, static_cast<double>(iteration) / (options.iterations + 1),
+                    static_cast<double>(iteration + 1) / (options.iterations + 1));
+        in_chunks(m, 8192, pass_progress, [&](std::size_t begin, std::size_t end) {
+            if (options.parallel_targets)
+                rgb::parallel_for(end - begin, 256, [&](std::size_t b, std::size_t e) { find(begin + b, begin + e); });
+            else
+                find(begin, end);
+        });
         FitDistances distances;
         double sum = 0.0;
         for (double s : squared) {

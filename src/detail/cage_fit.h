@@ -9,7 +9,8 @@
 // per coordinate, where A is the samples' limit stencil (rows(A) samples over cols(A) control points),
 // T the closest points, and Lap the umbrella Laplacian of the control net (interior vertex: itself
 // minus the mean of its ring; boundary vertex: itself minus the mean of its two boundary neighbours,
-// so that the boundary curve is smoothed along itself and not pulled inward). The smoothing choice:
+// so that the boundary curve is smoothed along itself and not pulled inward; crease vertices like
+// boundary ones along their crease; no row for corners). The smoothing choice:
 // both terms are squared lengths, so lambda is dimensionless and needs no scale of M; the factor
 // rows/cols makes it the ratio of the mean squared Laplacian per control point to the mean squared
 // residual per sample, so the same lambda means the same trade-off at every sample level and cage
@@ -23,8 +24,10 @@
 // normal matrix A^T A + lambda_eff Lap^T Lap is factored once (Eigen's SimplicialLDLT) and each
 // iteration is one closest-point pass and three back-substitutions.
 //
-// Smooth Loop with boundaries only: sharp features tagged as creases (rgb/rules/sharp_features.h) are
-// not handled by the stencils yet.
+// The cage's sharp features (rgb/rules/sharp_features.h) are part of its surface: the stencils follow
+// the core's crease and corner rules (loop_stencils.h), so the fit places a tagged cage's limit
+// surface, sharp edges included, and the Laplacian smooths a crease vertex only along its crease and
+// a corner not at all (umbrella_laplacian in cage_fit.cpp says why).
 #include <cstddef>
 #include <functional>
 #include <span>
@@ -32,6 +35,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "detail/progress.h"
 #include "rgb/mesh/base_mesh.h"
 
 namespace rgbdetail {
@@ -49,6 +53,9 @@ struct FitOptions {
     double lambda = 1e-3;
     // Whether closest_on_m may be called concurrently (rgb::parallel_for over the samples).
     bool parallel_targets = false;
+    // Told the share of the fit done, many times while it runs (between chunks of closest points);
+    // returning false stops fit_cage, which then throws Stopped.
+    ProgressFunction progress;
 };
 
 // The samples' distances to their closest points on M.
@@ -64,9 +71,10 @@ struct FitResult {
     std::size_t samples = 0;
 };
 
-// Throws std::invalid_argument when the cage is not an oriented manifold with every vertex used
-// (loop_stencils.h), when the positions do not match it, or when an option is out of range.
+// Throws std::invalid_argument when the cage is not an oriented manifold with every vertex used or
+// its features name missing edges or vertices (loop_stencils.h), when the positions do not match it,
+// or when an option is out of range.
 FitResult fit_cage(const std::vector<glm::dvec3>& cage_positions, const std::vector<rgb::Triangle>& cage_triangles,
-                   const TargetFunction& closest_on_m, const FitOptions& options = {});
+                   const rgb::SharpFeatures& cage_features, const TargetFunction& closest_on_m, const FitOptions& options = {});
 
 }  // namespace rgbdetail

@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <limits>
 #include <numeric>
+#include <optional>
 #include <stdexcept>
 #include <unordered_map>
 #include <unordered_set>
+#include <utility>
 
 #include <glm/geometric.hpp>
 
@@ -35,27 +37,51 @@ struct CageUnionFind {
     }
 };
 
-std::uint64_t cage_edge_key(std::uint32_t a, std::uint32_t b) {
-    return (static_cast<std::uint64_t>(a) << 32) | b;
-}
+// The halfedges leaving each vertex (halfedge 3f+i runs from corner i to corner i+1 of face f), each
+// vertex's sorted by end vertex, then index, so that a directed edge is a binary search in a few
+// entries. Built by counting, then sorting each vertex's few: on the 940,544-triangle bunny the
+// std::unordered_map it replaces took 30% of make_cage (perf, 2026-12-05).
+class HalfedgeTable {
+public:
+    HalfedgeTable(std::size_t vertex_count, std::span<const rgb::Triangle> triangles)
+        : triangles_(triangles), first_(vertex_count + 1, 0), halfedges_(3 * triangles.size()) {
+        for (const rgb::Triangle& t : triangles)
+            for (std::uint32_t v : t) ++first_[v + 1];
+        std::partial_sum(first_.begin(), first_.end(), first_.begin());
+        std::vector<std::uint32_t> next(first_.begin(), first_.end() - 1);
+        for (std::uint32_t h = 0; h < halfedges_.size(); ++h) halfedges_[next[start(h)]++] = h;
+        for (std::size_t v = 0; v < vertex_count; ++v)
+            std::sort(halfedges_.begin() + first_[v], halfedges_.begin() + first_[v + 1],
+                      [&](std::uint32_t g, std::uint32_t h) { return std::pair(end(g), g) < std::pair(end(h), h); });
+    }
 
-// Directed edge (a -> b) -> halfedge 3f+i (from corner i to corner i+1 of face f). Assumes each
-// directed edge once (checked by manifold_problem).
-using HalfedgeTable = std::unordered_map<std::uint64_t, std::uint32_t>;
+    // The first halfedge a -> b by index, or none.
+    std::optional<std::uint32_t> find(std::uint32_t a, std::uint32_t b) const {
+        const auto begin = halfedges_.begin() + first_[a], last = halfedges_.begin() + first_[a + 1];
+        const auto it = std::lower_bound(begin, last, b, [&](std::uint32_t h, std::uint32_t v) { return end(h) < v; });
+        if (it == last || end(*it) != b) return std::nullopt;
+        return *it;
+    }
 
-HalfedgeTable halfedge_table(std::span<const rgb::Triangle> triangles) {
-    HalfedgeTable table;
-    table.reserve(triangles.size() * 3);
-    for (std::uint32_t f = 0; f < triangles.size(); ++f)
-        for (std::uint32_t i = 0; i < 3; ++i)
-            table.emplace(cage_edge_key(triangles[f][i], triangles[f][(i + 1) % 3]), 3 * f + i);
-    return table;
-}
+    // The first halfedge by index whose directed edge an earlier one has, with the earliest of those.
+    std::optional<std::pair<std::uint32_t, std::uint32_t>> first_repeat() const {
+        std::optional<std::pair<std::uint32_t, std::uint32_t>> repeat;
+        for (std::size_t k = 1; k < halfedges_.size(); ++k) {
+            const std::uint32_t g = halfedges_[k - 1], h = halfedges_[k];
+            if (start(g) != start(h) || end(g) != end(h) || (repeat && repeat->first < h)) continue;
+            repeat = std::pair(h, *find(start(h), end(h)));
+        }
+        return repeat;
+    }
 
+    std::uint32_t start(std::uint32_t h) const { return triangles_[h / 3][h % 3]; }
+    std::uint32_t end(std::uint32_t h) const { return triangles_[h / 3][(h % 3 + 1) % 3]; }
 
-
-
-
+private:
+    std::span<const rgb::Triangle> triangles_;
+    std::vector<std::uint32_t> first_;      // vertex v's halfedges: halfedges_[first_[v], first_[v + 1])
+    std::vector<std::uint32_t> halfedges_;
+};
 
 // ---------------------------------------------------------------------------------------------
 // Smallest triangulations
@@ -100,7 +126,7 @@ std::vector<ComponentPart> split_components(std::span<const glm::dvec3> position
         parts[part_of_root[root]].faces.push_back(f);
     }
 
-    const HalfedgeTable table = halfedge_table(triangles);
+    const HalfedgeTable table(positions.size(), triangles);
     std::vector<std::uint8_t> seen_vertex(positions.size(), 0);
     // The boundary halfedge leaving each boundary vertex (one per vertex in a manifold).
     std::unordered_map<std::uint32_t, std::uint32_t> boundary_next;
@@ -118,7 +144,7 @@ std::vector<ComponentPart> split_components(std::span<const glm::dvec3> position
                     ++top.vertices;
                 }
                 const std::uint32_t a = t[i], b = t[(i + 1) % 3];
-                if (!table.contains(cage_edge_key(b, a))) {
+                if (!table.find(b, a)) {
                     ++boundary_edges;
                     boundary_next.emplace(b, a);  // the boundary runs b -> a, the face on its right
                 }
@@ -163,16 +189,13 @@ std::optional<std::string> manifold_problem(std::size_t vertex_count, std::span<
                 return face_text(f) + " uses vertex " + std::to_string(v) + " of " + std::to_string(vertex_count);
         if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) return face_text(f) + " repeats a corner";
     }
-    HalfedgeTable table;
-    table.reserve(triangles.size() * 3);
-    for (std::uint32_t f = 0; f < triangles.size(); ++f)
-        for (std::uint32_t i = 0; i < 3; ++i) {
-            const std::uint32_t a = triangles[f][i], b = triangles[f][(i + 1) % 3];
-            if (!table.emplace(cage_edge_key(a, b), 3 * f + i).second)
-                return "edge " + std::to_string(a) + "-" + std::to_string(b) + " of " + face_text(f) +
-                       " runs the same way as in " + face_text(table.at(cage_edge_key(a, b)) / 3) +
-                       " (the faces are not consistently oriented, or the edge has more than two faces)";
-        }
+    const HalfedgeTable table(vertex_count, triangles);
+    if (const auto repeat = table.first_repeat()) {
+        const auto [h, first] = *repeat;
+        return "edge " + std::to_string(table.start(h)) + "-" + std::to_string(table.end(h)) + " of " + face_text(h / 3) +
+               " runs the same way as in " + face_text(first / 3) +
+               " (the faces are not consistently oriented, or the edge has more than two faces)";
+    }
     std::vector<std::array<std::uint32_t, 3>> sorted(triangles.size());
     std::vector<std::uint32_t> order(triangles.size());
     for (std::uint32_t f = 0; f < triangles.size(); ++f) {
@@ -190,9 +213,9 @@ std::optional<std::string> manifold_problem(std::size_t vertex_count, std::span<
     for (std::uint32_t f = 0; f < triangles.size(); ++f)
         for (std::uint32_t i = 0; i < 3; ++i) {
             const std::uint32_t a = triangles[f][i], b = triangles[f][(i + 1) % 3];
-            const auto other = table.find(cage_edge_key(b, a));
-            if (other == table.end() || other->second < 3 * f + i) continue;
-            const std::uint32_t g = other->second / 3, j = other->second % 3;  // g runs b -> a from corner j
+            const std::optional<std::uint32_t> other = table.find(b, a);
+            if (!other || *other < 3 * f + i) continue;
+            const std::uint32_t g = *other / 3, j = *other % 3;  // g runs b -> a from corner j
             corners.unite(3 * f + i, 3 * g + (j + 1) % 3);                      // a
             corners.unite(3 * f + (i + 1) % 3, 3 * g + j);                      // b
         }

@@ -15,12 +15,14 @@
 // at most 2x and 3x at 1%. Reported, never asserted: the exit status is 0 unless something fails to run.
 //
 // Run on demand:
-//   ./lod_quality [--smoke] [--work DIR] [--samples N] [--rgbsub PATH] [--keep] [MESH.obj ...]
+//   ./lod_quality [--smoke] [--work DIR] [--samples N] [--rgbsub PATH] [--keep] [--remesh-options OPTIONS] [MESH.obj ...]
+// (--remesh-options: more options for `remesh` of the meshes given, such as "--sharp-angle 30")
 // Without meshes it generates four in DIR (default /tmp/lod_quality), reused when already there:
 //   bunny4        assets/bunny.obj refined to level 4 (`rgbsub refine --level 4 --plain`), 940,544 triangles
 //   bunny4_noisy  the same, each vertex moved along its normal by hashed noise, uniform in +-0.2% of the diagonal
 //   genus3_noisy  a slab with three square holes (136 triangles, genus 3) refined to level 6 (557,056), the same noise
-//   ridge_torus   a torus whose tube has sharp ridges (|sin| profiles) in both directions, 783,360 triangles
+//   ridge_torus   a torus whose tube has sharp ridges (|sin| profiles) in both directions, 783,360 triangles,
+//                 remeshed with --sharp-angle 15 (as its user would: the ridges are its features)
 // --smoke: the bunny at level 1 (14,696 triangles) and 20,000 samples, a few seconds, for CI.
 // --keep writes meshoptimizer's LODs next to rgbsub's (meshopt_<T>.obj) for inspection.
 #include <meshoptimizer.h>
@@ -507,10 +509,13 @@ struct Options {
     std::string rgbsub = RGBSUB_BINARY;
     std::size_t samples = 1'000'000;
     std::vector<std::string> meshes;
+    std::string remesh_options;  // for the meshes given
 };
 
 struct Input {
     std::string name, path;
+    // More `remesh` options: what a user would give for this mesh (its sharp angle).
+    std::string remesh_options;
 };
 
 // The generated meshes (reused when their file is already in the work folder).
@@ -529,16 +534,16 @@ std::vector<Input> generated_inputs(const Options& o) {
         return path;
     };
     if (o.smoke) {
-        inputs.push_back({"bunny1", refined_bunny(1)});
+        inputs.push_back({"bunny1", refined_bunny(1), ""});
         return inputs;
     }
-    inputs.push_back({"bunny4", refined_bunny(4)});
+    inputs.push_back({"bunny4", refined_bunny(4), ""});
     const std::string noisy = o.work + "/bunny4_noisy.obj";
     if (!have(noisy)) {
         std::cout << "generating " << noisy << '\n';
         write_obj(with_noise(load_plain(inputs.back().path), 0.002, 1), noisy);
     }
-    inputs.push_back({"bunny4_noisy", noisy});
+    inputs.push_back({"bunny4_noisy", noisy, ""});
     const std::string slab = o.work + "/genus3_slab.obj", genus3 = o.work + "/genus3_noisy.obj";
     if (!have(genus3)) {
         std::cout << "generating " << genus3 << '\n';
@@ -548,13 +553,14 @@ std::vector<Input> generated_inputs(const Options& o) {
                     o.work + "/generate.log");
         write_obj(with_noise(load_plain(smooth), 0.002, 3), genus3);
     }
-    inputs.push_back({"genus3_noisy", genus3});
+    inputs.push_back({"genus3_noisy", genus3, ""});
     const std::string torus = o.work + "/ridge_torus.obj";
     if (!have(torus)) {
         std::cout << "generating " << torus << '\n';
         write_obj(ridge_torus(1020, 384), torus);
     }
-    inputs.push_back({"ridge_torus", torus});
+    // Its ridges turn by 19-62 degrees, its smooth neighbouring faces by at most about 1.
+    inputs.push_back({"ridge_torus", torus, "--sharp-angle 15"});
     return inputs;
 }
 
@@ -600,7 +606,7 @@ std::vector<Row> run_mesh(const Options& o, const Input& input) {
     std::cout << "  rgbsub remesh --cage-triangles " << cage << ":\n";
     const double remesh_seconds =
         run_command(shell_quote(o.rgbsub) + " remesh " + shell_quote(input.path) + " -o " + shell_quote(cage_path) +
-                        " --cage-triangles " + std::to_string(cage) + " --timings",
+                        " --cage-triangles " + std::to_string(cage) + " --timings " + input.remesh_options,
                     dir + "/remesh.log");
     std::cout << "  rgbsub remesh: " << remesh_seconds << " s (whole process)\n";
 
@@ -705,10 +711,12 @@ int main(int argc, char** argv) {
             o.work = next();
         } else if (a == "--rgbsub") {
             o.rgbsub = next();
+        } else if (a == "--remesh-options") {
+            o.remesh_options = next();
         } else if (a == "--samples") {
             o.samples = static_cast<std::size_t>(std::stoull(next()));
         } else if (a.starts_with("--")) {
-            std::cerr << "usage: lod_quality [--smoke] [--work DIR] [--samples N] [--rgbsub PATH] [--keep] [MESH.obj ...]\n";
+            std::cerr << "usage: lod_quality [--smoke] [--work DIR] [--samples N] [--rgbsub PATH] [--keep] [--remesh-options OPTIONS] [MESH.obj ...]\n";
             return 2;
         } else {
             o.meshes.push_back(a);
@@ -725,7 +733,7 @@ int main(int argc, char** argv) {
         if (o.meshes.empty()) {
             inputs = generated_inputs(o);
         } else {
-            for (const std::string& m : o.meshes) inputs.push_back({fs::path(m).stem().string(), fs::absolute(m).string()});
+            for (const std::string& m : o.meshes) inputs.push_back({fs::path(m).stem().string(), fs::absolute(m).string(), o.remesh_options});
         }
         std::vector<Row> all;
         for (const Input& input : inputs) {

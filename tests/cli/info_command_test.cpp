@@ -1,8 +1,14 @@
 // `rgbsub info`: the whole report, line for line, for meshes whose counts are known by hand.
+#include <cstdint>
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "command_test_support.h"
+#include "io/mesh_file.h"
 #include "obj_test_support.h"
+#include "rgb/mesh/detail_positions.h"
+#include "rgb/mesh/mesh.h"
 
 namespace cli {
 namespace {
@@ -67,6 +73,29 @@ TEST_F(InfoCommand, SavedStateIsReportedWithItsLevels) {
                        "vertices: 18\nedges: 48\nfaces: 32\nboundary loops: 0\nEuler characteristic: 2\n"
                        "triangles per colour: green 32, red 0, blue 0\n"
                        "triangles per level: 1:32\n");
+}
+
+// A cage with detail of levels per face: the octahedron, its faces at levels 1 3 2 2 1 3 2 1. The
+// points counted by hand: 6 base vertices; on the 12 edges 2^K_e - 1 each for K_e, the finer level of
+// the edge's two faces (1, 3, 2, 3, 3, 2, 2, 2, 1, 3, 3, 2: 52); inside the faces 0, 3 or 21 for
+// levels 1, 2, 3 (51): 109.
+TEST_F(InfoCommand, DetailIsReportedWithItsLevels) {
+    const std::vector<glm::dvec3> positions{{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    const std::vector<rgb::Triangle> triangles{{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+    const rgb::BaseMesh plain(positions, triangles);
+    const std::vector<std::uint8_t> levels{1, 3, 2, 2, 1, 3, 2, 1};
+    std::vector<glm::dvec3> values;
+    for (const rgb::SurfacePoint& p : rgb::DetailPositions::grid_points(plain, levels))
+        values.push_back(rgb::base_space_position(plain, p));
+    auto detail = std::make_shared<const rgb::DetailPositions>(plain, levels, values, rgb::DetailOrigin{"scan.obj", 12345, 7});
+    const rgb::Mesh mesh(std::make_shared<const rgb::BaseMesh>(positions, triangles, rgb::SharpFeatures{}, detail));
+    const std::string out = info("cage.obj", rgbio::format_obj(mesh, {}));
+    EXPECT_NE(out.find("detail: from scan.obj (12345 triangles), stored to levels 1..3 (each base face its own, each base edge its "
+                       "finer face's), 109 points; finer levels interpolate them linearly (inside a face its grid triangle, on a "
+                       "base edge its two samples)\n"
+                       "detail points on the nearest point of the surface (no ray hit along the limit normal): 7\n"),
+              std::string::npos)
+        << out;
 }
 
 }  // namespace

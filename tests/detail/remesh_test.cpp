@@ -9,12 +9,16 @@
 #include <limits>
 #include <memory>
 #include <random>
+#include <span>
+#include <string>
 #include <vector>
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
 #include "detail/remesh.h"
+#include "io/mesh_file.h"
+#include "io/obj_reader.h"
 #include "rgb/lod/limit_error.h"
 #include "rgb/lod/lod_criteria.h"
 #include "rgb/lod/lod_driver.h"
@@ -24,6 +28,7 @@
 #include "rgb/values/loop_geometry.h"
 #include "rgb/values/restore_state.h"
 #include "rgb/values/surface_error.h"
+#include "support/detail_sampling.h"
 
 namespace remesh_test {
 
@@ -216,6 +221,209 @@ TEST_F(Remesh, BudgetSpendsWhereTheSurfaceDepartsFromTheDenseMesh) {
     EXPECT_LT(rgb::displayed_surface_error(budget).max_error, rgb::displayed_surface_error(uniform).max_error);
 }
 
+// The estimate of M's triangles per cage face against its meaning on a flat cage whose samples are
+// its own base-space points (the identity): each face covers its own area, so the estimate is its
+// area over the area of M's triangles there. Here M's triangles have area 0.01 for x <= 1 and 0.0025
+// (four times as dense) beyond; a grid triangle across both takes the mean area of its corners'.
+TEST(DenseTrianglesPerFace, AFaceCoversItsAreaOverTheAreaOfMsTriangles) {
+    // A 4 x 2 grid of squares in the plane z = 0, each cut into two triangles.
+    std::vector<glm::dvec3> positions;
+    for (int j = 0; j <= 2; ++j)
+        for (int i = 0; i <= 4; ++i) positions.push_back({0.5 * i, 0.5 * j, 0.0});
+    std::vector<rgb::Triangle> triangles;
+    for (std::uint32_t j = 0; j < 2; ++j)
+        for (std::uint32_t i = 0; i < 4; ++i) {
+            const std::uint32_t a = 5 * j + i;
+            triangles.push_back({a, a + 1, a + 6});
+            triangles.push_back({a, a + 6, a + 5});
+        }
+    const rgb::BaseMesh cage(positions, triangles);
+    for (int level : {0, 2, 3}) {
+        std::vector<glm::dvec3> values;
+        std::vector<double> hit_areas;
+        for (const rgb::SurfacePoint& p : rgb::DetailPositions::grid_points(cage, level)) {
+            values.push_back(rgb::base_space_position(cage, p));
+            hit_areas.push_back(values.back().x <= 1.0 ? 0.01 : 0.0025);
+        }
+        const std::vector<double> estimate = rgbdetail::dense_triangles_per_face(cage, level, values, hit_areas);
+        ASSERT_EQ(estimate.size(), cage.num_faces());
+        for (std::uint32_t f = 0; f < cage.num_faces(); ++f) {
+            const glm::dvec3 a = positions[triangles[f][0]], b = positions[triangles[f][1]], c = positions[triangles[f][2]];
+            const double area = 0.5 * glm::length(glm::cross(b - a, c - a));  // 0.125
+            if (std::max({a.x, b.x, c.x}) <= 1.0) {
+                EXPECT_NEAR(estimate[f], area / 0.01, 1e-9) << "face " << f << " level " << level;
+            }
+            if (std::min({a.x, b.x, c.x}) > 1.0) {
+                EXPECT_NEAR(estimate[f], area / 0.0025, 1e-9) << "face " << f << " level " << level;
+            }
+            EXPECT_GE(estimate[f], area / 0.01 * (1 - 1e-12));
+            EXPECT_LE(estimate[f], area / 0.0025 * (1 + 1e-12));
+        }
+    }
+    // Each face's level: the smallest from the first level whose 4^K reaches the estimate, capped.
+    const std::vector<double> counts{0.0, 1.0, 1.5, 4.0, 4.5, 16.0, 17.0, 1e9};
+    const std::vector<std::uint8_t> from_zero{0, 0, 1, 1, 2, 2, 3, 6}, from_two{2, 2, 2, 2, 2, 2, 3, 6};
+    EXPECT_EQ(rgbdetail::face_detail_levels(counts, 0, 6), from_zero);
+    EXPECT_EQ(rgbdetail::face_detail_levels(counts, 2, 6), from_two);
+}
+
+// A torus whose tube circles crowd four times as densely on the half y > 0 (93 of them there, 23 on
+// the other half, 16 vertices each: 3,712 triangles), and the user's cage of 8 x 4 squares over it
+// (64 triangles). Σ_K as dense as M overall: K = 3 (4,096 triangles); the dense half's faces cover
+// about 93 triangles of M each, more than 4^3, so they take level 4, the sparse half's 23 keep 3.
+Dense uneven_torus() {
+    constexpr int dense = 93, sparse = 23, tube = 16;
+    Dense m;
+    std::vector<double> angles;
+    for (int i = 0; i < dense; ++i) angles.push_back(M_PI * i / dense);
+    for (int i = 0; i < sparse; ++i) angles.push_back(M_PI + M_PI * i / sparse);
+    const int around = static_cast<int>(angles.size());
+    for (double u : angles)
+        for (int j = 0; j < tube; ++j) {
+            const double v = 2 * M_PI * j / tube;
+            const double r = 0.35 + 0.02 * std::sin(9 * u) * std::cos(5 * v);
+            m.positions.push_back({(1 + r * std::cos(v)) * std::cos(u), (1 + r * std::cos(v)) * std::sin(u), r * std::sin(v)});
+        }
+    auto at = [&](int i, int j) { return static_cast<std::uint32_t>((i % around) * tube + (j % tube)); };
+    for (int i = 0; i < around; ++i)
+        for (int j = 0; j < tube; ++j) {
+            m.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+            m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+        }
+    m.diagonal = glm::distance(glm::dvec3(-1.4, -1.4, -0.4), glm::dvec3(1.4, 1.4, 0.4));
+    return m;
+}
+
+// The cage's faces 8 i .. 8 i + 7 lie between the circles at angles 2 pi i / 8 and 2 pi (i + 1) / 8.
+rgbdetail::RemeshOptions uneven_torus_options() {
+    rgbdetail::RemeshOptions options;
+    std::vector<glm::dvec3> positions;
+    for (int i = 0; i < 8; ++i)
+        for (int j = 0; j < 4; ++j) {
+            const double u = 2 * M_PI * i / 8, v = 2 * M_PI * j / 4 + M_PI / 4;
+            positions.push_back({(1 + 0.5 * std::cos(v)) * std::cos(u), (1 + 0.5 * std::cos(v)) * std::sin(u), 0.5 * std::sin(v)});
+        }
+    auto at = [](int i, int j) { return static_cast<std::uint32_t>((i % 8) * 4 + (j % 4)); };
+    for (int i = 0; i < 8; ++i)
+        for (int j = 0; j < 4; ++j) {
+            options.cage_triangles_given.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+            options.cage_triangles_given.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+        }
+    options.cage_positions = positions;
+    options.source_name = "uneven torus";
+    return options;
+}
+
+// Every displayed vertex the detail sampled lies on M within 1e-6 of its diagonal (the brute-force
+// distance); returns how many were checked.
+std::size_t expect_sampled_on_dense(const rgb::Mesh& mesh, const Dense& m) {
+    const rgb::BaseMesh& base = mesh.base();
+    const std::span<const std::uint8_t> levels = base.detail()->face_levels();
+    std::size_t checked = 0;
+    for (rgb::VertexId v : mesh.vertices()) {
+        if (!rgbtest::sampled_by_definition(base, levels, mesh.address(v))) continue;
+        const double distance = distance_to(m, rgb::displayed_position(mesh, v));
+        EXPECT_LE(distance, 1e-6 * m.diagonal) << "vertex of level " << mesh.level(v);
+        if (distance > 1e-6 * m.diagonal) return checked;
+        ++checked;
+    }
+    return checked;
+}
+
+class UnevenRemesh : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() {
+        dense_ = new Dense(uneven_torus());
+        remeshed_ = new rgbdetail::Remeshed(rgbdetail::remesh(dense_->positions, dense_->triangles, uneven_torus_options()));
+    }
+    static void TearDownTestSuite() {
+        delete dense_;
+        delete remeshed_;
+    }
+    static Dense* dense_;
+    static rgbdetail::Remeshed* remeshed_;
+};
+Dense* UnevenRemesh::dense_ = nullptr;
+rgbdetail::Remeshed* UnevenRemesh::remeshed_ = nullptr;
+
+TEST_F(UnevenRemesh, FacesOverTheDenseHalfTakeAFinerLevel) {
+    ASSERT_EQ(dense_->triangles.size(), 3712u);
+    const rgbdetail::RemeshReport& r = remeshed_->report;
+    EXPECT_EQ(r.detail_level, 3);
+    EXPECT_EQ(r.finest_detail_level, 4);
+    const rgb::DetailPositions& detail = *remeshed_->base->detail();
+    const std::span<const std::uint8_t> levels = detail.face_levels();
+    ASSERT_EQ(levels.size(), 64u);
+    // Columns 1 and 2 lie well inside the dense half, 5 and 6 inside the sparse one; the others
+    // border both (their limit surface reaches over the border).
+    for (std::uint32_t f = 0; f < 64; ++f) {
+        const std::uint32_t column = f / 8;
+        if (column == 1 || column == 2) {
+            EXPECT_EQ(levels[f], 4) << "face " << f;
+        }
+        if (column == 5 || column == 6) {
+            EXPECT_EQ(levels[f], 3) << "face " << f;
+        }
+        EXPECT_GE(levels[f], 3);
+        EXPECT_LE(levels[f], 4);
+    }
+    EXPECT_EQ(r.detail_points, rgb::DetailPositions::num_points(*remeshed_->base, levels));
+    EXPECT_EQ(detail.origin().nearest_points, r.nearest_points);
+}
+
+// The property: from the saved file alone, every level up to the faces' levels, uniform, in
+// random spheres and under a budget, has every vertex the detail sampled on M.
+TEST_F(UnevenRemesh, EverySampledVertexOfTheReloadedFileLiesOnTheMesh) {
+    rgb::Mesh cage(remeshed_->base);
+    const std::string text = rgbio::format_obj(cage, {});
+    const rgbio::LoadedMesh loaded = rgbio::read_obj_text(text, "uneven_cage.obj");
+    ASSERT_TRUE(loaded.adaptive) << (loaded.warnings.empty() ? "" : loaded.warnings.front());
+    const std::shared_ptr<const rgb::BaseMesh> base = loaded.adaptive->shared_base();
+    ASSERT_NE(base->detail(), nullptr);
+    const int finest = base->detail()->finest_level();
+    for (int level = 0; level <= finest; ++level) {
+        rgb::Mesh uniform(base);
+        rgb::set_level(uniform, level);
+        const std::size_t checked = expect_sampled_on_dense(uniform, *dense_);
+        if (level <= base->detail()->coarsest_level()) {
+            EXPECT_EQ(checked, uniform.num_vertices()) << "level " << level;
+        } else {
+            EXPECT_GT(checked, 0u) << "level " << level;
+        }
+    }
+    std::mt19937 rng(29);
+    rgb::Mesh spheres(base);
+    for (int i = 0; i < 6; ++i) {
+        const glm::dvec3 centre = dense_->positions[rng() % dense_->positions.size()];
+        rgb::set_level(spheres, 1 + static_cast<int>(rng() % static_cast<unsigned>(finest + 1)), rgb::Sphere{centre, 0.4});
+    }
+    EXPECT_GT(expect_sampled_on_dense(spheres, *dense_), 0u);
+    rgb::LodSettings settings;
+    settings.value = rgb::on_mesh(rgb::detail_error_value(base));
+    settings.max_triangles = 4000;
+    rgb::Mesh budget(base);
+    rgb::LodDriver(budget, settings).run();
+    EXPECT_GT(budget.num_faces(), 1000u);
+    EXPECT_GT(expect_sampled_on_dense(budget, *dense_), 0u);
+}
+
+// More points than allowed is refused before they are sampled: at the first level, or at the faces'
+// levels.
+TEST_F(UnevenRemesh, TooManyPointsAreRefused) {
+    rgbdetail::RemeshOptions options = uneven_torus_options();
+    const std::size_t first = rgb::DetailPositions::num_points(*remeshed_->base, rgb::DetailPositions::uniform_levels(*remeshed_->base, 3));
+    for (std::size_t allowed : {first - 1, first}) {
+        options.max_detail_points = allowed;
+        try {
+            rgbdetail::remesh(dense_->positions, dense_->triangles, options);
+            FAIL() << "remeshed with " << allowed << " points allowed";
+        } catch (const std::invalid_argument& e) {
+            const std::string needed = std::to_string(allowed == first ? remeshed_->report.detail_points : first);
+            EXPECT_NE(std::string(e.what()).find("would hold " + needed + " points"), std::string::npos) << e.what();
+        }
+    }
+}
+
 TEST(RemeshRefusals, BadMeshesAndCagesAreRefusedWithTheReason) {
     const Dense m = bumpy_torus(24, 12);
     rgbdetail::RemeshOptions options;
@@ -247,6 +455,62 @@ TEST(RemeshStop, AStoppedRemeshThrowsStopped) {
     options.cage_triangles = 100;
     options.progress = [](double share, const char*) { return share < 0.5; };
     EXPECT_THROW(rgbdetail::remesh(m.positions, m.triangles, options), rgbdetail::Stopped);
+}
+
+// Progress inside the phases: on a mesh of 25,600 triangles to a cage of 300 every phase reports
+// many times (the decimation every 1024 collapses, the fit and the detail between chunks of their
+// points), the share never decreases from 0 to 1, and a stop at any call throws at once.
+struct ProgressCall {
+    double share;
+    std::string phase;
+};
+
+std::vector<ProgressCall> progress_calls(const Dense& m, std::size_t stop_at, bool& stopped) {
+    std::vector<ProgressCall> calls;
+    rgbdetail::RemeshOptions options;
+    options.cage_triangles = 300;
+    options.progress = [&](double share, const char* phase) {
+        calls.push_back({share, phase});
+        return calls.size() != stop_at + 1;
+    };
+    stopped = false;
+    try {
+        rgbdetail::remesh(m.positions, m.triangles, options);
+    } catch (const rgbdetail::Stopped&) {
+        stopped = true;
+    }
+    return calls;
+}
+
+TEST(RemeshProgress, MovesInEveryPhaseAndStopsAtOnce) {
+    const Dense m = bumpy_torus(160, 80);
+    bool stopped = false;
+    const std::vector<ProgressCall> calls = progress_calls(m, std::numeric_limits<std::size_t>::max(), stopped);
+    ASSERT_FALSE(stopped);
+    ASSERT_GE(calls.size(), 2u);
+    EXPECT_EQ(calls.front().share, 0.0);
+    EXPECT_EQ(calls.back().share, 1.0);
+    EXPECT_EQ(calls.back().phase, "done");
+    for (std::size_t i = 1; i < calls.size(); ++i) ASSERT_GE(calls[i].share, calls[i - 1].share) << "call " << i;
+    const std::vector<std::string> phases = {"making the cage", "fitting the cage", "sampling the detail"};
+    for (const std::string& phase : phases) {
+        std::vector<std::size_t> in_phase;
+        for (std::size_t i = 0; i < calls.size(); ++i)
+            if (calls[i].phase == phase) in_phase.push_back(i);
+        // The decimation removes 25,300 faces, 2 a collapse: 12 reports, one every 1024 collapses.
+        // The fit: its start, then the start and end of each of its 5 closest-point passes. The
+        // detail: its start, then one before each chunk of 8192 points and one at the end of each
+        // sampling (the first samples the 38,400 points of Σ4 in 5 chunks).
+        const std::size_t at_least = phase == "making the cage" ? 12 : phase == "fitting the cage" ? 11 : 8;
+        EXPECT_GE(in_phase.size(), at_least) << phase;
+        if (in_phase.empty()) continue;
+        // A stop at the middle call of the phase: Stopped, and no call after it.
+        const std::size_t stop_at = in_phase[in_phase.size() / 2];
+        bool stopped_there = false;
+        const std::vector<ProgressCall> until_stop = progress_calls(m, stop_at, stopped_there);
+        EXPECT_TRUE(stopped_there) << phase;
+        EXPECT_EQ(until_stop.size(), stop_at + 1) << phase;
+    }
 }
 
 }  // namespace remesh_test

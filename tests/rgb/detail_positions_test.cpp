@@ -1,9 +1,14 @@
 // Detail positions (rgb/mesh/detail_positions.h): a cage's vertices shown at sampled points, a
 // function of the address alone. Checked against closed forms: the number of points of Σk, an
 // affine function (which the piecewise-linear lookup beyond the sampled level must reproduce), and
-// the sampled values themselves at every address of every grid point; then through the mesh: every
-// displayed vertex of random adaptive meshes, in any request order and after a save and restore.
+// the sampled values themselves at every address of every grid point; with levels per face, the
+// stored points against the definition of the sampled ones (support/detail_sampling.h), every
+// address of every point of Σ5 alike from every face, and edge points between their samples; then
+// through the mesh: every displayed vertex of random adaptive meshes, in any request order and after
+// a save and restore.
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <random>
 #include <set>
@@ -17,11 +22,13 @@
 #include "rgb/mesh/state.h"
 #include "rgb/values/loop_geometry.h"
 #include "rgb/values/restore_state.h"
+#include "support/detail_sampling.h"
 #include "support/test_meshes.h"
 
 namespace {
 
 using rgb::DetailPositions;
+using rgbtest::sampled_by_definition;
 using rgb::SurfacePoint;
 
 // A smooth, non-affine stand-in for a dense surface: each base-space point moved by a wave.
@@ -34,6 +41,30 @@ std::shared_ptr<const DetailPositions> sampled(const rgb::BaseMesh& base, int le
     std::vector<glm::dvec3> values;
     for (const SurfacePoint& p : DetailPositions::grid_points(base, level)) values.push_back(f(rgb::base_space_position(base, p)));
     return std::make_shared<const DetailPositions>(base, level, values);
+}
+
+template <class F>
+std::shared_ptr<const DetailPositions> sampled(const rgb::BaseMesh& base, const std::vector<std::uint8_t>& levels, F f) {
+    std::vector<glm::dvec3> values;
+    for (const SurfacePoint& p : DetailPositions::grid_points(base, levels)) values.push_back(f(rgb::base_space_position(base, p)));
+    return std::make_shared<const DetailPositions>(base, levels, values);
+}
+
+// Levels 1..4 mixed over the faces, so that edges join faces of equal and of different levels.
+std::vector<std::uint8_t> mixed_levels(const rgb::BaseMesh& base) {
+    std::vector<std::uint8_t> levels(base.num_faces());
+    for (std::size_t f = 0; f < levels.size(); ++f) levels[f] = static_cast<std::uint8_t>(1 + (f * 7 + f / 3) % 4);
+    return levels;
+}
+
+// Every point of Σ_level of every face, unreduced, in that face.
+std::vector<SurfacePoint> every_address(const rgb::BaseMesh& base, int level) {
+    std::vector<SurfacePoint> points;
+    const std::uint32_t n = 1u << level;
+    for (std::uint32_t f = 0; f < base.num_faces(); ++f)
+        for (std::uint32_t a2 = 0; a2 <= n; ++a2)
+            for (std::uint32_t a1 = 0; a1 + a2 <= n; ++a1) points.push_back(SurfacePoint{f, {n - a1 - a2, a1, a2}, level});
+    return points;
 }
 
 std::size_t edge_count(const rgb::BaseMesh& base) {
@@ -110,12 +141,14 @@ TEST_P(DetailOnMeshes, FinerPointsInterpolateTheGridLinearly) {
     }
 }
 
-// The meshes of random requests display every vertex at the sample of its address (level <= 3,
-// sampled) or at the interpolation (finer): in any request order, and after a save and restore.
+// The meshes of random requests display every vertex at the sample of its address (sampled: within
+// its face's or edge's level of the mixed levels) or at the interpolation (finer): in any request
+// order, and after a save and restore.
 TEST_P(DetailOnMeshes, DisplayedVerticesAreTheirAddressesSamples) {
     const rgbtest::TestMesh& m = GetParam();
     const rgb::BaseMesh plain(m.positions, m.triangles);
-    const auto detail = sampled(plain, 3, wavy);
+    const std::vector<std::uint8_t> levels = mixed_levels(plain);
+    const auto detail = sampled(plain, levels, wavy);
     auto base = std::make_shared<const rgb::BaseMesh>(m.positions, m.triangles, rgb::SharpFeatures{}, detail);
     std::mt19937 rng(11);
     std::vector<std::pair<int, rgb::Sphere>> requests;
@@ -131,7 +164,7 @@ TEST_P(DetailOnMeshes, DisplayedVerticesAreTheirAddressesSamples) {
         for (rgb::VertexId v : mesh->vertices()) {
             const glm::dvec3 shown = rgb::displayed_position(*mesh, v);
             ASSERT_EQ(shown, detail->position(*base, mesh->address(v)));
-            if (mesh->level(v) <= 3) {
+            if (sampled_by_definition(plain, levels, mesh->address(v))) {
                 ASSERT_EQ(shown, wavy(mesh->base_space_position(v)));
             }
         }
@@ -148,6 +181,130 @@ TEST_P(DetailOnMeshes, DisplayedVerticesAreTheirAddressesSamples) {
     for (rgb::VertexId v : retagged.vertices()) ASSERT_EQ(rgb::displayed_position(retagged, v), rgb::displayed_position(forward, v));
 }
 
+// Levels per face: the stored points are the sampled ones of the definition, each once; every
+// address of a sampled point gives its sample, bit for bit, whichever face (of whatever level) it is
+// given in; and every other point gives the same bits from every address.
+TEST_P(DetailOnMeshes, MixedLevelsStoreEverySampledPointOnceAndAnswerAlikeFromEveryFace) {
+    const rgbtest::TestMesh& m = GetParam();
+    const rgb::BaseMesh base(m.positions, m.triangles);
+    const std::vector<std::uint8_t> levels = mixed_levels(base);
+    std::set<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t, std::uint32_t, int>> expected;
+    for (const SurfacePoint& p : every_address(base, 4))
+        if (sampled_by_definition(base, levels, p)) {
+            const SurfacePoint c = rgb::canonical(base, rgb::reduced(p));
+            expected.insert({c.face, c.a[0], c.a[1], c.a[2], c.level});
+        }
+    const std::vector<SurfacePoint> points = DetailPositions::grid_points(base, levels);
+    EXPECT_EQ(points.size(), expected.size());
+    EXPECT_EQ(DetailPositions::num_points(base, levels), expected.size());
+    std::set<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t, std::uint32_t, int>> stored;
+    for (const SurfacePoint& p : points) {
+        const SurfacePoint c = rgb::canonical(base, p);
+        EXPECT_TRUE(stored.insert({c.face, c.a[0], c.a[1], c.a[2], c.level}).second) << "a point stored twice";
+    }
+    EXPECT_EQ(stored, expected);
+
+    const auto detail = sampled(base, levels, wavy);
+    EXPECT_EQ(detail->coarsest_level(), 1);
+    EXPECT_EQ(detail->finest_level(), 4);
+    std::size_t sampled_points = 0, interpolated = 0, edge_points_between = 0;
+    for (const SurfacePoint& p : every_address(base, 5)) {
+        const glm::dvec3 got = detail->position(base, p);
+        const SurfacePoint r = rgb::reduced(p);
+        const bool is_sampled = sampled_by_definition(base, levels, p);
+        ASSERT_EQ(detail->is_sampled(base, p), is_sampled);
+        if (is_sampled) {
+            ASSERT_EQ(got, wavy(rgb::base_space_position(base, r))) << "face " << p.face << " level " << r.level;
+            ++sampled_points;
+        } else {
+            ++interpolated;
+        }
+        // An edge point finer than one of its faces and within the other's level: the edge has the
+        // coarser level, so it is interpolated along the edge.
+        if (const auto h = rgb::base_edge_of(r); h && base.opposite(*h) != rgb::BaseMesh::kNone) {
+            const int here = levels[p.face], there = levels[base.opposite(*h) / 3];
+            if (r.level > std::min(here, there) && r.level <= std::max(here, there)) {
+                ASSERT_FALSE(is_sampled);
+                ++edge_points_between;
+            }
+        }
+        for (std::uint32_t g = 0; g < base.num_faces(); ++g)
+            if (const auto q = rgb::in_face(base, r, g)) {
+                ASSERT_EQ(detail->position(base, *q), got) << "face " << g;
+            }
+    }
+    EXPECT_GT(sampled_points, 0u);
+    EXPECT_GT(interpolated, 0u);
+    EXPECT_GT(edge_points_between, 0u);
+    // Saved and given back (samples, in grid_points' order): the same detail, bit for bit.
+    const DetailPositions again(base, levels, detail->samples(base));
+    for (const SurfacePoint& p : every_address(base, 6)) ASSERT_EQ(again.position(base, p), detail->position(base, p));
+}
+
+// Beyond the levels the samples are interpolated linearly, inside a face in its grid triangle and on
+// a base edge between its two neighbouring samples: an affine function is reproduced everywhere.
+TEST_P(DetailOnMeshes, MixedLevelsInterpolateLinearlyInFacesAndAlongEdges) {
+    const rgbtest::TestMesh& m = GetParam();
+    const rgb::BaseMesh base(m.positions, m.triangles);
+    const std::vector<std::uint8_t> levels = mixed_levels(base);
+    const auto detail = sampled(base, levels, affine);
+    const auto wavy_detail = sampled(base, levels, wavy);
+    for (const SurfacePoint& p : every_address(base, 6)) {
+        const glm::dvec3 expected = affine(rgb::base_space_position(base, rgb::reduced(p)));
+        const glm::dvec3 got = detail->position(base, p);
+        const double scale = 1.0 + glm::length(expected);
+        ASSERT_NEAR(got.x, expected.x, 1e-12 * scale);
+        ASSERT_NEAR(got.y, expected.y, 1e-12 * scale);
+        ASSERT_NEAR(got.z, expected.z, 1e-12 * scale);
+        // An edge point one level finer than its edge lies halfway between its neighbours on the edge.
+        const SurfacePoint r = rgb::reduced(p);
+        const auto h = rgb::base_edge_of(r);
+        if (!h) continue;
+        const int edge = base.opposite(*h) == rgb::BaseMesh::kNone ? levels[r.face]
+                                                                   : std::min<int>(levels[r.face], levels[base.opposite(*h) / 3]);
+        if (r.level != edge + 1) continue;
+        SurfacePoint a = r, b = r;
+        for (int i = 0; i < 3; ++i)
+            if (r.a[i] % 2 == 1) {
+                a.a[i] -= 1;
+                b.a[i] += 1;
+                break;
+            }
+        for (int i = 2; i >= 0; --i)
+            if (r.a[i] % 2 == 1) {
+                a.a[i] += 1;
+                b.a[i] -= 1;
+                break;
+            }
+        const glm::dvec3 halfway = 0.5 * (wavy_detail->position(base, a) + wavy_detail->position(base, b));
+        const glm::dvec3 between = wavy_detail->position(base, r);
+        ASSERT_NEAR(glm::length(between - halfway), 0.0, 1e-14 * (1.0 + glm::length(halfway)));
+    }
+}
+
+// The positions are a continuous function of the address: next to a base edge between faces of
+// different levels, a point inside either face and its neighbour on the edge draw together as the
+// level grows (a step between them would stay, and budgets would split there without end).
+TEST_P(DetailOnMeshes, MixedLevelsAreContinuousAcrossBaseEdges) {
+    const rgbtest::TestMesh& m = GetParam();
+    const rgb::BaseMesh base(m.positions, m.triangles);
+    const auto detail = sampled(base, mixed_levels(base), wavy);
+    // The largest difference between a point on a base edge and its neighbour inside a face at `level`.
+    auto largest_step = [&](int level) {
+        const std::uint32_t n = std::uint32_t(1) << level;
+        double step = 0.0;
+        for (std::uint32_t f = 0; f < base.num_faces(); ++f)
+            for (std::uint32_t a1 = 1; a1 + 1 < n; a1 += 7) {
+                // On the edge a2 = 0, and one step inside.
+                const SurfacePoint on_edge{f, {n - a1, a1, 0}, level}, inside{f, {n - a1 - 1, a1, 1}, level};
+                step = std::max(step, glm::distance(detail->position(base, on_edge), detail->position(base, inside)));
+            }
+        return step;
+    };
+    const double coarse = largest_step(8), fine = largest_step(12);
+    EXPECT_LT(fine, coarse / 8) << "steps " << coarse << " at level 8, " << fine << " at level 12";
+}
+
 INSTANTIATE_TEST_SUITE_P(Meshes, DetailOnMeshes,
                          ::testing::Values(rgbtest::tetrahedron(), rgbtest::icosahedron(), rgbtest::grid(4, 3),
                                            rgbtest::grid_with_holes(6, 6, 3)));
@@ -157,6 +314,19 @@ TEST(DetailPositions, RefusesAWrongCountOrLevel) {
     const rgb::BaseMesh base(m.positions, m.triangles);
     const std::vector<glm::dvec3> too_few(3);
     EXPECT_THROW(DetailPositions(base, 1, too_few), std::invalid_argument);
+    // Levels: one per face, each at most kMaxLevel, and as many values as they need.
+    const std::vector<glm::dvec3> level_one(DetailPositions::num_points(base, DetailPositions::uniform_levels(base, 1)));
+    EXPECT_NO_THROW(DetailPositions(base, DetailPositions::uniform_levels(base, 1), level_one));
+    EXPECT_THROW(DetailPositions(base, std::vector<std::uint8_t>(base.num_faces() - 1, 1), level_one), std::invalid_argument);
+    std::vector<std::uint8_t> one_finer = DetailPositions::uniform_levels(base, 1);
+    one_finer[3] = 2;
+    EXPECT_THROW(DetailPositions(base, one_finer, level_one), std::invalid_argument);
+    one_finer[3] = DetailPositions::kMaxLevel + 1;
+    EXPECT_THROW(DetailPositions::num_points(base, one_finer), std::invalid_argument);
+    // A face at the finest level with a count of values that would need terabytes is refused
+    // without allocating them.
+    EXPECT_THROW(DetailPositions(base, std::vector<std::uint8_t>(base.num_faces(), DetailPositions::kMaxLevel), level_one),
+                 std::invalid_argument);
     EXPECT_THROW(DetailPositions::grid_points(base, DetailPositions::kMaxLevel + 1), std::invalid_argument);
     EXPECT_THROW(DetailPositions::grid_points(base, -1), std::invalid_argument);
     const rgbtest::TestMesh other = rgbtest::tetrahedron();

@@ -167,7 +167,9 @@ void write_state(const rgb::Mesh& mesh, bool limit_positions, std::span<const st
     out += "# rgbsub adaptive state: the #rgb lines restore the exact RGB mesh; other readers ignore them\n";
     std::string tag_records;
     append_state_tag_records(base.sharp_features(), tag_records);
-    const unsigned version = base.detail() ? kDetailStateFormatVersion : tag_records.empty() ? kStateFormatVersion : kTaggedStateFormatVersion;
+    const unsigned detail_version =
+        base.detail() && needs_face_levels(*base.detail()) ? kFaceLevelDetailStateFormatVersion : kDetailStateFormatVersion;
+    const unsigned version = base.detail() ? detail_version : tag_records.empty() ? kStateFormatVersion : kTaggedStateFormatVersion;
     out += "#rgb state " + std::to_string(version) + "\n";
     out += limit_positions ? "#rgb positions limit\n" : "#rgb positions displayed\n";
     out += "#rgb section base-vertices " + std::to_string(n0) + "\n";
@@ -251,9 +253,9 @@ std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const
     // Another program's comments that happen to start with "#rgb": not a state at all.
     if (header.word() != "state") return std::nullopt;
     const unsigned version = header.number<unsigned>();
-    if (version < kOldestStateFormatVersion || version > kDetailStateFormatVersion)
+    if (version < kOldestStateFormatVersion || version > kNewestStateFormatVersion)
         header.fail("state format version " + std::to_string(version) + " (this rgbsub reads versions " +
-                    std::to_string(kOldestStateFormatVersion) + " to " + std::to_string(kDetailStateFormatVersion) + ")");
+                    std::to_string(kOldestStateFormatVersion) + " to " + std::to_string(kNewestStateFormatVersion) + ")");
     header.expect_end();
 
     SavedState saved;
@@ -342,7 +344,7 @@ std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const
         } else if (kind == kColourRecord) {
             if (section != Section::BaseColours) r.fail("vertex colours outside their section");
             colour_records.push_back(line);
-        } else if (version >= kDetailStateFormatVersion && is_detail_record(kind)) {
+        } else if (is_detail_record(kind, version)) {
             if (section != Section::Detail) r.fail("detail positions outside their section");
             detail_records.push_back(line);
         } else if (version >= kTaggedStateFormatVersion && is_state_tag_record(kind)) {
@@ -376,7 +378,8 @@ std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const
         saved.colours = parse_colour_section(colour_records, expected[static_cast<int>(Section::BaseColours)], state.base_positions.size(),
                                              *colour_section_line, file);
     if (detail_section_line)
-        saved.detail = parse_detail_section(detail_records, expected[static_cast<int>(Section::Detail)], *detail_section_line, file);
+        saved.detail = parse_detail_section(detail_records, expected[static_cast<int>(Section::Detail)], state.base_triangles.size(),
+                                            *detail_section_line, file);
     saved.labels = face_labels.finish(state.base_triangles.size(), lines.back());
     return saved;
 }

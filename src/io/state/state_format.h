@@ -30,7 +30,8 @@
 //                                        #rgb uv-untextured F [...]  base faces the input gave no UVs (sorted)
 //   #rgb section base-colours N        optional: the base vertices' colours (base_colour_state.h)
 //   #rgb section face-labels N         optional: the base faces' usemtl/g/o/s labels (face_label_state.h)
-//   #rgb section detail N              version 5: a cage's detail positions (detail_state.h)
+//   #rgb section detail N              version 5: a cage's detail positions (detail_state.h);
+//                                      version 6: the same with a detail level per base face
 //   #rgb end
 // The -as- records keep a lightly refined file from repeating its base mesh (a base vertex shown at
 // level 0 and an untouched base face are in the body already): the state stays a small fraction of
@@ -60,6 +61,11 @@ inline constexpr unsigned kStateFormatVersion = 3;
 inline constexpr unsigned kTaggedStateFormatVersion = 4;
 // Written instead for a cage with detail (detail_state.h): version 4 plus the detail section.
 inline constexpr unsigned kDetailStateFormatVersion = 5;
+// Written instead for a cage whose detail has levels that differ between base faces: version 5
+// plus the detail-face-levels records.
+inline constexpr unsigned kFaceLevelDetailStateFormatVersion = 6;
+// The newest version read.
+inline constexpr unsigned kNewestStateFormatVersion = kFaceLevelDetailStateFormatVersion;
 // The oldest version still read.
 inline constexpr unsigned kOldestStateFormatVersion = 2;
 
