@@ -38,12 +38,14 @@ struct Dense {
     double diagonal = 0.0;
 };
 
-// A bumpy torus: a dense closed surface of genus 1 with detail a cage cannot hold.
-Dense bumpy_torus(int around, int tube) {
+// A bumpy torus: a dense closed surface of genus 1 with detail a cage cannot hold, its tube circles
+// at the given angles around the axis, each of `tube` vertices.
+Dense bumpy_torus_at(const std::vector<double>& angles, int tube) {
     Dense m;
-    for (int i = 0; i < around; ++i)
+    const int around = static_cast<int>(angles.size());
+    for (double u : angles)
         for (int j = 0; j < tube; ++j) {
-            const double u = 2 * M_PI * i / around, v = 2 * M_PI * j / tube;
+            const double v = 2 * M_PI * j / tube;
             const double r = 0.35 + 0.02 * std::sin(9 * u) * std::cos(5 * v);
             m.positions.push_back({(1 + r * std::cos(v)) * std::cos(u), (1 + r * std::cos(v)) * std::sin(u), r * std::sin(v)});
         }
@@ -55,6 +57,13 @@ Dense bumpy_torus(int around, int tube) {
         }
     m.diagonal = glm::distance(glm::dvec3(-1.4, -1.4, -0.4), glm::dvec3(1.4, 1.4, 0.4));
     return m;
+}
+
+// Its tube circles evenly spaced.
+Dense bumpy_torus(int around, int tube) {
+    std::vector<double> angles;
+    for (int i = 0; i < around; ++i) angles.push_back(2 * M_PI * i / around);
+    return bumpy_torus_at(angles, tube);
 }
 
 // The distance from p to the closest point of triangle abc (Ericson's regions), exact in double.
@@ -273,25 +282,10 @@ TEST(DenseTrianglesPerFace, AFaceCoversItsAreaOverTheAreaOfMsTriangles) {
 // about 93 triangles of M each, more than 4^3, so they take level 4, the sparse half's 23 keep 3.
 Dense uneven_torus() {
     constexpr int dense = 93, sparse = 23, tube = 16;
-    Dense m;
     std::vector<double> angles;
     for (int i = 0; i < dense; ++i) angles.push_back(M_PI * i / dense);
     for (int i = 0; i < sparse; ++i) angles.push_back(M_PI + M_PI * i / sparse);
-    const int around = static_cast<int>(angles.size());
-    for (double u : angles)
-        for (int j = 0; j < tube; ++j) {
-            const double v = 2 * M_PI * j / tube;
-            const double r = 0.35 + 0.02 * std::sin(9 * u) * std::cos(5 * v);
-            m.positions.push_back({(1 + r * std::cos(v)) * std::cos(u), (1 + r * std::cos(v)) * std::sin(u), r * std::sin(v)});
-        }
-    auto at = [&](int i, int j) { return static_cast<std::uint32_t>((i % around) * tube + (j % tube)); };
-    for (int i = 0; i < around; ++i)
-        for (int j = 0; j < tube; ++j) {
-            m.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
-            m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
-        }
-    m.diagonal = glm::distance(glm::dvec3(-1.4, -1.4, -0.4), glm::dvec3(1.4, 1.4, 0.4));
-    return m;
+    return bumpy_torus_at(angles, tube);
 }
 
 // The cage's faces 8 i .. 8 i + 7 lie between the circles at angles 2 pi i / 8 and 2 pi (i + 1) / 8.

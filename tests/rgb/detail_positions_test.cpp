@@ -58,6 +58,16 @@ std::vector<std::uint8_t> mixed_levels(const rgb::BaseMesh& base) {
 }
 
 // Every point of Σ_level of every face, unreduced, in that face.
+// Whether the detail of `affine` gives at p the affine function's value at p's base-space position,
+// within 1e-12 relative (interpolation reproduces an affine function).
+::testing::AssertionResult reproduces_affine(const DetailPositions& detail, const rgb::BaseMesh& base, const SurfacePoint& p) {
+    const glm::dvec3 expected = affine(rgb::base_space_position(base, rgb::reduced(p)));
+    const glm::dvec3 got = detail.position(base, p);
+    if (glm::distance(got, expected) <= 1e-12 * (1.0 + glm::length(expected))) return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure() << "face " << p.face << " level " << p.level << ": got (" << got.x << ", " << got.y << ", "
+                                         << got.z << "), expected (" << expected.x << ", " << expected.y << ", " << expected.z << ")";
+}
+
 std::vector<SurfacePoint> every_address(const rgb::BaseMesh& base, int level) {
     std::vector<SurfacePoint> points;
     const std::uint32_t n = 1u << level;
@@ -126,12 +136,8 @@ TEST_P(DetailOnMeshes, FinerPointsInterpolateTheGridLinearly) {
         const std::uint32_t n = 1u << p.level;
         const std::uint32_t a1 = rng() % (n + 1), a2 = rng() % (n + 1 - a1);
         p.a = {n - a1 - a2, a1, a2};
-        const glm::dvec3 expected = affine(rgb::base_space_position(base, rgb::reduced(p)));
+        EXPECT_TRUE(reproduces_affine(*detail, base, p));
         const glm::dvec3 got = detail->position(base, p);
-        const double scale = 1.0 + glm::length(expected);
-        EXPECT_NEAR(got.x, expected.x, 1e-12 * scale);
-        EXPECT_NEAR(got.y, expected.y, 1e-12 * scale);
-        EXPECT_NEAR(got.z, expected.z, 1e-12 * scale);
         // Any face of a point on a base edge gives the same bits.
         for (std::uint32_t g = 0; g < base.num_faces(); ++g) {
             if (const auto q = rgb::in_face(base, rgb::reduced(p), g)) {
@@ -250,12 +256,7 @@ TEST_P(DetailOnMeshes, MixedLevelsInterpolateLinearlyInFacesAndAlongEdges) {
     const auto detail = sampled(base, levels, affine);
     const auto wavy_detail = sampled(base, levels, wavy);
     for (const SurfacePoint& p : every_address(base, 6)) {
-        const glm::dvec3 expected = affine(rgb::base_space_position(base, rgb::reduced(p)));
-        const glm::dvec3 got = detail->position(base, p);
-        const double scale = 1.0 + glm::length(expected);
-        ASSERT_NEAR(got.x, expected.x, 1e-12 * scale);
-        ASSERT_NEAR(got.y, expected.y, 1e-12 * scale);
-        ASSERT_NEAR(got.z, expected.z, 1e-12 * scale);
+        ASSERT_TRUE(reproduces_affine(*detail, base, p));
         // An edge point one level finer than its edge lies halfway between its neighbours on the edge.
         const SurfacePoint r = rgb::reduced(p);
         const auto h = rgb::base_edge_of(r);
