@@ -3,6 +3,7 @@
 // document writes (rgb/values/vertex_channel.h, rgb/values/mesh_uvs.h), read back by the OBJ reader. The display
 // follows the edits slot by slot (Document::geometry), so this checks its incremental updates, and
 // then its rebuild.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <filesystem>
@@ -24,7 +25,11 @@ constexpr int kCells = 4;
 // A flat kCells x kCells grid with colours that no linear rule reproduces, and texture coordinates
 // bent the same way, cut by a UV seam down the middle (the right half's UVs shifted by 2 in u).
 std::filesystem::path write_grid() {
-    const std::filesystem::path folder = std::filesystem::path(::testing::TempDir()) / "display_channels";
+    // A folder per test (its parameter too): ctest runs the instances at once, in processes of their own.
+    const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
+    std::string name = std::string(test->test_suite_name()) + "." + test->name();
+    std::replace(name.begin(), name.end(), '/', '_');
+    const std::filesystem::path folder = std::filesystem::path(::testing::TempDir()) / ("display_channels_" + name);
     std::filesystem::remove_all(folder);
     std::filesystem::create_directories(folder);
     const std::filesystem::path path = folder / "grid.obj";
