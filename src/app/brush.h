@@ -2,6 +2,8 @@
 // The level-of-detail brush as the editor holds it: a mode, a target level, a radius in screen pixels
 // or world units, a falloff. A dab becomes an rgb::Dab in base space (rgb/lod/dab.h), the same request a
 // recorded stroke replays. GL-free.
+#include <cstdint>
+
 #include <glm/vec3.hpp>
 
 #include "rgb/lod/dab.h"
@@ -34,6 +36,9 @@ struct BrushSettings {
     RadiusUnit detail_unit = RadiusUnit::ScreenPixels;
     float detail_px = 6.0f;
     float detail_world = 0.01f;
+    // Symmetric painting: every dab with its mirror images across these planes of the mesh's own
+    // frame (rgbio::kMirrorX | kMirrorY | kMirrorZ; rgbio::with_mirror_images).
+    std::uint8_t mirror = 0;
 };
 
 // Shift inverts: refine becomes coarsen down to the base level (so it always removes what refining

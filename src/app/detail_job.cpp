@@ -31,7 +31,7 @@ bool DetailJob::step(std::chrono::microseconds slice) {
     return false;
 }
 
-float DetailJob::progress() const { return state_->driver.done() ? 1.0f : 0.0f; }
+float DetailJob::progress() const { return static_cast<float>(state_->driver.progress()); }
 
 bool DetailJob::changed() const {
     const rgb::LodReport& r = state_->driver.report();

@@ -36,7 +36,7 @@ public:
     DetailJob& operator=(const DetailJob&) = delete;
 
     bool step(std::chrono::microseconds slice) override;
-    // The driver cannot know its remaining work: 0 until done, then 1.
+    // The driver's estimate (rgb::LodDriver::progress): it cannot count its splits ahead.
     float progress() const override;
     bool changed() const override;
     std::string label() const override;

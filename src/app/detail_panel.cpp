@@ -2,10 +2,26 @@
 
 #include <imgui.h>
 
+#include <array>
+#include <charconv>
+
 #include "app/editor.h"
 #include "app/hover_tooltip.h"
 
 namespace app {
+namespace {
+
+// The double a person typed or dragged to in a float field: its shortest decimal form (0.1, not
+// 0.10000000149011612), which the job's label, the status line and the script line then print.
+double as_shown(float value) {
+    std::array<char, 32> text{};
+    const auto written = std::to_chars(text.data(), text.data() + text.size(), value);
+    double exact = value;
+    std::from_chars(text.data(), written.ptr, exact);
+    return exact;
+}
+
+}  // namespace
 
 void detail_panel(Editor& editor) {
     if (!ImGui::CollapsingHeader("Detail by size, accuracy, view", ImGuiTreeNodeFlags_DefaultOpen)) return;
@@ -19,8 +35,9 @@ void detail_panel(Editor& editor) {
             "with as few triangles as that allows");
     detail.criterion = static_cast<rgbio::DetailCriterion>(criterion);
     float amount = static_cast<float>(detail.amount.value);
-    ImGui::DragFloat("amount", &amount, amount * 0.01f, 1e-6f, 1e6f, "%.4g", ImGuiSliderFlags_Logarithmic);
-    if (amount > 0.0f) detail.amount.value = amount;
+    // Taken only when changed: the float would otherwise replace the exact default every frame.
+    if (ImGui::DragFloat("amount", &amount, amount * 0.01f, 1e-6f, 1e6f, "%.4g", ImGuiSliderFlags_Logarithmic) && amount > 0.0f)
+        detail.amount.value = as_shown(amount);
     ImGui::SameLine();
     ImGui::Checkbox("%", &detail.amount.percent);
     hover_tooltip("On: a percentage of the mesh's bounding-box diagonal; off: the mesh's units");

@@ -28,18 +28,25 @@ namespace {
 constexpr float kDabSpacing = 0.25f;  // of the brush radius: dabs overlap enough to leave no gaps
 constexpr std::size_t kMaxRecentFiles = 8;
 
+EditorOptions options_for(glm::ivec2 viewport) {
+    EditorOptions options;
+    options.viewport = viewport;
+    return options;
+}
+
 double milliseconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 }  // namespace
 
-Editor::Editor(glm::ivec2 viewport) : Editor(EditorOptions{viewport, std::nullopt, 0, 0.0f, std::chrono::seconds(120), kDenseMeshTriangles}) {}
+Editor::Editor(glm::ivec2 viewport) : Editor(options_for(viewport)) {}
 
 Editor::Editor(const EditorOptions& options)
     : viewport_(options.viewport), recovery_interval_(options.recovery_interval), covered_right_(options.covered_right),
       rollback_reserve_(new char[kRollbackReserve]) {
     dense_mesh_triangles_ = options.dense_mesh_triangles;
+    samples_folder_ = options.samples_folder;
     frame_mesh();
     recovery_due_ = std::chrono::steady_clock::now() + recovery_interval_;
     if (!options.recovery_folder) return;
@@ -96,6 +103,14 @@ void Editor::scrolled(float steps) {
 
 void Editor::key_pressed(Key key, Modifiers mods) {
     mods_ = mods;
+    // Blender's numpad: front, right and top, Ctrl for the opposite side; 5 toggles the projection.
+    switch (key) {
+        case Key::Keypad1: camera_.look_from(mods.ctrl ? ViewCamera::Axis::Back : ViewCamera::Axis::Front); return;
+        case Key::Keypad3: camera_.look_from(mods.ctrl ? ViewCamera::Axis::Left : ViewCamera::Axis::Right); return;
+        case Key::Keypad7: camera_.look_from(mods.ctrl ? ViewCamera::Axis::Bottom : ViewCamera::Axis::Top); return;
+        case Key::Keypad5: camera_.set_orthographic(!camera_.camera().orthographic); return;
+        default: break;
+    }
     if (mods.ctrl) {
         switch (key) {
             case Key::Z: mods.shift ? redo() : undo(); break;
@@ -263,7 +278,10 @@ void Editor::dab(glm::vec2 px) {
     } else {
         const rgb::Dab request = make_dab(brush_, mods_.shift, at, camera_.ray_through(px, viewport_).direction);
         const int from_level = mesh.level(hit->face);
-        stroke_->add([&mesh, request, from_level] { return dab_pieces(mesh, request, from_level); }, stroke_script_.lines(request));
+        // The dab and its mirror images, in the order its script line applies them.
+        std::string lines = stroke_script_.lines(request, brush_.mirror);
+        for (const rgb::Dab& image : rgbio::with_mirror_images(request, brush_.mirror))
+            stroke_->add([&mesh, image, from_level] { return dab_pieces(mesh, image, from_level); }, std::exchange(lines, std::string()));
     }
     ++timing_.dabs;
     last_hit_point_ = hit->point;

@@ -63,6 +63,9 @@ struct EditorOptions {
     std::chrono::seconds recovery_interval{120};
     // Opening a plain mesh with more triangles asks first (Pending::DenseMesh).
     std::size_t dense_mesh_triangles = kDenseMeshTriangles;
+    // The files that ship with rgbsub (the window: the source tree's assets): one opened from here is
+    // a sample, which Save never writes over; its first save asks where (suggested_path()).
+    std::optional<std::filesystem::path> samples_folder;
 };
 
 // What the engine and picking cost, for the statistics panel and the benchmarks.
@@ -203,8 +206,9 @@ public:
     // with suggested_path() (NAME_cage.obj) for Save. Otherwise the mesh opens as a base mesh.
     // answer_pending(false) opens nothing.
     void answer_dense_mesh(bool make_cage);
-    // Where Save proposes to write an unsaved document that has no file yet ("" if none): Ctrl+S then
-    // opens the browser there instead of refusing.
+    // Where Save proposes to write a document that has no file of its own yet ("" if none): a cage
+    // made here, or a sample (the same name in the home folder). Ctrl+S then opens the browser there
+    // instead of refusing or writing over the sample.
     const std::string& suggested_path() const { return suggested_path_; }
     // The dialog's Stop while the cage is made (Esc does the same): the document stays as it was.
     void stop_remesh();
@@ -261,11 +265,20 @@ private:
     // A file read, with the user's consent to replace the document: asks Pending::DenseMesh for a
     // dense plain mesh, opens it otherwise.
     void take_opened(LoadedDocument loaded, const std::string& path);
+    // The document is now the file `path`, read with `warnings`: says so, resets the view.
+    void show_opened(const std::string& path, const std::vector<std::string>& warnings);
+    // Whether `path` lies in the samples folder (EditorOptions::samples_folder), and where Save then
+    // proposes to write it ("" for any other file).
+    bool is_sample(const std::string& path) const;
+    std::string save_suggestion(const std::string& path) const;
     // A remesh's result arrived (editor_files.cpp).
     void remeshed(BackgroundTask& task);
     // The recovery copy: written when `force`d or due, if there is unsaved work not yet in it.
     void keep_recovery_copy(bool force);
     void poll_recovery_task();
+    // Nothing left unsaved (saved, opened, a clean exit): the copy goes, and the next change is
+    // copied at once.
+    void drop_recovery_copy();
     // Ends the job at the front (its edit with it) and starts on the next.
     void finish_front();
     void begin_crease_drag(bool untag);
@@ -318,6 +331,7 @@ private:
     std::size_t cage_triangles_ = 0;
     std::size_t smallest_cage_ = 0;
     std::string suggested_path_;
+    std::optional<std::filesystem::path> samples_folder_;
     std::string pending_message_;
     bool remesh_drops_looks_ = false;  // the dense mesh had texture coordinates, colours or materials
 
@@ -326,6 +340,7 @@ private:
     std::unique_ptr<BackgroundTask> recovery_task_;
     std::uint64_t recovery_changes_ = 0;  // the change count in the copy (being) written
     std::chrono::steady_clock::time_point recovery_due_;
+    bool recovery_begun_ = false;  // a copy of the unsaved work has been written or tried
     std::chrono::seconds recovery_interval_{120};
     std::optional<RecoveryStore::Orphan> offered_;   // Pending::Recover's copy
     std::optional<RecoveryStore::Orphan> recovered_;  // removed once the own copy holds its work

@@ -61,14 +61,19 @@ void Editor::detail_dab(const BaseSpaceHit& at, const glm::dvec3& hit_point) {
         case BrushMode::Coarsen: edit.kind = rgb::RequestKind::Coarsen; break;
         case BrushMode::Set: edit.kind = rgb::RequestKind::Set; break;
     }
-    edit.sphere = rgb::Sphere{at.centre, at.radius};
     rgb::Mesh& mesh = document_.mesh();
-    stroke_->add_whole(
-        [&mesh, edit] {
-            const rgbio::DetailOutcome outcome = rgbio::apply_detail_edit(mesh, edit, rgbio::default_triangle_limit());
-            return rgb::RequestStats{outcome.report.splits, outcome.report.removals, outcome.report.level_cap_bound};
-        },
-        rgbio::format_detail_line(edit) + "\n");
+    // Symmetric: a line for the dab and for each of its mirror images (their balls as a dab's).
+    rgb::Dab ball;
+    ball.centre = at.centre;
+    for (const rgb::Dab& image : rgbio::with_mirror_images(ball, brush_.mirror)) {
+        edit.sphere = rgb::Sphere{image.centre, at.radius};
+        stroke_->add_whole(
+            [&mesh, edit] {
+                const rgbio::DetailOutcome outcome = rgbio::apply_detail_edit(mesh, edit, rgbio::default_triangle_limit());
+                return rgb::RequestStats{outcome.report.splits, outcome.report.removals, outcome.report.level_cap_bound};
+            },
+            rgbio::format_detail_line(edit) + "\n");
+    }
 }
 
 ViewLodJob* Editor::view_lod() const { return jobs_.empty() ? nullptr : dynamic_cast<ViewLodJob*>(jobs_.front().get()); }

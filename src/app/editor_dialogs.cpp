@@ -182,7 +182,8 @@ void file_browser(Editor& editor, FileBrowser& browser) {
     const bool named = browser.name[0] != '\0';
     if ((ImGui::Button(browser.purpose == FileBrowser::Purpose::Open ? "Open" : "Save") || entered) && named) finish(editor, browser);
     ImGui::SameLine();
-    if (ImGui::Button("Cancel")) browser.purpose = FileBrowser::Purpose::None;
+    // Esc: the window gives the editor no keys while a modal is open.
+    if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) browser.purpose = FileBrowser::Purpose::None;
     if (browser.purpose == FileBrowser::Purpose::None) ImGui::CloseCurrentPopup();
     ImGui::EndPopup();
 }

@@ -1,6 +1,7 @@
 // The editor's files: opening and saving (right away, or in the background with the questions
 // first), the questions themselves, the session's strokes as a script, and the recovery copy.
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <thread>
 #include <utility>
@@ -27,17 +28,42 @@ bool Editor::open(const std::string& path) {
     return true;
 }
 
-void Editor::load(const std::string& path) {
-    const std::vector<std::string> warnings = document_.open(path);
-    report(warnings.empty() ? "opened " + path : path + ": " + warnings.front() + (warnings.size() > 1 ? " (and more)" : ""), false);
+void Editor::load(const std::string& path) { show_opened(path, document_.open(path)); }
+
+void Editor::show_opened(const std::string& path, const std::vector<std::string>& warnings) {
+    std::string message = warnings.empty() ? "opened " + path : path + ": " + warnings.front() + (warnings.size() > 1 ? " (and more)" : "");
+    suggested_path_ = save_suggestion(path);
+    if (!suggested_path_.empty()) message += " (a sample that ships with rgbsub: the first save asks where)";
+    report(message, false);
     remember_recent(path);
     reset_view();
-    if (recovery_) recovery_->remove_own();
+    drop_recovery_copy();
+}
+
+bool Editor::is_sample(const std::string& path) const {
+    if (!samples_folder_) return false;
+    std::error_code error;
+    std::filesystem::path folder = std::filesystem::weakly_canonical(*samples_folder_, error);
+    if (error) return false;
+    if (folder.filename().empty()) folder = folder.parent_path();  // written with a trailing separator
+    const std::filesystem::path file = std::filesystem::weakly_canonical(path, error);
+    if (error) return false;
+    return std::mismatch(folder.begin(), folder.end(), file.begin(), file.end()).first == folder.end();
+}
+
+std::string Editor::save_suggestion(const std::string& path) const {
+    if (!is_sample(path)) return "";
+    // In the home folder: beside the sample would be among rgbsub's own files again.
+    const char* home = std::getenv("HOME");
+    std::error_code error;
+    const std::filesystem::path folder =
+        home != nullptr && std::filesystem::is_directory(home, error) ? std::filesystem::path(home) : std::filesystem::current_path(error);
+    return (folder / std::filesystem::path(path).filename()).string();
 }
 
 bool Editor::save() {
-    if (document_.path().empty()) {
-        report("the mesh has no file yet: use Save as", true);
+    if (document_.path().empty() || !suggested_path_.empty()) {
+        report("the mesh has no file of its own yet: use Save as", true);
         return false;
     }
     return save_as(document_.path());
@@ -58,7 +84,7 @@ bool Editor::save_as(const std::string& path) {
     report("saved " + path, false);
     suggested_path_.clear();
     remember_recent(path);
-    if (recovery_) recovery_->remove_own();
+    drop_recovery_copy();
     return true;
 }
 
@@ -114,8 +140,8 @@ void Editor::files_dropped(std::span<const std::string> paths) {
 }
 
 void Editor::request_save() {
-    if (document_.path().empty() && !suggested_path_.empty()) {
-        browse_request_ = Browse::SaveAs;  // a made document (a cage): ask where, never over its source
+    if (!suggested_path_.empty()) {
+        browse_request_ = Browse::SaveAs;  // a made document (a cage) or a sample: ask where, never over its source
         return;
     }
     if (document_.path().empty()) {
@@ -127,7 +153,7 @@ void Editor::request_save() {
 
 void Editor::request_save_as(const std::string& path) {
     std::error_code error;
-    if (path != document_.path() && std::filesystem::exists(path, error)) {
+    if ((path != document_.path() || is_sample(path)) && std::filesystem::exists(path, error)) {
         pending_ = Pending::Overwrite;
         pending_path_ = path;
     } else {
@@ -180,12 +206,13 @@ void Editor::poll_file_task() {
         suggested_path_.clear();
         remember_recent(task->path());
         report("saved " + task->path() + " in " + std::to_string(static_cast<int>(task->seconds() * 1000.0)) + " ms", false);
-        if (recovery_ && !document_.dirty()) recovery_->remove_own();
+        if (!document_.dirty()) drop_recovery_copy();
         quit_ = quit_ || quit_after_save_;
         return;
     }
     if (recovering) {
         document_.adopt(task->take_document(), offered_->document_path, true);
+        suggested_path_ = save_suggestion(document_.path());
         recovered_ = std::exchange(offered_, std::nullopt);
         report("recovered the unsaved work" + (document_.path().empty() ? std::string() : " on " + document_.path()) +
                    ": save it to keep it",
@@ -290,11 +317,7 @@ void Editor::opened(LoadedDocument loaded, const std::string& path) {
     cancel_job();  // nothing may go on working on the mesh being replaced
     const std::vector<std::string> warnings = std::move(loaded.warnings);
     document_.adopt(std::move(loaded), path);
-    suggested_path_.clear();
-    report(warnings.empty() ? "opened " + path : path + ": " + warnings.front() + (warnings.size() > 1 ? " (and more)" : ""), false);
-    remember_recent(path);
-    reset_view();
-    if (recovery_) recovery_->remove_own();
+    show_opened(path, warnings);
 }
 
 void Editor::request_quit() {
@@ -310,8 +333,8 @@ void Editor::request_quit() {
 
 void Editor::save_and_quit() {
     pending_ = Pending::None;
-    if (document_.path().empty()) {
-        report("the mesh has no file yet: give it a name and use Save as", true);
+    if (document_.path().empty() || !suggested_path_.empty()) {
+        report("the mesh has no file of its own yet: give it a name and use Save as", true);
         return;
     }
     request_save();
@@ -357,9 +380,11 @@ void Editor::answer_pending(bool proceed) {
 
 // ---- the recovery copy ------------------------------------------------------------------------
 
+// The first unsaved change is copied at once, so that no crash loses it; later ones on the timer.
 void Editor::keep_recovery_copy(bool force) {
     if (!recovery_ || recovery_task_ || !document_.dirty() || document_.changes() == recovery_changes_) return;
-    if (!force && std::chrono::steady_clock::now() < recovery_due_) return;
+    if (!force && recovery_begun_ && std::chrono::steady_clock::now() < recovery_due_) return;
+    recovery_begun_ = true;
     try {
         recovery_->make_folder();
     } catch (const std::filesystem::filesystem_error& error) {
@@ -382,7 +407,7 @@ void Editor::poll_recovery_task() {
     }
     if (!document_.dirty()) {
         // Saved meanwhile: nothing to recover.
-        recovery_->remove_own();
+        drop_recovery_copy();
         return;
     }
     try {
@@ -397,7 +422,12 @@ void Editor::poll_recovery_task() {
 void Editor::close_session() {
     while (recovery_task_ && !recovery_task_->done()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
     recovery_task_.reset();
+    drop_recovery_copy();
+}
+
+void Editor::drop_recovery_copy() {
     if (recovery_) recovery_->remove_own();
+    recovery_begun_ = false;
 }
 
 }  // namespace app

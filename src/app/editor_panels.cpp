@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cfloat>
+#include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "app/crease_panel.h"
@@ -12,6 +14,7 @@
 #include "app/editor.h"
 #include "app/editor_dialogs.h"
 #include "app/hover_tooltip.h"
+#include "io/script/lod_script.h"
 #include "render/colour_map.h"
 #include "rgb/mesh/mesh.h"
 
@@ -112,6 +115,17 @@ void brush_panel(Editor& editor) {
     ImGui::Checkbox("paint through", &brush.paint_through);
     hover_tooltip("Off: only faces facing you and connected to the point under the cursor change.\n"
             "On: everything within the radius, the far side of thin parts too.");
+    unsigned int mirror = brush.mirror;
+    ImGui::AlignTextToFramePadding();
+    ImGui::TextUnformatted("mirror");
+    for (const auto& [label, plane] : {std::pair{"X##mirror", rgbio::kMirrorX}, std::pair{"Y##mirror", rgbio::kMirrorY},
+                                       std::pair{"Z##mirror", rgbio::kMirrorZ}}) {
+        ImGui::SameLine();
+        ImGui::CheckboxFlags(label, &mirror, plane);
+    }
+    brush.mirror = static_cast<std::uint8_t>(mirror);
+    hover_tooltip("Symmetry: each dab also paints its mirror images across the planes x = 0, y = 0, z = 0 of the mesh's\n"
+                  "own frame (the file's coordinates), one request, saved as one 'dab ... mirror' script line");
     // What a drag does now: Shift visibly turns refining into removing detail.
     const BrushMode active = editor.active_mode();
     const std::string action = std::string(mode_name(active)) +
@@ -153,10 +167,12 @@ void actions_panel(Editor& editor, PanelState& state) {
     const UndoHistory& history = editor.document().history();
     const std::string undo = history.can_undo() ? "Undo " + history.undo_label() : std::string("Undo");
     const std::string redo = history.can_redo() ? "Redo " + history.redo_label() : std::string("Redo");
-    if (ImGui::Button(undo.c_str())) editor.undo();
+    // Half the row each, named by a fixed id: Redo stays put when Undo's label changes.
+    const ImVec2 half((ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ItemSpacing.x) / 2.0f, 0.0f);
+    if (ImGui::Button((undo + "###undo").c_str(), half)) editor.undo();
     hover_tooltip("Ctrl+Z");
     ImGui::SameLine();
-    if (ImGui::Button(redo.c_str())) editor.redo();
+    if (ImGui::Button((redo + "###redo").c_str(), half)) editor.redo();
     hover_tooltip("Ctrl+Shift+Z or Ctrl+Y");
     ImGui::Text("%zu/%zu steps, history %.1f of %.0f MB", history.undo_steps(), history.undo_steps() + history.redo_steps(),
                 static_cast<double>(history.bytes()) / 1e6, static_cast<double>(history.byte_bound()) / 1e6);
@@ -164,8 +180,8 @@ void actions_panel(Editor& editor, PanelState& state) {
 
 void files_panel(Editor& editor, PanelState& state) {
     // The field follows the document, and goes back to it after a file that could not be opened.
-    // A made document without a file (a cage) shows the name Save proposes.
-    const std::string& shown = editor.document().path().empty() ? editor.suggested_path() : editor.document().path();
+    // A made document without a file (a cage) or a sample shows the name Save proposes.
+    const std::string& shown = editor.suggested_path().empty() ? editor.document().path() : editor.suggested_path();
     if (shown != state.shown_document_path || editor.open_failures() != state.seen_open_failures) {
         state.shown_document_path = shown;
         state.seen_open_failures = editor.open_failures();
@@ -193,23 +209,32 @@ void files_panel(Editor& editor, PanelState& state) {
     ImGui::RadioButton("limit", &positions, 1);
     hover_tooltip("Which positions a save writes: as shown, or on the Loop limit surface");
     editor.save_options().positions = static_cast<rgbio::SavedPositions>(positions);
-    if (const std::optional<rgb::UvInterpolation> uv = editor.document().uv_interpolation()) {
-        int option = static_cast<int>(*uv);
-        if (ImGui::Combo("UV interpolation", &option, "none\0corners\0boundaries\0all\0"))
-            editor.document().set_uv_interpolation(static_cast<rgb::UvInterpolation>(option));
-        hover_tooltip("How saved texture coordinates are subdivided (OpenSubdiv's FVAR_LINEAR_* options): none moves every "
-                "UV (seams become smooth curves), corners keeps UV corners in place, boundaries keeps seams and borders "
-                "on their input lines, all is linear");
+    // The UV and recent rows are there (greyed) without UVs or recent files too, so that the rows
+    // below do not move when a file is opened.
+    const std::optional<rgb::UvInterpolation> uv = editor.document().uv_interpolation();
+    ImGui::BeginDisabled(!uv);
+    constexpr const char* kUvOptions[] = {"none", "corners", "boundaries", "all"};
+    if (ImGui::BeginCombo("UV interpolation", uv ? kUvOptions[static_cast<int>(*uv)] : "no texture coordinates")) {
+        for (int option = 0; option < 4; ++option)
+            if (ImGui::Selectable(kUvOptions[option], uv && option == static_cast<int>(*uv)))
+                editor.document().set_uv_interpolation(static_cast<rgb::UvInterpolation>(option));
+        ImGui::EndCombo();
     }
-    if (!editor.recent_files().empty() && ImGui::BeginCombo("recent", "choose a recent file")) {
+    ImGui::EndDisabled();
+    hover_tooltip("How texture coordinates are subdivided, shown and saved (OpenSubdiv's FVAR_LINEAR_* options): none moves\n"
+                  "every UV but those a sharp feature pins (seams become smooth curves), corners keeps UV corners in place,\n"
+                  "boundaries keeps seams and borders on their input lines, all is linear over each base triangle");
+    ImGui::BeginDisabled(editor.recent_files().empty());
+    if (ImGui::BeginCombo("recent", editor.recent_files().empty() ? "no recent files" : "choose a recent file")) {
         for (const std::string& recent : editor.recent_files())
             if (ImGui::Selectable(recent.c_str())) copy_path(state, recent);
         ImGui::EndCombo();
     }
+    ImGui::EndDisabled();
 }
 
 // `detail`: the mesh is a cage with detail, which the distance heat map needs.
-void display_panel(render::RenderOptions& options, bool detail) {
+void display_panel(Editor& editor, render::RenderOptions& options, bool detail) {
     if (!ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) return;
     const auto offered = [detail](const DisplayMode& mode) { return detail || mode.colouring != render::Colouring::DetailDistance; };
     // A mode not offered (the distance heat map after opening a mesh without detail) falls back to the first.
@@ -221,9 +246,9 @@ void display_panel(render::RenderOptions& options, bool detail) {
             if (offered(mode) && ImGui::Selectable(mode.name, &mode == current)) current = &mode;
         ImGui::EndCombo();
     }
-    hover_tooltip("The heat map gives every level one colour of its own. Material colours (Kd), vertex colours and the checker\n"
-            "over the texture coordinates show the file's data, interpolated linearly over each base face (a preview:\n"
-            "a refined save keeps materials, but not yet texture coordinates or colours). On a cage with detail, the\n"
+    hover_tooltip("The heat map gives every level one colour of its own. Material colours (Kd), vertex colours, the checker\n"
+            "over the texture coordinates and the diffuse texture show the file's data: the exact colours and texture\n"
+            "coordinates at the positions' level, the values a saved OBJ of this mesh holds. On a cage with detail, the\n"
             "distance to the dense mesh colours each triangle by its largest departure from it, in fixed bands of the\n"
             "mesh's size (the legend gives them in % and in units)");
     options.shading = current->shading;
@@ -237,6 +262,9 @@ void display_panel(render::RenderOptions& options, bool detail) {
     ImGui::Checkbox("limit positions", &limit);
     hover_tooltip("Show (and pick on) the Loop limit surface instead of the mesh's own positions");
     options.positions = limit ? render::PositionSource::Limit : render::PositionSource::Displayed;
+    bool orthographic = editor.camera().camera().orthographic;
+    if (ImGui::Checkbox("orthographic", &orthographic)) editor.camera().set_orthographic(orthographic);
+    hover_tooltip("Numpad 5. Numpad 1, 3, 7: front, right, top view (Ctrl: back, left, bottom)");
     ImGui::TextDisabled("back faces (through holes): brick-red");
 }
 
@@ -275,6 +303,9 @@ void shortcuts_panel() {
         "- / =            target level down / up\n"
         "1 2 3            refine / coarsen / set level\n"
         "S                sample level under cursor\n"
+        "numpad 1 3 7     front / right / top view\n"
+        "                 (Ctrl: back / left / bottom)\n"
+        "numpad 5         orthographic / perspective\n"
         "Ctrl+Z           undo\n"
         "Ctrl+Shift+Z, Ctrl+Y  redo\n"
         "Ctrl+O           open (file browser)\n"
@@ -332,7 +363,7 @@ void draw_panels(Editor& editor, PanelState& state, render::RenderOptions& optio
         actions_panel(editor, state);
         detail_panel(editor);
         files_panel(editor, state);
-        display_panel(options, editor.document().mesh().base().detail() != nullptr);
+        display_panel(editor, options, editor.document().mesh().base().detail() != nullptr);
         statistics_panel(editor, state);
         shortcuts_panel();
         ImGui::PopItemWidth();

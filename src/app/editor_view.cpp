@@ -2,9 +2,51 @@
 
 #include <imgui.h>
 
+#include <algorithm>
+#include <array>
+
+#include <glm/vec4.hpp>
+
 #include "app/editor.h"
 
 namespace app {
+namespace {
+
+// The mesh frame's axes as the camera sees them, in the bottom left corner: X red, Y green, Z blue,
+// the farthest drawn first so that the nearest lies on top.
+void draw_axis_gizmo(const render::OrbitCamera& camera) {
+    constexpr float kLength = 34.0f, kMargin = 52.0f;
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    const ImVec2 centre(kMargin, display.y - kStatusBarHeight - kMargin);
+    struct Axis {
+        glm::vec4 direction;
+        ImU32 colour;
+        const char* name;
+        float depth = 0.0f;
+        ImVec2 tip{};
+    };
+    std::array<Axis, 3> axes{{{{1, 0, 0, 0}, IM_COL32(230, 60, 60, 255), "X"},
+                              {{0, 1, 0, 0}, IM_COL32(80, 200, 80, 255), "Y"},
+                              {{0, 0, 1, 0}, IM_COL32(70, 120, 240, 255), "Z"}}};
+    const glm::mat4 view = camera.view();
+    for (Axis& axis : axes) {
+        const glm::vec4 seen = view * axis.direction;
+        axis.depth = seen.z;
+        axis.tip = ImVec2(centre.x + kLength * seen.x, centre.y - kLength * seen.y);
+    }
+    std::sort(axes.begin(), axes.end(), [](const Axis& a, const Axis& b) { return a.depth < b.depth; });
+    ImDrawList* draw = ImGui::GetBackgroundDrawList();
+    draw->AddCircleFilled(centre, kLength + 12.0f, IM_COL32(40, 40, 40, 90));
+    for (const Axis& axis : axes) {
+        draw->AddLine(centre, axis.tip, axis.colour, 3.0f);
+        draw->AddCircleFilled(axis.tip, 8.0f, axis.colour);
+        draw->AddText(ImVec2(axis.tip.x - 4.0f, axis.tip.y - 7.0f), IM_COL32(255, 255, 255, 255), axis.name);
+    }
+    draw->AddText(ImVec2(centre.x - kMargin + 6.0f, centre.y - kMargin - 4.0f), IM_COL32(90, 90, 90, 255),
+                  camera.orthographic ? "ortho" : "persp");
+}
+
+}  // namespace
 
 void EditorView::draw(Editor& editor, glm::ivec2 framebuffer, bool show_cursor) {
     Document& document = editor.document();
@@ -28,6 +70,7 @@ void EditorView::draw(Editor& editor, glm::ivec2 framebuffer, bool show_cursor) 
                                                  removes ? glm::vec3(0.2f, 0.55f, 1.0f) : glm::vec3(1.0f, 0.55f, 0.0f)};
         }
     renderer_.draw(editor.camera().camera(), options_, framebuffer);
+    if (axis_gizmo_) draw_axis_gizmo(editor.camera().camera());
 }
 
 }  // namespace app

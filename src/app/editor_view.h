@@ -22,6 +22,8 @@ public:
     void draw(Editor& editor, glm::ivec2 framebuffer, bool show_cursor);
 
     render::RenderOptions& options() { return options_; }
+    // The axis gizmo in the bottom left corner (on unless turned off).
+    void show_axis_gizmo(bool on) { axis_gizmo_ = on; }
     // The window's own work in the last frame (the wait for input left out), for the statistics.
     void set_frame_ms(double ms) { panels_.frame_ms = ms; }
 
@@ -29,6 +31,7 @@ private:
     render::Renderer renderer_;
     render::RenderOptions options_;
     PanelState panels_;
+    bool axis_gizmo_ = true;
 };
 
 }  // namespace app

@@ -13,12 +13,14 @@
 #include <filesystem>
 #include <iostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <unistd.h>
 
 #include "app/editor.h"
 #include "app/editor_view.h"
+#include "app/imgui_input_queue.h"
 #include "app/job_pacer.h"
 
 namespace app {
@@ -26,9 +28,20 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// ImGui's key slots are GLFW's key codes (imgui_impl_glfw's io.KeyMap).
+constexpr ImGuiInputQueue::ModifierSlots kGlfwModifiers{{GLFW_KEY_LEFT_CONTROL, GLFW_KEY_RIGHT_CONTROL},
+                                                        {GLFW_KEY_LEFT_SHIFT, GLFW_KEY_RIGHT_SHIFT},
+                                                        {GLFW_KEY_LEFT_ALT, GLFW_KEY_RIGHT_ALT},
+                                                        {GLFW_KEY_LEFT_SUPER, GLFW_KEY_RIGHT_SUPER}};
+// Frames drawn after the last event: ImGui shows what an input opened (a combo's list, a popup) a
+// frame after it took the input.
+constexpr int kFramesAfterInput = 2;
+
 struct WindowState {
     Editor* editor = nullptr;
+    ImGuiInputQueue imgui_input{kGlfwModifiers};
     bool redraw = true;  // something happened since the last frame
+    int settle_frames = 0;
 };
 
 WindowState& state_of(GLFWwindow* window) { return *static_cast<WindowState*>(glfwGetWindowUserPointer(window)); }
@@ -66,6 +79,10 @@ std::optional<Key> key_of(int glfw_key) {
         case GLFW_KEY_4: return Key::Digit4;
         case GLFW_KEY_5: return Key::Digit5;
         case GLFW_KEY_ESCAPE: return Key::Escape;
+        case GLFW_KEY_KP_1: return Key::Keypad1;
+        case GLFW_KEY_KP_3: return Key::Keypad3;
+        case GLFW_KEY_KP_5: return Key::Keypad5;
+        case GLFW_KEY_KP_7: return Key::Keypad7;
         default: return std::nullopt;
     }
 }
@@ -100,16 +117,19 @@ bool panels_take(double x, double y) {
     return false;
 }
 
-// Installed before ImGui's backend, which chains to them. Every callback runs through
+// ImGui's backend installs none of its own: the mouse, keys and wheel go to ImGui through the
+// window's queue (imgui_input_queue.h), the rest straight to the backend. Every callback runs through
 // Editor::run_guarded: an exception must not unwind through GLFW's C frames (that terminates the
 // program and loses the document).
 void install_callbacks(GLFWwindow* window) {
     glfwSetCursorPosCallback(window, [](GLFWwindow* w, double x, double y) {
         state_of(w).redraw = true;
+        state_of(w).imgui_input.mouse_moved(ImVec2(static_cast<float>(x), static_cast<float>(y)));
         editor_of(w).run_guarded([&] { editor_of(w).mouse_moved(to_pixels(w, x, y)); });
     });
     glfwSetMouseButtonCallback(window, [](GLFWwindow* w, int button, int action, int mods) {
         state_of(w).redraw = true;
+        state_of(w).imgui_input.mouse_button(button, action == GLFW_PRESS);
         const std::optional<MouseButton> b = button_of(button);
         if (!b) return;
         double x = 0.0, y = 0.0;
@@ -119,14 +139,16 @@ void install_callbacks(GLFWwindow* window) {
             if (action == GLFW_RELEASE) editor_of(w).mouse_released(*b);
         });
     });
-    glfwSetScrollCallback(window, [](GLFWwindow* w, double, double dy) {
+    glfwSetScrollCallback(window, [](GLFWwindow* w, double dx, double dy) {
         state_of(w).redraw = true;
+        state_of(w).imgui_input.scrolled(ImVec2(static_cast<float>(dx), static_cast<float>(dy)));
         double x = 0.0, y = 0.0;
         glfwGetCursorPos(w, &x, &y);
         if (!panels_take(x, y)) editor_of(w).run_guarded([&] { editor_of(w).scrolled(static_cast<float>(dy)); });
     });
     glfwSetKeyCallback(window, [](GLFWwindow* w, int key, int, int action, int mods) {
         state_of(w).redraw = true;
+        if (action != GLFW_REPEAT) state_of(w).imgui_input.key(key, action == GLFW_PRESS);
         if (action == GLFW_RELEASE || ImGui::GetIO().WantCaptureKeyboard) return;
         if (const std::optional<Key> k = key_of(key)) editor_of(w).run_guarded([&] { editor_of(w).key_pressed(*k, modifiers_of(mods)); });
     });
@@ -140,8 +162,20 @@ void install_callbacks(GLFWwindow* window) {
         glfwSetWindowShouldClose(w, GLFW_FALSE);  // the editor decides, after asking
         editor_of(w).request_quit();
     });
+    glfwSetCharCallback(window, [](GLFWwindow* w, unsigned int c) {
+        state_of(w).redraw = true;
+        ImGui_ImplGlfw_CharCallback(w, c);
+    });
+    glfwSetCursorEnterCallback(window, [](GLFWwindow* w, int entered) {
+        state_of(w).redraw = true;
+        ImGui_ImplGlfw_CursorEnterCallback(w, entered);
+        if (!entered) state_of(w).imgui_input.mouse_left();
+    });
     glfwSetWindowSizeCallback(window, [](GLFWwindow* w, int, int) { state_of(w).redraw = true; });
-    glfwSetWindowFocusCallback(window, [](GLFWwindow* w, int) { state_of(w).redraw = true; });
+    glfwSetWindowFocusCallback(window, [](GLFWwindow* w, int focused) {
+        state_of(w).redraw = true;
+        ImGui_ImplGlfw_WindowFocusCallback(w, focused);
+    });
 }
 
 GLFWwindow* open_window() {
@@ -189,7 +223,7 @@ void run_loop(GLFWwindow* window, WindowState& state, const WindowLaunch& launch
         // frames until the display has caught up with the mesh (Editor::needs_frames).
         if (only_waiting_for_a_file(editor) && frame >= 2) {
             glfwWaitEventsTimeout(0.05);
-        } else if (editor.needs_frames() || frame < 2 || launch.frames) {
+        } else if (editor.needs_frames() || frame < 2 || launch.frames || state.settle_frames > 0 || !state.imgui_input.empty()) {
             glfwPollEvents();
         } else {
             glfwWaitEventsTimeout(1.0);
@@ -199,7 +233,7 @@ void run_loop(GLFWwindow* window, WindowState& state, const WindowLaunch& launch
                 if (editor.message() == message && !editor.needs_frames()) continue;
             }
         }
-        state.redraw = false;
+        if (std::exchange(state.redraw, false)) state.settle_frames = kFramesAfterInput;
         const auto frame_start = Clock::now();
         int fw = 1, fh = 1;
         glfwGetFramebufferSize(window, &fw, &fh);
@@ -212,6 +246,7 @@ void run_loop(GLFWwindow* window, WindowState& state, const WindowLaunch& launch
         }
         ImGui_ImplOpenGL3_NewFrame();
         ImGui_ImplGlfw_NewFrame();
+        state.imgui_input.deliver(ImGui::GetIO());
         ImGui::NewFrame();
         const bool hovered = glfwGetWindowAttrib(window, GLFW_HOVERED) != 0;
         // A panel button may start work that fails; ImGui's window stack is then closed for it.
@@ -219,6 +254,7 @@ void run_loop(GLFWwindow* window, WindowState& state, const WindowLaunch& launch
         ImGui::Render();
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
         glfwSwapBuffers(window);
+        if (state.imgui_input.empty() && state.settle_frames > 0) --state.settle_frames;
         const double frame_ms = std::chrono::duration<double, std::milli>(Clock::now() - frame_start).count();
         view.set_frame_ms(frame_ms);
         pacer.frame_drawn(frame_ms - editor.timing().frame_ms);
@@ -253,15 +289,17 @@ int run_editor_window(const WindowLaunch& launch) {
     EditorOptions options;
     options.recovery_folder = RecoveryStore::default_folder();
     options.covered_right = kPanelCover;
+    options.samples_folder = RGBSUB_ASSETS_DIR;
     Editor editor(options);
-    WindowState state{&editor};
+    WindowState state;
+    state.editor = &editor;
     glfwSetWindowUserPointer(window, &state);
     install_callbacks(window);
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini next to the user's files
     ImGui::StyleColorsDark();
-    ImGui_ImplGlfw_InitForOpenGL(window, true);
+    ImGui_ImplGlfw_InitForOpenGL(window, false);
     ImGui_ImplOpenGL3_Init("#version 330 core");
     run_loop(window, state, launch, start);
     if (editor.should_quit() || launch.frames) editor.close_session();

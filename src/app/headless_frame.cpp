@@ -56,6 +56,7 @@ render::Image render_editor_frame(Editor& editor, const HeadlessFrame& frame) {
     view.options().shading = frame.shading;
     view.options().colouring = frame.colouring;
     view.options().wireframe = frame.wireframe;
+    view.show_axis_gizmo(frame.axis_gizmo);
     for (int i = 0; i < kSettleFrames; ++i) {
         ImGui_ImplOpenGL3_NewFrame();
         ImGui::NewFrame();

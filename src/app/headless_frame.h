@@ -18,6 +18,9 @@ struct HeadlessFrame {
     // Where the mouse rests, as a fraction of the size (the brush cursor shows there): the middle of
     // what the panel leaves free.
     glm::vec2 cursor{0.37f, 0.5f};
+    // The window's axis gizmo: off, so that a frame shows the mesh and the panels alone (the
+    // screenshots, and tests that judge a frame by its colours).
+    bool axis_gizmo = false;
 };
 
 // Opens `file` in an editor and renders one frame of it. Throws rgbio::ObjError when the file cannot

@@ -5,7 +5,8 @@ namespace app {
 
 enum class MouseButton { Left, Right, Middle };
 
-enum class Key { F, R, Z, Y, S, O, Q, E, LeftBracket, RightBracket, Minus, Equal, Digit1, Digit2, Digit3, Digit4, Digit5, Escape };
+enum class Key { F, R, Z, Y, S, O, Q, E, LeftBracket, RightBracket, Minus, Equal, Digit1, Digit2, Digit3, Digit4, Digit5, Escape,
+                 Keypad1, Keypad3, Keypad5, Keypad7 };
 
 struct Modifiers {
     bool shift = false;

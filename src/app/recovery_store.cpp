@@ -44,8 +44,12 @@ void RecoveryStore::make_folder() const {
     if (std::filesystem::create_directories(folder_)) std::filesystem::permissions(folder_, std::filesystem::perms::owner_all);
 }
 
+// Absolute: the session that recovers may run in another working folder.
 void RecoveryStore::write_note(const std::string& document_path) const {
-    rgbio::write_file_atomically(note_file().string(), std::string(kNoteHeader) + "\n" + document_path + "\n");
+    std::error_code error;
+    const std::string absolute =
+        document_path.empty() ? document_path : std::filesystem::absolute(document_path, error).lexically_normal().string();
+    rgbio::write_file_atomically(note_file().string(), std::string(kNoteHeader) + "\n" + (error ? document_path : absolute) + "\n");
 }
 
 void RecoveryStore::remove_own() const {

@@ -22,7 +22,7 @@ public:
     std::filesystem::path note_file() const;
     // Makes the folder, private to the user. Throws std::filesystem::filesystem_error.
     void make_folder() const;
-    // Writes the note (atomically). Throws rgbio::SaveError.
+    // Writes the note (atomically), the document's path made absolute. Throws rgbio::SaveError.
     void write_note(const std::string& document_path) const;
     // Removes this session's copy (a clean exit, or nothing left unsaved).
     void remove_own() const;

@@ -2,7 +2,7 @@
 
 namespace app {
 
-std::string StrokeScript::lines(const rgb::Dab& dab) {
+std::string StrokeScript::lines(const rgb::Dab& dab, std::uint8_t mirror) {
     const rgbio::BrushEdit brush{dab.mode, dab.level, dab.radius, dab.falloff};
     std::string out;
     if (!brush_ || brush_->mode != brush.mode || brush_->level != brush.level || brush_->radius != brush.radius ||
@@ -10,7 +10,7 @@ std::string StrokeScript::lines(const rgb::Dab& dab) {
         out = rgbio::format_brush_line(brush) + "\n";
         brush_ = brush;
     }
-    return out + rgbio::format_dab_line(rgbio::DabEdit{dab.centre, dab.view}) + "\n";
+    return out + rgbio::format_dab_line(rgbio::DabEdit{dab.centre, dab.view, mirror}) + "\n";
 }
 
 }  // namespace app

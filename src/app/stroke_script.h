@@ -1,8 +1,9 @@
 #pragma once
 // A stroke's dabs as lines of a level-of-detail script (io/script/lod_script.h): a `brush` line whenever the
 // dab's base-space radius or settings differ from the previous dab's (always before the first), then
-// `dab X Y Z [VX VY VZ]`. Numbers are written so that they read back exactly, so `rgbsub apply`
+// `dab X Y Z [VX VY VZ] [mirror AXES]`. Numbers are written so that they read back exactly, so `rgbsub apply`
 // makes the same requests the editor made.
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -13,7 +14,8 @@ namespace app {
 
 class StrokeScript {
 public:
-    std::string lines(const rgb::Dab& dab);
+    // The lines of a dab and its mirror images (rgbio::with_mirror_images): one `dab ... mirror` line.
+    std::string lines(const rgb::Dab& dab, std::uint8_t mirror);
 
 private:
     std::optional<rgbio::BrushEdit> brush_;

@@ -61,10 +61,28 @@ void ViewCamera::zoom(float steps, const glm::dvec3& anchor) {
     fit_clip_planes();
 }
 
+void ViewCamera::look_from(Axis axis) {
+    struct Angles {
+        float azimuth, elevation;
+    };
+    constexpr Angles kFrom[] = {{0.0f, 0.0f}, {180.0f, 0.0f}, {90.0f, 0.0f}, {-90.0f, 0.0f}, {0.0f, 90.0f}, {0.0f, -90.0f}};
+    const Angles angles = kFrom[static_cast<int>(axis)];
+    camera_.azimuth_deg = angles.azimuth;
+    camera_.elevation_deg = angles.elevation;
+    fit_clip_planes();
+}
+
+void ViewCamera::set_orthographic(bool on) {
+    camera_.orthographic = on;
+    fit_clip_planes();
+}
+
+// A parallel view sees what lies behind its eye too (zoomed in, the eye is inside the mesh), so its
+// near plane may be negative.
 void ViewCamera::fit_clip_planes() {
     const float reach = glm::distance(camera_.eye(), scene_.centre) + 1.5f * scene_.radius;
     camera_.far_plane = reach;
-    camera_.near_plane = std::max(reach - 3.0f * scene_.radius, 1e-4f * reach);
+    camera_.near_plane = camera_.orthographic ? reach - 3.0f * scene_.radius : std::max(reach - 3.0f * scene_.radius, 1e-4f * reach);
 }
 
 Ray ViewCamera::ray_through(glm::vec2 px, glm::ivec2 viewport) const {
@@ -72,13 +90,22 @@ Ray ViewCamera::ray_through(glm::vec2 px, glm::ivec2 viewport) const {
     const double x = 2.0 * (px.x + 0.5) / std::max(viewport.x, 1) - 1.0;
     const double y = 1.0 - 2.0 * (px.y + 0.5) / std::max(viewport.y, 1);
     const glm::dvec4 far_point = inverse * glm::dvec4(x, y, 1.0, 1.0);
+    const glm::dvec3 far_end = glm::dvec3(far_point) / far_point.w;
+    if (camera_.orthographic) {
+        // Parallel rays, each from the near plane.
+        const glm::dvec4 near_point = inverse * glm::dvec4(x, y, -1.0, 1.0);
+        const glm::dvec3 near_end = glm::dvec3(near_point) / near_point.w;
+        return {near_end, glm::normalize(far_end - near_end)};
+    }
     const glm::dvec3 eye(camera_.eye());
-    return {eye, glm::normalize(glm::dvec3(far_point) / far_point.w - eye)};
+    return {eye, glm::normalize(far_end - eye)};
 }
 
 double ViewCamera::world_per_pixel(double depth, glm::ivec2 viewport) const {
     const double half_fov = 0.5 * glm::radians(static_cast<double>(camera_.fov_y_deg));
-    return 2.0 * depth * std::tan(half_fov) / std::max(viewport.y, 1);
+    // A parallel view's pixel is as large at any depth as the perspective one's at the target.
+    const double at = camera_.orthographic ? static_cast<double>(camera_.distance) : depth;
+    return 2.0 * at * std::tan(half_fov) / std::max(viewport.y, 1);
 }
 
 double ViewCamera::depth_of(const glm::dvec3& p) const {

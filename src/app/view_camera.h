@@ -25,11 +25,18 @@ public:
     void pan(glm::vec2 delta_px, glm::ivec2 viewport);
     // Wheel steps: positive zooms in, towards `anchor`, which stays where it is on the screen.
     void zoom(float steps, const glm::dvec3& anchor);
+    // Blender's numpad views: looking along an axis of the mesh's frame from its side `axis` names
+    // (Front: from +Z, Right: from +X, Top: from +Y, Y up), at the same target and distance.
+    enum class Axis { Front, Back, Right, Left, Top, Bottom };
+    void look_from(Axis axis);
+    // A parallel projection (render::OrbitCamera::orthographic).
+    void set_orthographic(bool on);
 
     const render::OrbitCamera& camera() const { return camera_; }
     // The ray from the eye through pixel `px` (origin top left, y down).
     Ray ray_through(glm::vec2 px, glm::ivec2 viewport) const;
-    // World length of one pixel at distance `depth` along the view direction.
+    // World length of one pixel at distance `depth` along the view direction (the same at every
+    // depth in a parallel view).
     double world_per_pixel(double depth, glm::ivec2 viewport) const;
     // Distance of `p` from the eye along the view direction.
     double depth_of(const glm::dvec3& p) const;

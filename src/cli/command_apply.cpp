@@ -45,6 +45,7 @@ int run_apply(std::span<const std::string> args) {
                      "                               with as few triangles as that allows; prints the error reached\n"
                      "  brush refine|coarsen|set LEVEL RADIUS [FALLOFF]   the brush for the dab lines that follow\n"
                      "  dab X Y Z [VX VY VZ]         one dab (with a view direction: facing, connected faces only)\n"
+                     "      [mirror x|y|z|xy|...]    and its mirror images across those planes (x = 0, ...)\n"
                      "Blank lines and lines starting with # are skipped. --timings prints the engine time per line,\n"
                      "and for the dabs their count and the engine time per dab (p50, p95).\n"
                      "--plain writes an OBJ without the adaptive state (#rgb lines), for tools that dislike them.\n"

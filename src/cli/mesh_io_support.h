@@ -34,9 +34,10 @@ inline constexpr std::string_view kUvInterpolationOption = "--uv-interpolation";
 inline constexpr std::string_view kUvHelp =
     "  --uv-interpolation none|corners|boundaries|all\n"
     "                      how texture coordinates (vt) are subdivided, as OpenSubdiv's FVAR_LINEAR_*:\n"
-    "                      none moves every UV (seams become smooth curves), corners keeps UV corners\n"
-    "                      (one-triangle spans) in place, boundaries keeps seams and borders on their\n"
-    "                      input lines, all is linear over each input triangle\n"
+    "                      none moves every UV but those a sharp feature pins (seams become smooth\n"
+    "                      curves), corners keeps UV corners (one-triangle spans) in place, boundaries\n"
+    "                      keeps seams and borders on their input lines, all is linear over each input\n"
+    "                      triangle\n"
     "                      (default: the file's, else corners)\n";
 
 // The input's UV layout over its (retagged) base mesh, with --uv-interpolation in place of the file's

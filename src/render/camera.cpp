@@ -47,6 +47,11 @@ glm::dmat4 OrbitCamera::view_double() const {
 glm::mat4 OrbitCamera::view() const { return glm::mat4(view_double()); }
 
 glm::dmat4 OrbitCamera::projection_double(float aspect) const {
+    if (orthographic) {
+        const double half_height = static_cast<double>(distance) * std::tan(0.5 * glm::radians(static_cast<double>(fov_y_deg)));
+        const double half_width = half_height * static_cast<double>(aspect);
+        return glm::ortho(-half_width, half_width, -half_height, half_height, static_cast<double>(near_plane), static_cast<double>(far_plane));
+    }
     return glm::perspective(glm::radians(static_cast<double>(fov_y_deg)), static_cast<double>(aspect), static_cast<double>(near_plane),
                             static_cast<double>(far_plane));
 }
@@ -74,6 +79,9 @@ rgb::ScreenView screen_view(const OrbitCamera& camera, glm::ivec2 size) {
     view.view_projection = glm::dmat4(camera.view_projection(static_cast<float>(size.x) / static_cast<float>(size.y)));
     view.viewport = glm::dvec2(size);
     view.eye = glm::dvec3(camera.eye());
+    // A parallel view sees every face from the same direction: its eye (for what faces away) as far
+    // back along it as makes no difference.
+    if (camera.orthographic) view.eye = glm::dvec3(camera.target) + 1e6 * (view.eye - glm::dvec3(camera.target));
     return view;
 }
 

@@ -29,6 +29,9 @@ struct OrbitCamera {
     float fov_y_deg = 35.0f;
     float near_plane = 0.01f;
     float far_plane = 100.0f;
+    // Parallel projection, as large as the perspective one at the target (so toggling it keeps what
+    // is at the target's depth the same size on screen).
+    bool orthographic = false;
 
     glm::vec3 eye() const;
     glm::mat4 view() const;

@@ -2,7 +2,10 @@
 // view-dependent mode follows the camera, settles, and freezing it (button, Esc, or saving) leaves one
 // undo step that gives the mesh before the mode back; the whole-mesh tolerance edit gives the command
 // line's mesh and replays from the session's script.
+#include <algorithm>
+#include <chrono>
 #include <filesystem>
+#include <iterator>
 #include <string>
 #include <variant>
 #include <vector>
@@ -124,6 +127,25 @@ TEST_F(EditorDetail, WholeMeshToleranceGivesTheCommandLinesMesh) {
     EXPECT_TRUE(rgbtest::same_mesh(expected, mesh()));
     ASSERT_EQ(editor.document().history().undo_steps(), 1u);
     EXPECT_EQ(editor.document().history().undo_label(), "tolerance 0.3%");
+}
+
+// The status line's bar moves while the edit runs: the progress rises through many values between
+// 0 and 1 over the frames, never back.
+TEST_F(EditorDetail, WholeMeshEditReportsItsProgressAsItGoes) {
+    editor.detail_settings().criterion = rgbio::DetailCriterion::Tolerance;
+    editor.detail_settings().amount = {0.2, true};
+    editor.start_detail_edit();
+    std::vector<float> shown;
+    while (editor.job() != nullptr) {
+        shown.push_back(editor.job()->progress());
+        editor.update(std::chrono::microseconds(500));
+    }
+    ASSERT_EQ(editor.document().history().undo_steps(), 1u) << editor.message();
+    EXPECT_TRUE(std::is_sorted(shown.begin(), shown.end()));
+    std::vector<float> between;
+    std::copy_if(shown.begin(), shown.end(), std::back_inserter(between), [](float p) { return p > 0.0f && p < 1.0f; });
+    between.erase(std::unique(between.begin(), between.end()), between.end());
+    EXPECT_GE(between.size(), 5u) << "of " << shown.size() << " frames";
 }
 
 // Paints a short stroke (set, 50 px) with the brush's target as set and waits for it; returns the

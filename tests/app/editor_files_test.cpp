@@ -230,6 +230,30 @@ TEST_F(EditorRecovery, UnsavedWorkIsCopiedBeforeWholeMeshActionsAndACleanExitRem
     EXPECT_EQ(files_in_folder(), 0u);
 }
 
+// A crash right after the first stroke loses nothing, whatever folder the next session starts in;
+// later strokes are copied on the timer (two minutes by default), not after each.
+TEST_F(EditorRecovery, TheFirstEditIsCopiedAtOnceNamingTheFileByItsAbsolutePath) {
+    const std::filesystem::path file = fresh_folder(std::string("recovery_first_") + ::testing::UnitTest::GetInstance()->current_test_info()->name()) / "mesh.obj";
+    std::filesystem::copy_file(bunny_path(), file);
+    rgb::Mesh first_stroke;
+    {
+        Editor crashed(options(ended_process()));
+        ASSERT_TRUE(crashed.open(std::filesystem::relative(file).string()));
+        paint(crashed, 0.55f);
+        first_stroke = crashed.document().mesh();
+        paint(crashed, 0.45f);
+    }
+    ASSERT_EQ(files_in_folder(), 2u) << "the copy and its note";
+    Editor editor(options(0));
+    ASSERT_EQ(editor.pending(), Pending::Recover);
+    EXPECT_TRUE(std::filesystem::path(editor.pending_path()).is_absolute()) << editor.pending_path();
+    EXPECT_TRUE(std::filesystem::equivalent(editor.pending_path(), file)) << editor.pending_path();
+    editor.answer_pending(true);
+    editor.finish_work();
+    EXPECT_TRUE(rgbtest::same_mesh(editor.document().mesh(), first_stroke)) << "the second stroke waits for the timer";
+    editor.close_session();
+}
+
 TEST_F(EditorRecovery, SavingLeavesNothingToRecover) {
     EditorOptions o = options(0);
     o.recovery_interval = std::chrono::seconds(0);

@@ -283,5 +283,55 @@ TEST(HeadlessFrame, SharpEdgesAreMagentaLinesInEveryDisplayMode) {
     }
 }
 
+// The Detail panel's amount is a float field: drawn, it leaves the default 0.1% as typed, so the
+// job, the status line and the script line say "0.1%", not the float's "0.10000000149011612%".
+TEST(HeadlessFrame, ThePanelKeepsAmountsAsPeopleWriteThem) {
+    EditorOptions options;
+    options.viewport = {1280, 800};
+    options.covered_right = kPanelCover;
+    Editor editor(options);
+    ASSERT_TRUE(editor.open(test::asset_path("default.obj")));
+    HeadlessFrame frame;
+    render_editor_frame(editor, frame);
+    editor.start_detail_edit();
+    ASSERT_NE(editor.job(), nullptr);
+    EXPECT_EQ(editor.job()->label(), "tolerance 0.1%");
+    editor.finish_work();
+    EXPECT_NE(editor.message().find("tolerance 0.1%"), std::string::npos) << editor.message();
+}
+
+// The axis gizmo in the bottom left corner: the mesh frame's X, Y and Z in red, green and blue; in
+// the top view Y points at the viewer, so its disc covers the centre. Written as gizmo_*.png.
+TEST(HeadlessFrame, TheAxisGizmoShowsTheMeshFramesAxes) {
+    const std::filesystem::path folder = test::fresh_folder("gizmo_frames");
+    EditorOptions options;
+    options.viewport = {1280, 800};
+    Editor editor(options);
+    ASSERT_TRUE(editor.open(test::asset_path("default.obj")));
+    HeadlessFrame frame;
+    frame.axis_gizmo = true;
+    const auto corner_has = [&](const render::Image& image, auto colour) {
+        int n = 0;
+        for (int y = 800 - 26 - 110; y < 800 - 26; ++y)
+            for (int x = 0; x < 110; ++x) n += colour(image.pixel(x, y));
+        return n;
+    };
+    const auto red = [](glm::u8vec4 p) { return p.r > 180 && p.g < 100 && p.b < 100; };
+    const auto green = [](glm::u8vec4 p) { return p.g > 160 && p.r < 120 && p.b < 120; };
+    const auto blue = [](glm::u8vec4 p) { return p.b > 190 && p.r < 120 && p.g < 160; };
+    const render::Image perspective = render_editor_frame(editor, frame);
+    std::ofstream(folder / "gizmo_perspective.png", std::ios::binary) << render::encode_png(perspective);
+    EXPECT_GT(corner_has(perspective, red), 30);
+    EXPECT_GT(corner_has(perspective, green), 30);
+    EXPECT_GT(corner_has(perspective, blue), 30);
+
+    editor.key_pressed(Key::Keypad7, {});
+    editor.key_pressed(Key::Keypad5, {});
+    const render::Image top = render_editor_frame(editor, frame);
+    std::ofstream(folder / "gizmo_top_orthographic.png", std::ios::binary) << render::encode_png(top);
+    const glm::u8vec4 middle = top.pixel(52, 800 - 26 - 52);
+    EXPECT_TRUE(green(middle)) << "Y towards the viewer: " << int(middle.r) << " " << int(middle.g) << " " << int(middle.b);
+}
+
 }  // namespace
 }  // namespace app

@@ -108,10 +108,24 @@ BrushEdit brush_edit(const LineReader& r) {
     return brush;
 }
 
+// "x", "yz", ...: each axis at most once.
+std::uint8_t mirror_axes(const LineReader& r, std::size_t i) {
+    std::uint8_t mirror = 0;
+    for (char axis : r[i]) {
+        const std::uint8_t bit = axis == 'x' ? kMirrorX : axis == 'y' ? kMirrorY : axis == 'z' ? kMirrorZ : 0;
+        if (bit == 0 || (mirror & bit) != 0) r.fail("mirror takes the axes x, y and z, each at most once, not '" + r[i] + "'");
+        mirror |= bit;
+    }
+    return mirror;
+}
+
 DabEdit dab_edit(const LineReader& r) {
-    if (r.size() != 4 && r.size() != 7) r.fail("expected 'dab X Y Z [VX VY VZ]'");
-    DabEdit dab{r.point(1, "a dab coordinate"), std::nullopt};
-    if (r.size() == 7) {
+    std::size_t words = r.size();
+    const bool mirrored = words >= 6 && r[words - 2] == "mirror";
+    if (mirrored) words -= 2;
+    if (words != 4 && words != 7) r.fail("expected 'dab X Y Z [VX VY VZ] [mirror AXES]'");
+    DabEdit dab{r.point(1, "a dab coordinate"), std::nullopt, mirrored ? mirror_axes(r, words + 1) : std::uint8_t{0}};
+    if (words == 7) {
         dab.view = r.point(4, "a view direction component");
         // A length that underflows to 0 or a subnormal (0 0 -1e-300), or overflows, gives no direction to paint along.
         if (!std::isnormal(glm::length(*dab.view)))
@@ -201,7 +215,11 @@ rgb::RequestStats ScriptRunner::run(rgb::Mesh& mesh, const ScriptLine& line) {
         brush_ = *brush;
         return {};
     }
-    if (const auto* dab_line = std::get_if<DabEdit>(&line.edit)) return rgb::apply_dab(mesh, dab(*dab_line));
+    if (const auto* dab_line = std::get_if<DabEdit>(&line.edit)) {
+        rgb::RequestStats stats;
+        for (const rgb::Dab& image : with_mirror_images(dab(*dab_line), dab_line->mirror)) stats += rgb::apply_dab(mesh, image);
+        return stats;
+    }
     const auto& budget = std::get<BudgetEdit>(line.edit);
     rgb::LodSettings settings;
     settings.max_triangles = budget.triangles;
@@ -232,11 +250,31 @@ std::string format_detail_line(const DetailEdit& edit) {
     return out;
 }
 
+std::vector<rgb::Dab> with_mirror_images(const rgb::Dab& dab, std::uint8_t mirror) {
+    std::vector<rgb::Dab> dabs{dab};
+    for (std::uint8_t planes = 1; planes <= 7; ++planes) {
+        if ((planes & mirror) != planes) continue;
+        rgb::Dab image = dab;
+        for (int axis = 0; axis < 3; ++axis) {
+            if ((planes & (1 << axis)) == 0) continue;
+            image.centre[axis] = -image.centre[axis];
+            if (image.view) (*image.view)[axis] = -(*image.view)[axis];
+        }
+        dabs.push_back(image);
+    }
+    return dabs;
+}
+
 std::string format_dab_line(const DabEdit& dab) {
     std::string out = "dab";
     for (int i = 0; i < 3; ++i) append_double(out, dab.centre[i]);
     if (dab.view)
         for (int i = 0; i < 3; ++i) append_double(out, (*dab.view)[i]);
+    if (dab.mirror != 0) {
+        out += " mirror ";
+        for (int axis = 0; axis < 3; ++axis)
+            if ((dab.mirror & (1 << axis)) != 0) out += "xyz"[axis];
+    }
     return out;
 }
 

@@ -16,10 +16,14 @@
 //                                detail, `coarsen` only removes it: rgb/lod/lod_criteria.h)
 //   brush refine|coarsen|set LEVEL RADIUS [FALLOFF]
 //                                the brush that the following dabs use (FALLOFF: fraction 0..1)
-//   dab X Y Z [VX VY VZ]         one dab at X Y Z; with a view direction, only faces facing it and
-//                                connected to the dab's face through the surface are painted
+//   dab X Y Z [VX VY VZ] [mirror AXES]
+//                                one dab at X Y Z; with a view direction, only faces facing it and
+//                                connected to the dab's face through the surface are painted; with
+//                                mirror (AXES: x, y, z or several, as xz), the dab and its mirror
+//                                images across those planes of base space (x = 0, ...) as one request
 // Blank lines and lines starting with # are skipped.
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <variant>
@@ -46,10 +50,20 @@ struct BrushEdit {
     double radius = 0.0;
     double falloff = 0.0;
 };
+// Mirror planes of base space (the mesh's own frame), a bit each: across x = 0, y = 0, z = 0.
+inline constexpr std::uint8_t kMirrorX = 1, kMirrorY = 2, kMirrorZ = 4;
+
 struct DabEdit {
     glm::dvec3 centre{0.0};
     std::optional<glm::dvec3> view;
+    std::uint8_t mirror = 0;  // kMirrorX | kMirrorY | kMirrorZ
 };
+
+// A dab and its mirror images across the planes in `mirror` (symmetric painting): the dab first,
+// then the image across each set of those planes in the order of its bits (x, y, xy, z, xz, yz, xyz),
+// centre and view direction reflected. Applied in this order they are one request: `dab ... mirror`
+// lines and the editor's symmetric brush give the same mesh.
+std::vector<rgb::Dab> with_mirror_images(const rgb::Dab& dab, std::uint8_t mirror);
 
 struct ScriptLine {
     std::size_t line = 0;

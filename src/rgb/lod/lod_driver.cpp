@@ -1,6 +1,7 @@
 #include "rgb/lod/lod_driver.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include <glm/common.hpp>
@@ -37,6 +38,7 @@ LodDriver::LodDriver(Mesh& mesh, LodSettings settings)
     }
     morton_ = MortonFrame::of_box(lo, hi);
     doomed_ = detail_coarsest_first(mesh_);
+    doomed_at_start_ = doomed_.size();
     // The default value reads limits from the driver's own array (edge_key); a criterion of the
     // caller's, or sharp features (whose vertices need no limit for some values), take the general way.
     const auto* value = settings_.value.target<double (*)(const Mesh&, VertexId, VertexId, int)>();
@@ -171,6 +173,7 @@ void LodDriver::start_refining() {
     key_and_push();
     band_ = bands_.num_bands() - 1;
     while (band_ > 0 && bands_.empty(band_)) --band_;
+    first_band_ = band_;
 }
 
 void LodDriver::push(const Candidate& c) {
@@ -315,6 +318,21 @@ std::size_t LodDriver::pending() const {
     for (std::size_t b = 0; b <= band_ && b < bands_.num_bands(); ++b) n += bands_.size(b);
     if (band_sorted_) n += band_list_.size() - band_next_;
     return n;
+}
+
+double LodDriver::progress() const {
+    if (done_) return 1.0;
+    if (!(settings_.threshold > 0.0)) return 0.0;
+    const double removals_share = doomed_at_start_ > 0 ? 0.5 : 0.0;
+    if (!refining_) return removals_share * (1.0 - static_cast<double>(doomed_.size()) / static_cast<double>(doomed_at_start_));
+    // Every wanted split's band is at least the threshold's (value_band grows with the value).
+    const std::size_t last = static_cast<std::size_t>(value_band(settings_.threshold));
+    if (first_band_ < last) return removals_share;
+    const double in_band = band_sorted_ && !band_list_.empty() ? static_cast<double>(band_next_) / static_cast<double>(band_list_.size()) : 0.0;
+    const double bands_taken = static_cast<double>(first_band_ - std::max(band_, last)) + in_band;
+    // Weights 1, 2, 4, ... over the bands: the share of their sum taken so far.
+    const double splits_share = (std::exp2(bands_taken) - 1.0) / (std::exp2(static_cast<double>(first_band_ - last + 1)) - 1.0);
+    return removals_share + (1.0 - removals_share) * std::min(splits_share, 1.0);
 }
 
 bool LodDriver::step() {

@@ -88,6 +88,12 @@ public:
     const LodReport& report() const { return report_; }
     // Candidate splits still queued, stale ones included (for progress display).
     std::size_t pending() const;
+    // How far a run with a threshold has got, 0 to 1, for a progress bar (a run cannot count its
+    // splits ahead): the old detail's removals by count over the first half when there was any, then
+    // the bands from the first down to the threshold's, each weighing twice the band before it (a
+    // half octave finer holds about twice the splits of a surface), the band under way by the share
+    // of its sorted list taken. A budget run (threshold 0) says 0 until done; then 1.
+    double progress() const;
 
 private:
     // 16 bytes: the edge's level is not stored, as it is the finer endpoint's (an edge of Σk, k > 0,
@@ -177,6 +183,7 @@ private:
     };
     std::vector<Unkeyed> unkeyed_;
     LodReport report_, report_before_start_;
+    std::size_t doomed_at_start_ = 0, first_band_ = 0;  // for progress()
     std::size_t steps_ = 0;
     bool refining_ = false, done_ = false;
     // The uniform start: its lowest-ranking vertex (a budget stopping above it proves the start
