@@ -20,7 +20,7 @@
 
 #include "app/editor.h"
 #include "app/editor_view.h"
-#include "app/imgui_input_queue.h"
+#include "app/ui_input_queue.h"
 #include "app/job_pacer.h"
 
 namespace app {
@@ -29,7 +29,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 // ImGui's key slots are GLFW's key codes (imgui_impl_glfw's io.KeyMap).
-constexpr ImGuiInputQueue::ModifierSlots kGlfwModifiers{{GLFW_KEY_LEFT_CONTROL, GLFW_KEY_RIGHT_CONTROL},
+constexpr UiInputQueue::ModifierSlots kGlfwModifiers{{GLFW_KEY_LEFT_CONTROL, GLFW_KEY_RIGHT_CONTROL},
                                                         {GLFW_KEY_LEFT_SHIFT, GLFW_KEY_RIGHT_SHIFT},
                                                         {GLFW_KEY_LEFT_ALT, GLFW_KEY_RIGHT_ALT},
                                                         {GLFW_KEY_LEFT_SUPER, GLFW_KEY_RIGHT_SUPER}};
@@ -39,7 +39,7 @@ constexpr int kFramesAfterInput = 2;
 
 struct WindowState {
     Editor* editor = nullptr;
-    ImGuiInputQueue imgui_input{kGlfwModifiers};
+    UiInputQueue imgui_input{kGlfwModifiers};
     bool redraw = true;  // something happened since the last frame
     int settle_frames = 0;
 };
@@ -118,7 +118,7 @@ bool panels_take(double x, double y) {
 }
 
 // ImGui's backend installs none of its own: the mouse, keys and wheel go to ImGui through the
-// window's queue (imgui_input_queue.h), the rest straight to the backend. Every callback runs through
+// window's queue (ui_input_queue.h), the rest straight to the backend. Every callback runs through
 // Editor::run_guarded: an exception must not unwind through GLFW's C frames (that terminates the
 // program and loses the document).
 void install_callbacks(GLFWwindow* window) {

@@ -13,7 +13,7 @@
 #include "app/crease_tool.h"
 #include "app/editor.h"
 #include "app/editor_panels.h"
-#include "app/imgui_input_queue.h"
+#include "app/ui_input_queue.h"
 #include "test_paths.h"
 #include "textured_quad.h"
 
@@ -89,7 +89,7 @@ TEST_F(Panels, RowsStayWhereTheyAreWhateverTheDocumentHolds) {
     EXPECT_EQ(panel_rows_height(), fresh) << "with crease tags, the crease tool on and an undo step";
 }
 
-// The window's queue (imgui_input_queue.h): a click and a key tap whose press and release both came
+// The window's queue (ui_input_queue.h): a click and a key tap whose press and release both came
 // between two frames each reach ImGui, the click where it was pressed.
 class QueuedInput : public ::testing::Test {
 protected:
@@ -110,7 +110,7 @@ protected:
     }
 
     static constexpr int kTappedSlot = 65;
-    ImGuiInputQueue queue{{{300, 301}, {302, 303}, {304, 305}, {306, 307}}};
+    UiInputQueue queue{{{300, 301}, {302, 303}, {304, 305}, {306, 307}}};
     int clicks = 0, key_presses = 0;
 };
 

@@ -1,8 +1,8 @@
-#include "app/imgui_input_queue.h"
+#include "app/ui_input_queue.h"
 
 namespace app {
 
-void ImGuiInputQueue::deliver(ImGuiIO& io) {
+void UiInputQueue::deliver(ImGuiIO& io) {
     std::array<bool, kButtons> button_changed{};
     std::array<bool, kKeySlots> key_changed{};
     bool any_button_changed = false, moved = false, wheeled = false;

@@ -1,11 +1,12 @@
 #pragma once
 // The window's mouse and key events for ImGui, queued as they come and handed over a frame at a
-// time. ImGui 1.86 reads the input as a state at each frame's start, so a press and its release
-// between two frames (a quick click, a key tapped while frames are slow) left no trace, and a
-// click landed where the pointer was at the frame's start rather than where it was pressed. Here
-// each frame takes the events in order up to the first that would undo a change it already took
-// (ImGui 1.87's "trickle" rule): the press goes in one frame, the release in the next, each at the
-// position it happened at. The window draws frames until the queue is empty.
+// time. Debian 12's ImGui (1.86, the one we build with) reads the input as a state at each frame's
+// start, so a press and its release between two frames (a quick click, a key tapped while frames are
+// slow) left no trace, and a click landed where the pointer was at the frame's start rather than
+// where it was pressed. Here each frame takes the events in order up to the first that would undo a
+// change it already took (the rule of ImGui's own event queue from 1.87 on; ours until Debian's
+// ImGui has it): the press goes in one frame, the release in the next, each at the position it
+// happened at. The window draws frames until the queue is empty.
 #include <array>
 #include <cfloat>
 #include <deque>
@@ -14,13 +15,13 @@
 
 namespace app {
 
-class ImGuiInputQueue {
+class UiInputQueue {
 public:
     // ImGui's key slots (io.KeysDown) of the modifier keys, left and right, for io.KeyCtrl and the rest.
     struct ModifierSlots {
         std::array<int, 2> ctrl, shift, alt, super;
     };
-    explicit ImGuiInputQueue(const ModifierSlots& modifiers) : modifiers_(modifiers) {}
+    explicit UiInputQueue(const ModifierSlots& modifiers) : modifiers_(modifiers) {}
 
     void mouse_moved(ImVec2 position) { events_.push_back({Kind::Move, 0, false, position}); }
     // The pointer left the window: ImGui hovers nothing.
