@@ -100,9 +100,10 @@ std::size_t closed_vertices(long genus) {
 
 }  // namespace
 
+double triangle_area(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) { return 0.5 * glm::length(glm::cross(b - a, c - a)); }
+
 double triangle_area(std::span<const glm::dvec3> positions, const rgb::Triangle& t) {
-    const glm::dvec3 a = positions[t[0]];
-    return 0.5 * glm::length(glm::cross(positions[t[1]] - a, positions[t[2]] - a));
+    return triangle_area(positions[t[0]], positions[t[1]], positions[t[2]]);
 }
 
 // Faces grouped by component (through shared vertex indices), components in order of first face;

@@ -72,6 +72,8 @@ std::vector<ComponentPart> split_components(std::span<const glm::dvec3> position
 bool canonical_before(const ComponentTopology& a, const ComponentTopology& b);
 // "genus G with B boundary loops (Euler characteristic X)", for messages.
 std::string describe(const ComponentTopology& c);
+// The area of a triangle, given by its corners or by indices into positions.
+double triangle_area(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c);
 double triangle_area(std::span<const glm::dvec3> positions, const rgb::Triangle& t);
 
 }  // namespace rgbdetail

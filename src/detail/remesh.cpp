@@ -82,7 +82,7 @@ FeatureGraph dense_features(std::span<const glm::dvec3> positions, std::span<con
     if (!options.sharp_angle || options.cage_positions) return {};
     double area = 0.0;
     for (const rgb::Triangle& t : triangles)
-        area += 0.5 * glm::length(glm::cross(positions[t[1]] - positions[t[0]], positions[t[2]] - positions[t[0]]));
+        area += triangle_area(positions, t);
     const double cage_edge = std::sqrt(4.0 * area / (std::sqrt(3.0) * static_cast<double>(std::max<std::size_t>(options.cage_triangles, 1))));
     FeatureGraph features = find_sharp_features(positions, triangles, *options.sharp_angle, cage_edge);
     const std::size_t anchors = feature_anchors(features).size();
@@ -186,7 +186,6 @@ DetailSamples sample_detail(const DenseSurface& surface, const rgb::BaseMesh& ba
     return samples;
 }
 
-double triangle_area(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) { return 0.5 * glm::length(glm::cross(b - a, c - a)); }
 
 // Refuses, before sampling them, more detail points than the options allow.
 void check_detail_size(std::size_t points, const RemeshOptions& options) {
@@ -285,8 +284,7 @@ Remeshed remesh(std::span<const glm::dvec3> positions, std::span<const rgb::Tria
         sample_detail(surface, plain, first_points, on_features, report.search_distance, part_of(detail_progress, 0.0, 0.6));
     std::vector<double> hit_areas(first.triangles.size());
     for (std::size_t i = 0; i < hit_areas.size(); ++i) {
-        const rgb::Triangle& t = triangles[first.triangles[i]];
-        hit_areas[i] = triangle_area(positions[t[0]], positions[t[1]], positions[t[2]]);
+        hit_areas[i] = triangle_area(positions, triangles[first.triangles[i]]);
     }
     std::vector<std::uint8_t> levels = face_detail_levels(dense_triangles_per_face(plain, report.detail_level, first.values, hit_areas),
                                                           report.detail_level, options.max_detail_level);
