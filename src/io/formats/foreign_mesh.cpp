@@ -25,15 +25,20 @@ void check_coordinates(const glm::dvec3& p, std::size_t vertex, const std::strin
 
 // The file's vertices welded by position into records.positions (with their colours); per file
 // vertex, its welded vertex (kNoIndex for a vertex no face uses, which is left out).
+// Welded vertices are numbered in the file's vertex order (a file without split vertices keeps its
+// numbering, as an OBJ does).
 std::vector<std::uint32_t> weld_positions(const ForeignMesh& mesh, ObjRecords& records, const std::string& file,
                                           std::size_t& colour_conflicts) {
     std::vector<std::uint32_t> welded(mesh.positions.size(), kNoIndex);
-    ExactIndex<3> index(mesh.positions.size());
     for (std::uint32_t v : mesh.corners) {
         if (v >= mesh.positions.size())
             throw ObjError(ObjProblem::Malformed, file, 0,
                            "a face names vertex " + std::to_string(std::size_t(v) + 1) + " of " + std::to_string(mesh.positions.size()));
-        if (welded[v] != kNoIndex) continue;
+        welded[v] = 0;  // used
+    }
+    ExactIndex<3> index(mesh.positions.size());
+    for (std::uint32_t v = 0; v < mesh.positions.size(); ++v) {
+        if (welded[v] == kNoIndex) continue;
         const glm::dvec3& p = mesh.positions[v];
         check_coordinates(p, v, file);
         bool added = false;
