@@ -12,9 +12,12 @@
 
 #include "cli/dispatch.h"
 #include "foreign_fixtures.h"
+#include "io/gltf/gltf_writer.h"
 #include "io/mesh_reader.h"
+#include "io/obj_reader.h"
 #include "obj_test_support.h"
 #include "scratch_folder.h"
+#include "textured_grid.h"
 
 namespace rgbio {
 namespace {
@@ -100,6 +103,31 @@ TEST_F(ForeignFormats, GltfSeamVerticesAreWeldedAndUvsStayPerCorner) {
                                               {C{0, 0, 0, 0.5, 1}, C{x, y, 0, 0.5, 0}, C{0, y, 0, 0.25, 0.25}}};
     EXPECT_EQ(corners_of(mesh), expected);
     EXPECT_TRUE(mesh.warnings.empty()) << mesh.warnings.front();
+}
+
+// OBJ -> glTF (rgbsub's writer, which splits the grid's vertices along its UV seam) -> rgbsub: the
+// seam is welded back into the OBJ's 20 vertices and 24 triangles, and every corner keeps its
+// position, colour and UV as the floats glTF stores (v as 1 - v both ways).
+TEST_F(ForeignFormats, ObjThroughGltfKeepsPositionsAndFaceVaryingUvs) {
+    const LoadedMesh obj = read_obj_text(test::textured_grid(true), "grid.obj");
+    GltfMesh out{obj.positions, {}, obj.colours, obj.triangles, obj.texcoords, obj.triangle_texcoords, {}, {}};
+    save_gltf(out, path("grid.glb"));
+    const LoadedMesh back = read_mesh_file(path("grid.glb"));
+    EXPECT_EQ(back.positions.size(), obj.positions.size());
+    ASSERT_EQ(back.triangles.size(), obj.triangles.size());
+    const auto f = [](double x) { return static_cast<double>(static_cast<float>(x)); };
+    LoadedMesh expected = obj;
+    for (glm::dvec3& p : expected.positions) p = {f(p.x), f(p.y), f(p.z)};
+    for (glm::dvec2& uv : expected.texcoords) uv = {f(uv.x), 1.0 - f(1.0 - uv.y)};
+    EXPECT_EQ(corners_of(back), corners_of(expected));
+    // Colours by position.
+    std::map<std::array<double, 3>, glm::dvec3> colour_at;
+    for (std::size_t v = 0; v < expected.positions.size(); ++v)
+        colour_at[{expected.positions[v].x, expected.positions[v].y, expected.positions[v].z}] =
+            glm::dvec3(f(obj.colours[v].x), f(obj.colours[v].y), f(obj.colours[v].z));
+    ASSERT_EQ(back.colours.size(), back.positions.size());
+    for (std::size_t v = 0; v < back.positions.size(); ++v)
+        EXPECT_EQ(back.colours[v], (colour_at[{back.positions[v].x, back.positions[v].y, back.positions[v].z}]));
 }
 
 // Node transforms compose along the hierarchy (translation of the parent after the child's scale;
