@@ -2,10 +2,12 @@
 // Small files of other formats written byte by byte in the tests (no library that rgbsub reads them
 // with is involved in writing them): binary values, a glTF binary container, PLY and STL bodies.
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cstdint>
 #include <cstring>
 #include <string>
+#include <vector>
 
 namespace rgbio::test {
 

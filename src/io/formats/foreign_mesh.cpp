@@ -84,17 +84,22 @@ void name_materials(std::vector<Material>& materials) {
     }
 }
 
-LoadedMesh weld_foreign_mesh(ForeignMesh&& mesh, const std::string& file, const ReadOptions& options) {
-    ObjRecords records;
-    std::size_t colour_conflicts = 0;
-    const std::vector<std::uint32_t> welded = weld_positions(mesh, records, file, colour_conflicts);
+namespace {
+
+// Faces left out of the records, with the first of each kind (1-based face numbers).
+struct DroppedFaces {
+    std::size_t degenerate = 0, duplicate = 0, first_degenerate = 0, first_duplicate = 0;
+};
+
+// The faces into records.polygons over the welded vertices, with their corners' texture coordinates
+// (into records.texcoords), labels and face numbers as lines. Faces with a repeated vertex are left
+// out; so are triangles over the vertices of an earlier one when `drop_duplicates`.
+void add_polygons(const ForeignMesh& mesh, const std::vector<std::uint32_t>& welded, bool drop_duplicates, ObjRecords& records,
+                  DroppedFaces& dropped) {
     const bool with_uvs = !mesh.corner_uvs.empty() || !mesh.vertex_uvs.empty();
     ExactIndex<2> uv_index(with_uvs ? records.positions.size() : 0);
-    ExactIndex<3> triangle_index(mesh.num_faces());
-    for (const Material& m : mesh.materials) records.material_names.push_back(m.name);
-    records.group_names = mesh.group_names;
-    std::size_t degenerate = 0, duplicate = 0, first_degenerate = 0, first_duplicate = 0;
-    std::vector<std::uint32_t> vertices, texcoords;
+    ExactIndex<3> triangle_index(drop_duplicates ? mesh.num_faces() : 0);
+    std::vector<std::uint32_t> vertices, texcoords, sorted;
     records.polygons.reserve(mesh.num_faces(), mesh.corners.size());
     for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
         vertices.clear();
@@ -108,19 +113,19 @@ LoadedMesh weld_foreign_mesh(ForeignMesh&& mesh, const std::string& file, const 
             if (added) records.texcoords.push_back(uv);
         }
         if (vertices.size() < 3) continue;  // readers pass points and lines on as dropped, not as faces
-        std::vector<std::uint32_t> sorted = vertices;
+        sorted.assign(vertices.begin(), vertices.end());
         std::sort(sorted.begin(), sorted.end());
         // Welding makes a face whose corners coincide (a sliver STL and scanners write) use a vertex
         // twice: it has no area and no place in a manifold.
         if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) {
-            if (degenerate++ == 0) first_degenerate = f + 1;
+            if (dropped.degenerate++ == 0) dropped.first_degenerate = f + 1;
             continue;
         }
-        if (sorted.size() == 3) {
+        if (drop_duplicates && sorted.size() == 3) {
             bool added = false;
             triangle_index.number({double(sorted[0]), double(sorted[1]), double(sorted[2])}, added);
             if (!added) {
-                if (duplicate++ == 0) first_duplicate = f + 1;
+                if (dropped.duplicate++ == 0) dropped.first_duplicate = f + 1;
                 continue;
             }
         }
@@ -128,28 +133,56 @@ LoadedMesh weld_foreign_mesh(ForeignMesh&& mesh, const std::string& file, const 
         const std::uint32_t group = mesh.face_group.empty() ? kNoIndex : mesh.face_group[f];
         records.polygons.add(vertices, texcoords, f + 1, material, group, kNoIndex, 0);
     }
-    if (records.polygons.empty())
-        throw ObjError(ObjProblem::NoFaces, file, 0,
-                       "no faces: the file has " + std::to_string(mesh.positions.size()) + " vertices and " +
-                           std::to_string(mesh.num_faces()) + " faces" +
-                           (degenerate > 0 ? " (all of them with coinciding corners)" : "") +
-                           ", but rgbsub needs a triangle surface");
+}
+
+}  // namespace
+
+LoadedMesh weld_foreign_mesh(ForeignMesh&& mesh, const std::string& file, const ReadOptions& options) {
+    ObjRecords records;
+    std::size_t colour_conflicts = 0;
+    const std::vector<std::uint32_t> welded = weld_positions(mesh, records, file, colour_conflicts);
+    for (const Material& m : mesh.materials) records.material_names.push_back(m.name);
+    records.group_names = mesh.group_names;
+    // Speed: hashing every triangle to find duplicates took a tenth of reading a 1M-triangle file, and
+    // the validation finds them anyway (by sorting, which it does for every file). So the duplicates
+    // are dropped only when it finds one: the faces are then made again without them (validate_mesh
+    // takes the positions only once it has passed that check).
+    LoadedMesh loaded;
+    DroppedFaces dropped;
+    for (const bool drop_duplicates : {false, true}) {
+        records.polygons = ObjPolygons();
+        records.texcoords.clear();
+        dropped = {};
+        add_polygons(mesh, welded, drop_duplicates, records, dropped);
+        if (records.polygons.empty())
+            throw ObjError(ObjProblem::NoFaces, file, 0,
+                           "no faces: the file has " + std::to_string(mesh.positions.size()) + " vertices and " +
+                               std::to_string(mesh.num_faces()) + " faces" +
+                               (dropped.degenerate > 0 ? " (all of them with coinciding corners)" : "") +
+                               ", but rgbsub needs a triangle surface");
+        try {
+            loaded = validate_mesh(records, file, options);
+            break;
+        } catch (const ObjError& e) {
+            if (e.problem() != ObjProblem::DuplicateFace || drop_duplicates) throw;
+        }
+    }
     std::vector<std::string> warnings = std::move(mesh.warnings);
     if (!mesh.dropped.empty()) {
         std::string text = "dropped what rgbsub does not keep: ";
         for (std::size_t i = 0; i < mesh.dropped.size(); ++i) text += (i > 0 ? "; " : "") + mesh.dropped[i];
         warnings.push_back(std::move(text));
     }
-    if (degenerate > 0)
-        warnings.push_back("dropped " + std::to_string(degenerate) + " faces whose corners coincide (the first is face " +
-                           std::to_string(first_degenerate) + ")");
-    if (duplicate > 0)
-        warnings.push_back("dropped " + std::to_string(duplicate) + " faces over the same three vertices as an earlier face (the first is face " +
-                           std::to_string(first_duplicate) + "; a double-sided surface keeps its first side)");
+    if (dropped.degenerate > 0)
+        warnings.push_back("dropped " + std::to_string(dropped.degenerate) + " faces whose corners coincide (the first is face " +
+                           std::to_string(dropped.first_degenerate) + ")");
+    if (dropped.duplicate > 0)
+        warnings.push_back("dropped " + std::to_string(dropped.duplicate) +
+                           " faces over the same three vertices as an earlier face (the first is face " + std::to_string(dropped.first_duplicate) +
+                           "; a double-sided surface keeps its first side)");
     if (colour_conflicts > 0)
         warnings.push_back(std::to_string(colour_conflicts) +
                            " corners carry another colour than the first corner at their position: colours are kept per vertex, the first one wins");
-    LoadedMesh loaded = validate_mesh(records, file, options);
     loaded.warnings.insert(loaded.warnings.begin(), warnings.begin(), warnings.end());
     loaded.materials = std::move(mesh.materials);
     return loaded;
