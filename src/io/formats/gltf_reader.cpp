@@ -12,6 +12,7 @@
 #include <tiny_gltf.h>
 
 #include "io/files/file_text.h"
+#include "io/formats/binary_value.h"
 #include "io/obj/obj_error.h"
 
 namespace rgbio {
@@ -66,23 +67,17 @@ public:
     std::size_t count(int index) const { return model_.accessors[static_cast<std::size_t>(index)].count; }
 
 private:
-    template <class T>
-    static double load(const unsigned char* p) {
-        T value;
-        std::memcpy(&value, p, sizeof value);
-        return static_cast<double>(value);
-    }
     // One component as stored, or the spec's normalized value of an integer type.
     static double component(const unsigned char* p, int type, bool normalized) {
         switch (type) {
-            case TINYGLTF_COMPONENT_TYPE_FLOAT: return load<float>(p);
-            case TINYGLTF_COMPONENT_TYPE_DOUBLE: return load<double>(p);
-            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return normalized ? load<std::uint8_t>(p) / 255.0 : load<std::uint8_t>(p);
-            case TINYGLTF_COMPONENT_TYPE_BYTE: return normalized ? std::max(load<std::int8_t>(p) / 127.0, -1.0) : load<std::int8_t>(p);
-            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return normalized ? load<std::uint16_t>(p) / 65535.0 : load<std::uint16_t>(p);
-            case TINYGLTF_COMPONENT_TYPE_SHORT: return normalized ? std::max(load<std::int16_t>(p) / 32767.0, -1.0) : load<std::int16_t>(p);
-            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return load<std::uint32_t>(p);
-            case TINYGLTF_COMPONENT_TYPE_INT: return load<std::int32_t>(p);
+            case TINYGLTF_COMPONENT_TYPE_FLOAT: return binary_value<float>(p);
+            case TINYGLTF_COMPONENT_TYPE_DOUBLE: return binary_value<double>(p);
+            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return normalized ? binary_value<std::uint8_t>(p) / 255.0 : binary_value<std::uint8_t>(p);
+            case TINYGLTF_COMPONENT_TYPE_BYTE: return normalized ? std::max(binary_value<std::int8_t>(p) / 127.0, -1.0) : binary_value<std::int8_t>(p);
+            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return normalized ? binary_value<std::uint16_t>(p) / 65535.0 : binary_value<std::uint16_t>(p);
+            case TINYGLTF_COMPONENT_TYPE_SHORT: return normalized ? std::max(binary_value<std::int16_t>(p) / 32767.0, -1.0) : binary_value<std::int16_t>(p);
+            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return binary_value<std::uint32_t>(p);
+            case TINYGLTF_COMPONENT_TYPE_INT: return binary_value<std::int32_t>(p);
         }
         return 0.0;
     }

@@ -7,6 +7,7 @@
 #include <cstring>
 
 #include "io/files/file_text.h"
+#include "io/formats/binary_value.h"
 #include "io/obj/obj_error.h"
 
 namespace rgbio {
@@ -74,14 +75,14 @@ public:
         at_ += size;
         if ((encoding_ == PlyEncoding::Big) == (std::endian::native == std::endian::little)) std::reverse(raw, raw + size);
         switch (type) {
-            case PlyType::Int8: return load<std::int8_t>(raw);
-            case PlyType::Uint8: return load<std::uint8_t>(raw);
-            case PlyType::Int16: return load<std::int16_t>(raw);
-            case PlyType::Uint16: return load<std::uint16_t>(raw);
-            case PlyType::Int32: return load<std::int32_t>(raw);
-            case PlyType::Uint32: return load<std::uint32_t>(raw);
-            case PlyType::Float32: return load<float>(raw);
-            case PlyType::Float64: return load<double>(raw);
+            case PlyType::Int8: return binary_value<std::int8_t>(raw);
+            case PlyType::Uint8: return binary_value<std::uint8_t>(raw);
+            case PlyType::Int16: return binary_value<std::int16_t>(raw);
+            case PlyType::Uint16: return binary_value<std::uint16_t>(raw);
+            case PlyType::Int32: return binary_value<std::int32_t>(raw);
+            case PlyType::Uint32: return binary_value<std::uint32_t>(raw);
+            case PlyType::Float32: return binary_value<float>(raw);
+            case PlyType::Float64: return binary_value<double>(raw);
         }
         return 0.0;
     }
@@ -96,12 +97,6 @@ public:
     }
 
 private:
-    template <class T>
-    static double load(const unsigned char* raw) {
-        T value;
-        std::memcpy(&value, raw, sizeof value);
-        return static_cast<double>(value);
-    }
     double next_text() {
         while (at_ < bytes_.size() && (bytes_[at_] == ' ' || bytes_[at_] == '\t' || bytes_[at_] == '\n' || bytes_[at_] == '\r')) ++at_;
         if (at_ == bytes_.size()) fail("the file ends inside " + place());
