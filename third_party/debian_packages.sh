@@ -5,6 +5,8 @@ RGBSUB_BUILD_PACKAGES=(
   build-essential cmake pkg-config python3-glad
   libglfw3-dev libglm-dev libimgui-dev libstb-dev libtinyobjloader-dev libtinygltf-dev libosmesa6-dev libgl-dev
   libgtest-dev libbenchmark-dev libopenmesh-dev libeigen3-dev
+  # src/io/formats reads FBX, COLLADA, 3DS, STL, OFF and the other formats Assimp has importers for.
+  libassimp-dev
 )
 # Only the test suite uses these: a virtual display for the editor window (xvfb-run needs xauth),
 # input injection, reference meshes, clang with its libFuzzer runtime for the loader's fuzz target,

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "app/editor.h"
+#include "io/formats/mesh_format.h"
 
 namespace app {
 namespace {
@@ -37,7 +38,7 @@ std::vector<Entry> listing(const std::filesystem::path& folder, FileBrowser::Pur
         if (name.starts_with('.')) continue;
         std::error_code kind_error;
         const bool is_folder = item.is_directory(kind_error);
-        if (!is_folder && purpose != FileBrowser::Purpose::SaveStrokes && item.path().extension() != ".obj" && item.path().extension() != ".OBJ")
+        if (!is_folder && purpose != FileBrowser::Purpose::SaveStrokes && !rgbio::has_mesh_extension(item.path().string()))
             continue;
         entries.push_back({name, is_folder});
     }

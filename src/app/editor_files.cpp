@@ -10,6 +10,7 @@
 #include "detail/cage.h"
 #include "io/files/atomic_file.h"
 #include "io/gltf_export.h"
+#include "io/formats/mesh_format.h"
 #include "io/obj/obj_error.h"
 
 namespace app {
@@ -33,7 +34,9 @@ void Editor::load(const std::string& path) { show_opened(path, document_.open(pa
 void Editor::show_opened(const std::string& path, const std::vector<std::string>& warnings) {
     std::string message = warnings.empty() ? "opened " + path : path + ": " + warnings.front() + (warnings.size() > 1 ? " (and more)" : "");
     suggested_path_ = save_suggestion(path);
-    if (!suggested_path_.empty()) message += " (a sample that ships with rgbsub: the first save asks where)";
+    if (!suggested_path_.empty())
+        message += is_sample(path) ? " (a sample that ships with rgbsub: the first save asks where)"
+                                   : " (read from another format: the first save asks where, proposing " + suggested_path_ + ")";
     report(message, false);
     remember_recent(path);
     reset_view();
@@ -52,7 +55,11 @@ bool Editor::is_sample(const std::string& path) const {
 }
 
 std::string Editor::save_suggestion(const std::string& path) const {
-    if (!is_sample(path)) return "";
+    // A mesh read from another format is saved as OBJ (which keeps the adaptive state) beside it,
+    // never as OBJ text over the file it came from.
+    if (!is_sample(path))
+        return rgbio::mesh_format(path) == rgbio::MeshFormat::Obj ? ""
+                                                                   : std::filesystem::path(path).replace_extension(".obj").string();
     // In the home folder: beside the sample would be among rgbsub's own files again.
     const char* home = std::getenv("HOME");
     std::error_code error;

@@ -11,7 +11,7 @@
 #include "cli/commands.h"
 #include "cli/mesh_io_support.h"
 #include "io/files/atomic_file.h"
-#include "io/obj_reader.h"
+#include "io/mesh_reader.h"
 
 namespace cli {
 namespace {
@@ -73,7 +73,7 @@ int run_edit(std::span<const std::string> args) {
     app::WindowLaunch launch;
     launch.file = arguments.positional().empty() ? app::default_mesh_path() : arguments.positional().front();
     // The editor repairs what it opens; --strict first makes sure FILE.obj needs no repair.
-    if (arguments.has(kStrictSwitch) && launch.file) rgbio::read_obj_file(*launch.file, read_options(arguments));
+    if (arguments.has(kStrictSwitch) && launch.file) rgbio::read_mesh_file(*launch.file, read_options(arguments));
     if (arguments.has("--frames")) launch.frames = static_cast<int>(arguments.integer("--frames", 1, 1, 1000000));
     if (const auto output = arguments.value("--screenshot")) {
         if (!launch.file) throw UsageError("--screenshot needs a FILE.obj");

@@ -7,7 +7,7 @@
 #include "cli/mesh_io_support.h"
 #include "cli/mesh_summary.h"
 #include "io/mesh_file.h"
-#include "io/obj_reader.h"
+#include "io/mesh_reader.h"
 #include "rgb/mesh/detail_positions.h"
 
 namespace cli {
@@ -73,7 +73,7 @@ int run_info(std::span<const std::string> args) {
     }
     if (arguments.positional().size() != 1) throw UsageError("expects exactly one FILE.obj");
     const std::string& file = arguments.positional()[0];
-    const rgbio::LoadedMesh loaded = rgbio::read_obj_file(file, read_options(arguments));
+    const rgbio::LoadedMesh loaded = rgbio::read_mesh_file(file, read_options(arguments));
     // A saved file's adaptive mesh is summarized where it is unless options retag it: copying millions
     // of faces costs time.
     const bool retag = arguments.has(kSharpAngleOption) || arguments.value(kBoundaryOption).has_value();

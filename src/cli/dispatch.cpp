@@ -10,6 +10,7 @@
 #include <system_error>
 
 #include "cli/commands.h"
+#include "io/formats/mesh_format.h"
 #include "io/obj/obj_error.h"
 #include "io/script/triangle_limit.h"
 
@@ -70,10 +71,8 @@ int run_command(const Command& command, std::span<const std::string> args) {
 // Whether a first word that is no command names a mesh for the editor: an existing file (not a
 // folder), or a name with a mesh file's extension (which the editor then reports if it cannot read).
 bool names_a_mesh(const std::string& word) {
-    std::string extension = std::filesystem::path(word).extension().string();
-    std::ranges::transform(extension, extension.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     std::error_code error;
-    return extension == ".obj" || extension == ".glb" || extension == ".gltf" || std::filesystem::is_regular_file(word, error);
+    return rgbio::has_mesh_extension(word) || std::filesystem::is_regular_file(word, error);
 }
 
 }  // namespace

@@ -16,6 +16,8 @@ namespace cli {
 // The switch every command that reads a mesh accepts, and its line for the command's --help.
 inline constexpr std::string_view kStrictSwitch = "--strict";
 inline constexpr std::string_view kStrictHelp =
+    "  (the mesh read may be .obj, .gltf/.glb, .ply, .stl, .fbx, .dae, .3ds, .off or any other format\n"
+    "  Assimp reads; what each brings is in docs/files.md)\n"
     "  --strict            refuse a non-manifold input (bow-tie vertices, edges of more than two faces)\n"
     "                      with exit code 2 instead of cutting it apart into a manifold\n";
 

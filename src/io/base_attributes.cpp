@@ -7,7 +7,7 @@
 
 #include "io/materials/material_library.h"
 #include "io/mesh_file.h"
-#include "io/obj_reader.h"
+#include "io/mesh_reader.h"
 #include "rgb/mesh/face_location.h"
 
 namespace rgbio {
@@ -73,7 +73,7 @@ BaseAttributes base_attributes(const LoadedMesh& loaded, const rgb::Mesh& mesh, 
 }
 
 LoadedAsset load_asset(const std::string& path, std::vector<std::string>* warnings, const ReadOptions& options) {
-    LoadedMesh loaded = read_obj_file(path, options);
+    LoadedMesh loaded = read_mesh_file(path, options);
     std::vector<std::string> messages = std::move(loaded.warnings);
     LoadedAsset asset{build_mesh(loaded), nullptr, std::nullopt};
     asset.attributes = std::make_shared<const BaseAttributes>(

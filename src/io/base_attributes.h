@@ -52,7 +52,7 @@ struct LoadedAsset {
     std::optional<rgb::UvChannel> uvs;  // the base mesh's texture coordinates (base_uvs.h), if any
 };
 
-// read_obj_file + build_mesh + base_attributes + base_uv_channel. Warnings are appended to *warnings if given.
+// read_mesh_file (any format) + build_mesh + base_attributes + base_uv_channel. Warnings are appended to *warnings if given.
 LoadedAsset load_asset(const std::string& path, std::vector<std::string>* warnings = nullptr, const ReadOptions& options = {});
 
 // Whether the adaptive mesh is its base mesh (no face refined): then texture coordinates and colours

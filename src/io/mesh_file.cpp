@@ -11,7 +11,7 @@
 #include "io/obj/number_format.h"
 #include "io/obj/obj_error.h"
 #include "io/obj/truncation_check.h"
-#include "io/obj_reader.h"
+#include "io/mesh_reader.h"
 #include "io/state/crease_tags.h"
 #include "io/state/state_format.h"
 #include "rgb/values/limit_normals.h"
@@ -37,7 +37,7 @@ rgb::Mesh build_mesh(const LoadedMesh& loaded) {
 }
 
 rgb::Mesh load_mesh(const std::string& path, std::vector<std::string>* warnings, const ReadOptions& options) {
-    LoadedMesh loaded = read_obj_file(path, options);
+    LoadedMesh loaded = read_mesh_file(path, options);
     if (warnings) warnings->insert(warnings->end(), loaded.warnings.begin(), loaded.warnings.end());
     if (loaded.adaptive) return std::move(*loaded.adaptive);
     return build_mesh(loaded);

@@ -21,7 +21,7 @@ namespace rgbio {
 // The mesh a LoadedMesh describes: its adaptive mesh if it has one, else the base mesh of its faces.
 rgb::Mesh build_mesh(const LoadedMesh& loaded);
 
-// read_obj_file + build_mesh. Warnings (fixes, ignored content) are appended to *warnings if given.
+// read_mesh_file (any format) + build_mesh. Warnings (fixes, ignored content) are appended to *warnings if given.
 rgb::Mesh load_mesh(const std::string& path, std::vector<std::string>* warnings = nullptr, const ReadOptions& options = {});
 
 enum class SavedPositions {

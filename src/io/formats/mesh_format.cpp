@@ -1,0 +1,41 @@
+#include "io/formats/mesh_format.h"
+
+#include <algorithm>
+#include <filesystem>
+
+#include "io/formats/assimp_reader.h"
+#include "io/formats/gltf_reader.h"
+#include "io/formats/ply_reader.h"
+
+namespace rgbio {
+
+namespace {
+
+std::string lower_extension(const std::string& path) {
+    std::string extension = std::filesystem::path(path).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return extension;
+}
+
+}  // namespace
+
+MeshFormat mesh_format(const std::string& path) {
+    const std::string extension = lower_extension(path);
+    if (extension == ".obj") return MeshFormat::Obj;
+    if (extension == ".gltf" || extension == ".glb") return MeshFormat::Gltf;
+    if (extension == ".ply") return MeshFormat::Ply;
+    return assimp_reads_extension(extension) ? MeshFormat::Assimp : MeshFormat::Obj;
+}
+
+bool has_mesh_extension(const std::string& path) { return lower_extension(path) == ".obj" || mesh_format(path) != MeshFormat::Obj; }
+
+LoadedMesh read_foreign_file(const std::string& path, MeshFormat format, const ReadOptions& options) {
+    ForeignMesh mesh = format == MeshFormat::Gltf  ? read_gltf_mesh(path)
+                       : format == MeshFormat::Ply ? read_ply_mesh(path)
+                                                   : read_assimp_mesh(path);
+    LoadedMesh loaded = weld_foreign_mesh(std::move(mesh), path, options);
+    options.progress.done();
+    return loaded;
+}
+
+}  // namespace rgbio

@@ -1,0 +1,24 @@
+#pragma once
+// Which reader a mesh file goes to, by its extension in any case: .obj to rgbsub's OBJ reader
+// (obj_reader.h, in src/io), .gltf/.glb to tinygltf, .ply to rgbsub's PLY reader, any other
+// extension Assimp has an importer for to Assimp; a name with none of these is read as OBJ, as
+// before other formats were read.
+#include <string>
+
+#include "io/obj/loaded_mesh.h"
+
+namespace rgbio {
+
+enum class MeshFormat { Obj, Gltf, Ply, Assimp };
+
+MeshFormat mesh_format(const std::string& path);
+
+// Whether the name has the extension of a format rgbsub reads (OBJ included): what the editor's file
+// browser lists and what a first word must end with to open the editor.
+bool has_mesh_extension(const std::string& path);
+
+// Reads a file of a format other than OBJ into the LoadedMesh the OBJ reader would give for the same
+// surface (weld_foreign_mesh). Throws ObjError.
+LoadedMesh read_foreign_file(const std::string& path, MeshFormat format, const ReadOptions& options = {});
+
+}  // namespace rgbio

@@ -1,0 +1,51 @@
+#pragma once
+// Small files of other formats written byte by byte in the tests (no library that rgbsub reads them
+// with is involved in writing them): binary values, a glTF binary container, PLY and STL bodies.
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <vector>
+
+namespace rgbio::test {
+
+// Appends v's bytes, little endian (or big endian when asked).
+template <class T>
+void put(std::string& out, T v, bool big_endian = false) {
+    char bytes[sizeof(T)];
+    std::memcpy(bytes, &v, sizeof(T));
+    if (big_endian == (std::endian::native == std::endian::little)) std::reverse(bytes, bytes + sizeof(T));
+    out.append(bytes, sizeof(T));
+}
+
+// A .glb of the JSON chunk and the binary chunk (each padded to 4 bytes as the spec says).
+inline std::string glb_file(std::string json, std::string bin) {
+    while (json.size() % 4) json += ' ';
+    while (bin.size() % 4) bin += '\0';
+    std::string out = "glTF";
+    put<std::uint32_t>(out, 2);
+    put<std::uint32_t>(out, static_cast<std::uint32_t>(12 + 8 + json.size() + (bin.empty() ? 0 : 8 + bin.size())));
+    put<std::uint32_t>(out, static_cast<std::uint32_t>(json.size()));
+    out += "JSON" + json;
+    if (!bin.empty()) {
+        put<std::uint32_t>(out, static_cast<std::uint32_t>(bin.size()));
+        out += std::string("BIN\0", 4) + bin;
+    }
+    return out;
+}
+
+// A binary STL of the given triangles (9 floats each), normals left zero.
+inline std::string binary_stl(const std::vector<std::array<float, 9>>& triangles) {
+    std::string out(80, ' ');
+    put<std::uint32_t>(out, static_cast<std::uint32_t>(triangles.size()));
+    for (const auto& t : triangles) {
+        for (int i = 0; i < 3; ++i) put<float>(out, 0.0f);
+        for (float x : t) put<float>(out, x);
+        put<std::uint16_t>(out, 0);
+    }
+    return out;
+}
+
+}  // namespace rgbio::test
