@@ -241,8 +241,8 @@ TEST(DenseFeatures, TheCageKeepsEveryChain) {
 // A chain vertex whose two chain neighbours share a face with it (a feature ear) goes like any other
 // chain vertex: its collapse along the chain merges its other chain edge into the face's third edge,
 // which then carries the chain. Refused, it could never go, and on the ridged torus of the
-// lod_quality benchmark such vertices stayed next to the ridge crossings in sliver faces whose
-// detail was far from M (docs/benchmarks.md).
+// lod_quality benchmark such vertices stayed next to the ridge crossings in sliver faces, across which
+// neighbouring detail points lay a cage edge apart (docs/benchmarks.md).
 TEST(DenseFeatures, AChainVertexWhoseNeighboursShareAFaceWithItCanGo) {
     const int n = 12;
     const FeatureTestMesh cube = tessellated_cube(n);
