@@ -40,10 +40,15 @@ public:
         if (ci.vl.is_valid() && ear(ci.vlv1, ci.v0vl)) return Base::ILLEGAL_COLLAPSE;
         if (ci.vr.is_valid() && ear(ci.vrv0, ci.v1vr)) return Base::ILLEGAL_COLLAPSE;
         // The collapse deletes the edges v0-vl and v0-vr (each merges into v1's edge to vl, vr): a
-        // feature edge among them would leave its chain broken. (BaseDecimaterT itself lets a feature
-        // vertex go only along a feature edge.)
+        // feature edge among them would leave its chain broken, unless the collapse runs along the
+        // chain (v0-v1 a feature edge too; BaseDecimaterT itself lets a feature vertex go only along
+        // one) and v1's edge is not one: then v1-vl is the chain's edge after it (merged_features
+        // marks it). Refused, a chain vertex whose two chain neighbours share a face with it (a
+        // feature ear) could never go, and its sliver faces stayed beside the ridge crossings.
         auto feature = [&](typename MeshT::HalfedgeHandle h) { return h.is_valid() && m.status(m.edge_handle(h)).feature(); };
-        if ((ci.vl.is_valid() && feature(ci.v0vl)) || (ci.vr.is_valid() && feature(ci.vrv0))) return Base::ILLEGAL_COLLAPSE;
+        const bool along_chain = feature(ci.v0v1);
+        if (ci.vl.is_valid() && feature(ci.v0vl) && (!along_chain || feature(ci.vlv1))) return Base::ILLEGAL_COLLAPSE;
+        if (ci.vr.is_valid() && feature(ci.vrv0) && (!along_chain || feature(ci.v1vr))) return Base::ILLEGAL_COLLAPSE;
         for (auto h : {ci.v0v1, ci.v1v0}) {
             if (!m.is_boundary(h)) continue;
             std::size_t keep = 3;
@@ -183,7 +188,13 @@ private:
 
     void collapse(const CollapseInfo& ci) {
         faces_ -= mesh_.is_boundary(ci.v0v1) || mesh_.is_boundary(ci.v1v0) ? 1 : 2;
+        // A feature edge v0-vl (v0-vr) that merges into v1's edge (the guard allows it along a chain):
+        // which of the two edges the collapse keeps is OpenMesh's choice, so the kept one is marked.
+        auto feature = [&](HalfedgeHandle h) { return h.is_valid() && mesh_.status(mesh_.edge_handle(h)).feature(); };
+        const bool left_feature = ci.vl.is_valid() && feature(ci.v0vl), right_feature = ci.vr.is_valid() && feature(ci.vrv0);
         mesh_.collapse(ci.v0v1);
+        if (left_feature) mesh_.status(mesh_.edge_handle(mesh_.find_halfedge(ci.v1, ci.vl))).set_feature(true);
+        if (right_feature) mesh_.status(mesh_.edge_handle(mesh_.find_halfedge(ci.v1, ci.vr))).set_feature(true);
         if (flipping_)  // the normals the next flipping tests compare with
             for (CageMesh::FaceHandle f : mesh_.vf_range(ci.v1)) mesh_.set_normal(f, mesh_.calc_face_normal(f));
         quadric_.postprocess_collapse(ci);

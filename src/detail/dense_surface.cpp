@@ -173,6 +173,34 @@ struct StackEntry {
     double key;
 };
 
+// The BVH build's progress in triangle visits: each node visits its triangles once (its box, then
+// nth_element), so the whole visits about n (1 + log2(n / kLeafSize)). Told every kVisitsPerReport
+// visits, a few milliseconds, so that a stop is heard at once on a million triangles too.
+class BuildProgress {
+public:
+    static constexpr std::uint64_t kVisitsPerReport = 65536;
+    // The recursion's share of the build; the compaction and the triangles' corners in the tree's
+    // order take the rest, a report before each.
+    static constexpr double kTreeShare = 0.9;
+
+    BuildProgress(const ProgressFunction& progress, std::uint32_t triangles) : progress_(progress) {
+        const double n = std::max(1.0, static_cast<double>(triangles));
+        total_ = n * (1.0 + std::max(0.0, std::ceil(std::log2(n / kLeafSize))));
+    }
+
+    void visited(std::uint32_t triangles) {
+        visits_ += triangles;
+        if (visits_ < next_) return;
+        next_ = visits_ + kVisitsPerReport;
+        report_share(progress_, kTreeShare * std::min(1.0, static_cast<double>(visits_) / total_));
+    }
+
+private:
+    const ProgressFunction& progress_;
+    double total_ = 1.0;
+    std::uint64_t visits_ = 0, next_ = kVisitsPerReport;
+};
+
 struct Engine {
     std::vector<glm::dvec3> positions;
     std::vector<rgb::Triangle> triangles;
@@ -188,9 +216,10 @@ struct Engine {
     Engine& operator=(const Engine&) = delete;
     ~Engine() = default;
 
-    void build_bvh();
+    void build_bvh(const ProgressFunction& progress);
     std::uint32_t build_node(std::vector<BuildNode>& built, std::vector<std::uint32_t>& order,
-                             const std::vector<glm::dvec3>& centroids, std::uint32_t begin, std::uint32_t end) const;
+                             const std::vector<glm::dvec3>& centroids, std::uint32_t begin, std::uint32_t end,
+                             BuildProgress& progress) const;
     std::uint32_t compact(const std::vector<BuildNode>& built, std::uint32_t i);
 
     void line_search(const glm::dvec3& o, const glm::dvec3& d, double bound, LineBest& best) const;
@@ -200,8 +229,9 @@ struct Engine {
     SurfaceHit closest(const glm::dvec3& p) const;
 };
 
-void Engine::build_bvh() {
+void Engine::build_bvh(const ProgressFunction& progress) {
     const auto n = static_cast<std::uint32_t>(triangles.size());
+    BuildProgress build_progress(progress, n);
     std::vector<glm::dvec3> centroids(n);
     for (std::uint32_t f = 0; f < n; ++f) {
         const rgb::Triangle& t = triangles[f];
@@ -211,7 +241,7 @@ void Engine::build_bvh() {
     std::iota(order.begin(), order.end(), 0u);
     std::vector<BuildNode> built;
     built.reserve(2 * (n / kLeafSize + 1));
-    build_node(built, order, centroids, 0, n);
+    build_node(built, order, centroids, 0, n, build_progress);
     nodes.reserve(built.size() / 2 + 1);
     if (built[0].count > 0) {
         // One leaf: a root whose only child it is.
@@ -225,8 +255,10 @@ void Engine::build_bvh() {
         root.count[0] = static_cast<std::uint8_t>(built[0].count);
         nodes.push_back(root);
     } else {
+        report_share(progress, BuildProgress::kTreeShare);
         compact(built, 0);
     }
+    report_share(progress, 0.95);
     corners.resize(n);
     for (std::uint32_t s = 0; s < n; ++s) {
         const rgb::Triangle& t = triangles[order[s]];
@@ -260,7 +292,9 @@ std::uint32_t Engine::compact(const std::vector<BuildNode>& built, std::uint32_t
 }
 
 std::uint32_t Engine::build_node(std::vector<BuildNode>& built, std::vector<std::uint32_t>& order,
-                                 const std::vector<glm::dvec3>& centroids, std::uint32_t begin, std::uint32_t end) const {
+                                 const std::vector<glm::dvec3>& centroids, std::uint32_t begin, std::uint32_t end,
+                                 BuildProgress& progress) const {
+    progress.visited(end - begin);
     const auto index = static_cast<std::uint32_t>(built.size());
     built.emplace_back();
     glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
@@ -291,8 +325,8 @@ std::uint32_t Engine::build_node(std::vector<BuildNode>& built, std::vector<std:
                          const double ca = centroids[a][axis], cb = centroids[b][axis];
                          return ca != cb ? ca < cb : a < b;
                      });
-    build_node(built, order, centroids, begin, mid);
-    const std::uint32_t right = build_node(built, order, centroids, mid, end);
+    build_node(built, order, centroids, begin, mid, progress);
+    const std::uint32_t right = build_node(built, order, centroids, mid, end, progress);
     built[index].right = right;
     return index;
 }
@@ -505,8 +539,9 @@ namespace dsi = dense_surface_internal;
 
 struct DenseSurface::Impl : dsi::Engine {};
 
-DenseSurface::DenseSurface(std::vector<glm::dvec3> positions, std::vector<rgb::Triangle> triangles)
+DenseSurface::DenseSurface(std::vector<glm::dvec3> positions, std::vector<rgb::Triangle> triangles, const ProgressFunction& progress)
     : impl_(std::make_unique<Impl>()) {
+    report_share(progress, 0.0);
     if (triangles.empty()) throw std::invalid_argument("DenseSurface: the mesh has no triangles");
     if (triangles.size() >= std::numeric_limits<std::uint32_t>::max())
         throw std::invalid_argument("DenseSurface: the mesh has too many triangles");
@@ -537,7 +572,8 @@ DenseSurface::DenseSurface(std::vector<glm::dvec3> positions, std::vector<rgb::T
                         std::abs(hi.z), glm::length(hi - lo)});
     // Rounding in a triangle's intersection or closest point is far below this.
     m.box_pad = 1e-10 * m.scale + std::numeric_limits<double>::denorm_min();
-    m.build_bvh();
+    m.build_bvh(progress);
+    report_share(progress, 1.0);
 }
 
 DenseSurface::~DenseSurface() = default;

@@ -30,7 +30,7 @@ double seconds_since(Clock::time_point start) { return std::chrono::duration<dou
 
 // RemeshOptions::progress through the phases, never decreasing: each phase tells its own share
 // (0..1), placed in its span of the whole. The spans are about the phases' shares of the time for the
-// 940,544-triangle bunny to 5,000 (cage 45%, fit 10%, detail 45%, 2026-12-05).
+// 940,544-triangle bunny to 5,000 (cage 45%, M's search tree and the fit 10%, detail 45%, 2026-12-05).
 class RemeshProgress {
 public:
     explicit RemeshProgress(const RemeshOptions& options) : options_(options) {}
@@ -251,12 +251,12 @@ Remeshed remesh(std::span<const glm::dvec3> positions, std::span<const rgb::Tria
     const rgb::SharpFeatures features = cage_features(cage, options);
     report.seconds_cage = seconds_since(start);
 
-    FitOptions fit = options.fit;
-    fit.progress = progress.phase(0.45, 0.55, "fitting the cage");
     start = Clock::now();
     const DenseSurface surface(std::vector<glm::dvec3>(positions.begin(), positions.end()),
-                               std::vector<rgb::Triangle>(triangles.begin(), triangles.end()));
-    report_share(fit.progress, 0.0);
+                               std::vector<rgb::Triangle>(triangles.begin(), triangles.end()),
+                               progress.phase(0.45, 0.5, "indexing the dense mesh"));
+    FitOptions fit = options.fit;
+    fit.progress = progress.phase(0.5, 0.55, "fitting the cage");
     fit.parallel_targets = true;  // DenseSurface's queries are thread-safe
     const FitResult fitted =
         fit_cage(cage.positions, cage.triangles, features, [&surface](const glm::dvec3& p) { return surface.closest_point(p).point; }, fit);
@@ -265,7 +265,7 @@ Remeshed remesh(std::span<const glm::dvec3> positions, std::span<const rgb::Tria
     report.seconds_fit = seconds_since(start);
 
     // The first sampling is about 60% of the detail's time (the bunny: 640,002 points of 1,005,498).
-    const ProgressFunction detail_progress = progress.phase(0.55, 1.0, "sampling the detail");
+    const ProgressFunction detail_progress = progress.phase(0.55, 0.78, "sampling the detail");
     start = Clock::now();
     const rgb::BaseMesh plain(fitted.positions, cage.triangles, features);
     report.detail_level = detail_level_for(cage.triangles.size(), triangles.size(), options.max_detail_level);
@@ -280,32 +280,42 @@ Remeshed remesh(std::span<const glm::dvec3> positions, std::span<const rgb::Tria
     std::optional<FeatureDetail> feature_detail;
     if (!cage.feature_edges.empty()) feature_detail.emplace(features_of_dense, positions, cage.source_vertex, cage.feature_edges);
     const FeatureDetail* on_features = feature_detail ? &*feature_detail : nullptr;
-    const DetailSamples first =
-        sample_detail(surface, plain, first_points, on_features, report.search_distance, part_of(detail_progress, 0.0, 0.6));
+    const DetailSamples first = sample_detail(surface, plain, first_points, on_features, report.search_distance, detail_progress);
+    // Between the samplings and after them, steps of a fraction of a second each on a million points
+    // (0.1-0.7 s on the bunny with the machine busy, 2026-12-05), each a report: a stop is heard
+    // between them instead of at the next sampling.
+    const ProgressFunction levels_progress = progress.phase(0.78, 0.8, "choosing the detail levels");
     std::vector<double> hit_areas(first.triangles.size());
     for (std::size_t i = 0; i < hit_areas.size(); ++i) {
         hit_areas[i] = triangle_area(positions, triangles[first.triangles[i]]);
     }
+    report_share(levels_progress, 0.2);
     std::vector<std::uint8_t> levels = face_detail_levels(dense_triangles_per_face(plain, report.detail_level, first.values, hit_areas),
                                                           report.detail_level, options.max_detail_level);
     report.finest_detail_level = *std::max_element(levels.begin(), levels.end());
     check_detail_size(rgb::DetailPositions::num_points(plain, levels), options);
+    report_share(levels_progress, 0.4);
     // The points of the first level keep their samples; only the finer ones are sampled now.
     const rgb::DetailPositions first_detail(plain, report.detail_level, first.values);
+    report_share(levels_progress, 0.6);
     const std::vector<rgb::SurfacePoint> points = rgb::DetailPositions::grid_points(plain, levels);
+    report_share(levels_progress, 0.8);
     std::vector<rgb::SurfacePoint> finer;
     for (const rgb::SurfacePoint& p : points)
         if (p.level > report.detail_level) finer.push_back(p);
-    const DetailSamples second =
-        sample_detail(surface, plain, finer, on_features, report.search_distance, part_of(detail_progress, 0.6, 1.0));
+    const DetailSamples second = sample_detail(surface, plain, finer, on_features, report.search_distance,
+                                               progress.phase(0.8, 0.97, "sampling the detail"));
+    const ProgressFunction storing_progress = progress.phase(0.97, 1.0, "storing the detail");
     std::vector<glm::dvec3> values(points.size());
     for (std::size_t i = 0, j = 0; i < points.size(); ++i)
         values[i] = points[i].level > report.detail_level ? second.values[j++] : first_detail.position(plain, points[i]);
     report.nearest_points = first.nearest_points + second.nearest_points;
     report.feature_points = first.feature_points + second.feature_points;
     report.detail_points = values.size();
+    report_share(storing_progress, 0.3);
     auto detail = std::make_shared<const rgb::DetailPositions>(
         plain, std::move(levels), values, rgb::DetailOrigin{options.source_name, triangles.size(), report.nearest_points});
+    report_share(storing_progress, 1.0);
     result.base = std::make_shared<const rgb::BaseMesh>(fitted.positions, cage.triangles, features, std::move(detail));
     report.seconds_detail = seconds_since(start);
     progress.done();

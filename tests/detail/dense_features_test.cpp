@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <numbers>
 #include <set>
@@ -234,6 +236,39 @@ TEST(DenseFeatures, TheCageKeepsEveryChain) {
                 EXPECT_GE(extremes, 2) << (*q).x << " " << (*q).y << " " << (*q).z;
             }
     EXPECT_GT(on_features, 0u);
+}
+
+// A chain vertex whose two chain neighbours share a face with it (a feature ear) goes like any other
+// chain vertex: its collapse along the chain merges its other chain edge into the face's third edge,
+// which then carries the chain. Refused, it could never go, and on the ridged torus of the
+// lod_quality benchmark such vertices stayed next to the ridge crossings in sliver faces, across which
+// neighbouring detail points lay a cage edge apart (docs/benchmarks.md).
+TEST(DenseFeatures, AChainVertexWhoseNeighboursShareAFaceWithItCanGo) {
+    const int n = 12;
+    const FeatureTestMesh cube = tessellated_cube(n);
+    // A triangle in the middle of the top side: its edges p00-p10 and p10-p11 are the chain, p00 and
+    // p11 its ends (kept), p10 the ear.
+    const Triangle ear = cube.triangles[2 * static_cast<std::size_t>(n * n + (n / 2) * n + n / 2)];
+    const std::uint32_t p00 = ear[0], p10 = ear[1], p11 = ear[2];
+    ASSERT_EQ(cube.positions[p00].z, n);
+    ASSERT_EQ(cube.positions[p10].z, n);
+    const FeatureGraph features(cube.positions.size(), {{std::min(p00, p10), std::max(p00, p10)}, {std::min(p10, p11), std::max(p10, p11)}});
+    rgbdetail::CageOptions options;
+    options.features = &features;
+    const rgbdetail::Cage cage = rgbdetail::make_cage(cube.positions, cube.triangles, 100, options);
+    ASSERT_LE(cage.triangles.size(), 100u);
+    std::vector<std::uint32_t> cage_vertex(cube.positions.size(), UINT32_MAX);
+    for (std::uint32_t v = 0; v < cage.source_vertex.size(); ++v) cage_vertex[cage.source_vertex[v]] = v;
+    EXPECT_EQ(cage_vertex[p10], UINT32_MAX) << "the ear stayed";
+    ASSERT_NE(cage_vertex[p00], UINT32_MAX);
+    ASSERT_NE(cage_vertex[p11], UINT32_MAX);
+    const std::uint32_t a = cage_vertex[p00], b = cage_vertex[p11];
+    EXPECT_EQ(cage.feature_edges, (std::vector<std::array<std::uint32_t, 2>>{{std::min(a, b), std::max(a, b)}}));
+    // That edge follows the chain p00-p10-p11 of M.
+    const rgbdetail::FeatureDetail detail(features, cube.positions, cage.source_vertex, cage.feature_edges);
+    std::vector<std::uint8_t> kept(cube.positions.size(), 0);
+    for (std::uint32_t v : cage.source_vertex) kept[v] = 1;
+    EXPECT_EQ(rgbdetail::feature_chain(features, p00, p11, kept), (std::vector<std::uint32_t>{p00, p10, p11}));
 }
 
 }  // namespace

@@ -603,6 +603,35 @@ TEST(DenseSurface, BatchEqualsSingleAndIsDeterministic) {
     EXPECT_TRUE(surface.closest_points({}).empty());
 }
 
+// Building the search tree tells its progress every 65,536 triangle visits (each level of the tree
+// visits every triangle once) and stops when told to, throwing Stopped; the tree built while reporting
+// answers as the one built without.
+TEST(DenseSurface, BuildingTheTreeReportsItsProgressAndStops) {
+    const Soup m = torus(200, 100);  // 40,000 triangles: 15 levels of nodes down to leaves of at most 4
+    std::vector<double> shares;
+    const DenseSurface reported(m.positions, m.triangles, [&](double share) {
+        shares.push_back(share);
+        return true;
+    });
+    // The build's start and end, one before the tree is compacted and one before the triangles'
+    // corners are laid out in its order, and while it is built a report within 65,536 + 40,000 (the
+    // largest node's) visits of the last: at least 600,000 / 105,536 of them.
+    ASSERT_GE(shares.size(), 4u + 600000u / 105536u);
+    EXPECT_EQ(shares.front(), 0.0);
+    EXPECT_EQ(shares.back(), 1.0);
+    for (std::size_t i = 1; i < shares.size(); ++i) EXPECT_GE(shares[i], shares[i - 1]) << i;
+    const DenseSurface plain = surface_of(m);
+    for (const glm::dvec3& p : {glm::dvec3(1.2, 0.3, 0.1), glm::dvec3(-0.4, 0.9, -0.3), glm::dvec3(0.0, 0.0, 0.0)})
+        EXPECT_TRUE(same(reported.closest_point(p), plain.closest_point(p)));
+    // A stop at the first report inside the build, the middle one and the last: Stopped, no report after.
+    for (const std::size_t stop_at : {std::size_t(1), shares.size() / 2, shares.size() - 2}) {
+        std::size_t calls = 0;
+        EXPECT_THROW(DenseSurface(m.positions, m.triangles, [&](double) { return ++calls != stop_at + 1; }), rgbdetail::Stopped)
+            << stop_at;
+        EXPECT_EQ(calls, stop_at + 1);
+    }
+}
+
 TEST(DenseSurface, RejectsBadInput) {
     const Soup m = flat_grid(2);
     EXPECT_THROW(DenseSurface({}, {}), std::invalid_argument);

@@ -14,7 +14,8 @@
 
 namespace rgbio {
 
-// Appends the records, calling flush_if_full() after each line.
+// Appends the records (formatted on all cores, the same bytes as in one loop), calling
+// flush_if_full() after every few hundred lines.
 void append_point_records(std::string& out, std::string_view name, std::span<const glm::dvec3> points,
                           const std::function<void()>& flush_if_full);
 

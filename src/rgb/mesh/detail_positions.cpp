@@ -70,6 +70,27 @@ void for_each_slot(std::span<const std::uint8_t> face_levels, Visit visit) {
     }
 }
 
+// Calls visit(slot, face, a1, a2) for the slots whose face keeps their point (see the header), in
+// slot order. A slot inside its face (no coordinate 0) is kept without a look-up: keeping_address
+// returns such a point as it is (its coordinates stay positive when it is reduced). Most slots are
+// inside (465 of 561 at level 5), and loading a saved file, saving it and storing a remesh's detail
+// each walk a million of them.
+template <class Visit>
+void for_each_kept_slot(const BaseMesh& base, std::span<const std::uint8_t> kept_across, std::span<const std::uint8_t> face_levels,
+                        Visit visit) {
+    std::size_t slot = 0;
+    for_each_slot(face_levels, [&](std::uint32_t f, std::uint32_t a1, std::uint32_t a2) {
+        const bool inside = a1 > 0 && a2 > 0 && a1 + a2 < (std::uint32_t(1) << face_levels[f]);
+        if (inside) {
+            visit(slot, f, a1, a2);
+        } else {
+            const SurfacePoint p = grid_point(f, face_levels[f], a1, a2);
+            if (keeping_address(base, kept_across, p) == p) visit(slot, f, a1, a2);
+        }
+        ++slot;
+    });
+}
+
 }  // namespace
 
 std::size_t DetailPositions::points_per_face(int level) {
@@ -106,9 +127,8 @@ std::vector<SurfacePoint> DetailPositions::grid_points(const BaseMesh& base, std
     const std::vector<std::uint8_t> across = kept_across_table(base, face_levels);
     std::vector<SurfacePoint> points;
     points.reserve(num_points(base, face_levels));
-    for_each_slot(face_levels, [&](std::uint32_t f, std::uint32_t a1, std::uint32_t a2) {
-        const SurfacePoint p = grid_point(f, face_levels[f], a1, a2);
-        if (keeping_address(base, across, p) == p) points.push_back(p);
+    for_each_kept_slot(base, across, face_levels, [&](std::size_t, std::uint32_t f, std::uint32_t a1, std::uint32_t a2) {
+        points.push_back(grid_point(f, face_levels[f], a1, a2));
     });
     return points;
 }
@@ -127,13 +147,9 @@ std::vector<std::uint32_t> DetailPositions::grid_point_indices(const BaseMesh& b
     // keeper's index where the keeping face's grid holds the point, and stays kNotSampled where the
     // point is finer than the keeper's level (a point of a finer face's edge beyond the edge's level).
     std::uint32_t next = 0;
+    for_each_kept_slot(base, across, face_levels,
+                       [&](std::size_t slot, std::uint32_t, std::uint32_t, std::uint32_t) { indices[slot] = next++; });
     std::size_t slot = 0;
-    for_each_slot(face_levels, [&](std::uint32_t f, std::uint32_t a1, std::uint32_t a2) {
-        const SurfacePoint p = grid_point(f, face_levels[f], a1, a2);
-        if (keeping_address(base, across, p) == p) indices[slot] = next++;
-        ++slot;
-    });
-    slot = 0;
     for_each_slot(face_levels, [&](std::uint32_t f, std::uint32_t a1, std::uint32_t a2) {
         if (indices[slot] == kNotSampled) {
             const SurfacePoint k = keeping_address(base, across, grid_point(f, face_levels[f], a1, a2));
@@ -179,8 +195,13 @@ DetailPositions::DetailPositions(const BaseMesh& base, int level, std::span<cons
     : DetailPositions(base, uniform_levels(base, level), values, std::move(origin)) {}
 
 std::vector<glm::dvec3> DetailPositions::samples(const BaseMesh& base) const {
+    // The slots of the points each face keeps, in slot order (grid_points' order), hold their values:
+    // read from there, not looked up by address (a saved file's million points are read while it is
+    // written).
     std::vector<glm::dvec3> values;
-    for (const SurfacePoint& p : grid_points(base, face_levels_)) values.push_back(position(base, p));
+    values.reserve(num_points(base, face_levels_));
+    for_each_kept_slot(base, kept_across_, face_levels_,
+                       [&](std::size_t slot, std::uint32_t, std::uint32_t, std::uint32_t) { values.push_back(grid_[slot]); });
     return values;
 }
 
