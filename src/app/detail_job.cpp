@@ -1,7 +1,5 @@
 #include "app/detail_job.h"
 
-#include "io/script/triangle_limit.h"
-
 #include "rgb/lod/lod_criteria.h"
 #include "rgb/lod/lod_driver.h"
 #include "rgb/mesh/mesh.h"
@@ -11,12 +9,7 @@ namespace app {
 
 struct DetailJob::State {
     State(rgb::Mesh& m, const rgbio::DetailEdit& e, std::size_t max_triangles)
-        : mesh(m), edit(e), driver(m, rgb::whole_surface_settings(checked(m, rgbio::detail_request(m, e, max_triangles)))) {}
-    // Refused before the driver's room is made (rgbio::check_detail_size).
-    static rgb::DetailRequest checked(const rgb::Mesh& m, rgb::DetailRequest request) {
-        rgbio::check_detail_size(m, request, request.max_triangles);
-        return request;
-    }
+        : mesh(m), edit(e), driver(m, rgb::whole_surface_settings(rgbio::detail_request(m, e, max_triangles))) {}
     rgb::Mesh& mesh;
     rgbio::DetailEdit edit;
     rgb::LodDriver driver;

@@ -15,8 +15,11 @@ void Editor::start_detail_edit() {
     edit.criterion = detail_settings_.criterion;
     edit.amount = detail_settings_.amount;
     std::unique_ptr<DetailJob> job;
+    const std::size_t limit = rgbio::default_triangle_limit(rgbio::memory_use(edit.criterion));
     try {
-        job = std::make_unique<DetailJob>(document_.mesh(), edit, rgbio::default_triangle_limit(rgbio::memory_use(edit.criterion)));
+        // A request that cannot fit (a tolerance of 1e-300) is refused before the job starts.
+        rgbio::check_detail_size(document_.mesh(), rgbio::detail_request(document_.mesh(), edit, limit), limit);
+        job = std::make_unique<DetailJob>(document_.mesh(), edit, limit);
     } catch (const std::invalid_argument& refused) {
         report(refused.what(), true);
         return;
