@@ -23,7 +23,7 @@ public:
         try {
             std::error_code error;
             if (!std::filesystem::is_regular_file(material.diffuse_texture, error)) throw std::runtime_error("there is no such file");
-            images_.push_back(render::read_image(material.diffuse_texture));
+            images_.push_back(reader_.read(material.diffuse_texture));
             layer = static_cast<std::uint32_t>(images_.size() - 1);
         } catch (const std::exception& e) {
             if (unreadable_++ == 0) {
@@ -47,6 +47,7 @@ public:
 private:
     std::map<std::string, std::uint32_t> layers_;
     std::vector<render::Image> images_;
+    render::BoundedImageReader reader_;
     std::size_t unreadable_ = 0;
     std::string first_texture_, first_reason_;
 };

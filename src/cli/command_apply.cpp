@@ -22,6 +22,18 @@ double percentile(std::vector<double> values, double p) {
     return values[static_cast<std::size_t>(p * static_cast<double>(values.size() - 1) + 0.5)];
 }
 
+// The path of the script's lines that costs the most memory per triangle: it sets the default limit.
+rgbio::MemoryUse dearest_use(const std::vector<rgbio::ScriptLine>& script) {
+    rgbio::MemoryUse dearest = rgbio::MemoryUse::Level;
+    for (const rgbio::ScriptLine& line : script) {
+        rgbio::MemoryUse use = rgbio::MemoryUse::Level;
+        if (const auto* detail = std::get_if<rgbio::DetailEdit>(&line.edit)) use = rgbio::memory_use(detail->criterion);
+        if (std::holds_alternative<rgbio::BudgetEdit>(line.edit)) use = rgbio::MemoryUse::Budget;
+        if (rgbio::bytes_per_triangle(use) > rgbio::bytes_per_triangle(dearest)) dearest = use;
+    }
+    return dearest;
+}
+
 }  // namespace
 
 int run_apply(std::span<const std::string> args) {
@@ -58,14 +70,15 @@ int run_apply(std::span<const std::string> args) {
     rgbio::SaveOptions save;
     save.positions = parse_positions(arguments.value("--positions").value_or("display"));
     save.normals = arguments.has("--normals");
-    const auto limit = static_cast<std::size_t>(
-        arguments.integer("--max-triangles", static_cast<long>(rgbio::default_triangle_limit()), 1, 4'000'000'000l));
     save.state = !arguments.has("--plain");
     const std::string& input = arguments.positional()[0];
     const std::string& script_file = arguments.positional()[1];
 
     // The whole script is checked before the (possibly long) load and edits.
     const std::vector<rgbio::ScriptLine> script = rgbio::read_lod_script(script_file);
+    const auto limit = static_cast<std::size_t>(
+        arguments.integer("--max-triangles", static_cast<long>(rgbio::default_triangle_limit(dearest_use(script))), 1, 4'000'000'000l));
+    check_output_first(*output);
     rgbio::LoadedAsset asset = load_input("apply", input, arguments);
     rgb::Mesh& mesh = asset.mesh;
     save.attributes = asset.attributes;

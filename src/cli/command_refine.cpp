@@ -87,13 +87,16 @@ int run_refine(std::span<const std::string> args) {
     if (arguments.has("--sphere")) request.sphere = parse_sphere(*arguments.value("--sphere"));
     if (detail) detail->sphere = request.sphere;
     const auto limit = static_cast<std::size_t>(
-        arguments.integer("--max-triangles", static_cast<long>(rgbio::default_triangle_limit()), 1, 4'000'000'000l));
+        arguments.integer("--max-triangles",
+                          static_cast<long>(rgbio::default_triangle_limit(detail ? rgbio::memory_use(detail->criterion) : rgbio::MemoryUse::Level)),
+                          1, 4'000'000'000l));
     rgbio::SaveOptions save;
     save.positions = parse_positions(arguments.value("--positions").value_or("display"));
     save.normals = arguments.has("--normals");
     save.state = !arguments.has("--plain");
     const std::string& input = arguments.positional()[0];
 
+    check_output_first(*output);
     rgbio::LoadedAsset asset = load_input("refine", input, arguments);
     rgb::Mesh& mesh = asset.mesh;
     save.attributes = asset.attributes;

@@ -74,7 +74,7 @@ int run_remesh(std::span<const std::string> args) {
     const bool given_cage = arguments.has("--cage");
     if (!given_cage && !arguments.has("--cage-triangles")) throw UsageError("needs --cage-triangles N (or --cage CAGE.obj)");
     const auto limit = static_cast<std::size_t>(
-        arguments.integer("--max-triangles", static_cast<long>(rgbio::default_triangle_limit()), 1, 4'000'000'000l));
+        arguments.integer("--max-triangles", static_cast<long>(rgbio::default_triangle_limit(rgbio::MemoryUse::Remesh)), 1, 4'000'000'000l));
     const std::string& input = arguments.positional()[0];
 
     rgbdetail::RemeshOptions options;
@@ -85,11 +85,17 @@ int run_remesh(std::span<const std::string> args) {
             throw rgbio::TooLarge("a cage of " + std::to_string(options.cage_triangles) + " triangles is over --max-triangles " +
                                   std::to_string(limit));
     }
+    check_output_first(*output);
     const rgbio::LoadedAsset asset = load_input("remesh", input, arguments);
     warn_dropped(input, asset);
     const PlainMesh dense = displayed_mesh(asset.mesh);
     // load_input has checked the angle's range. The cage is tagged, and fitted with the tags, inside
     // remesh: the cage it makes exists only there.
+    options.check_points = [limit](std::size_t points) {
+        if (points > limit)
+            throw rgbio::TooLarge("the detail would hold " + std::to_string(points) + " points, more than the limit of " + std::to_string(limit) +
+                                  " (set by this machine's memory; --max-triangles changes it)");
+    };
     if (arguments.has(kSharpAngleOption)) options.sharp_angle = arguments.number(kSharpAngleOption, 0.0);
     if (given_cage) {
         const rgbio::LoadedAsset cage = load_input("remesh", *arguments.value("--cage"), arguments);

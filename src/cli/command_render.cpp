@@ -12,6 +12,7 @@
 #include "cli/mesh_io_support.h"
 #include "io/files/atomic_file.h"
 #include "io/mesh_file.h"
+#include "io/scale_check.h"
 #include "io/script/triangle_limit.h"
 #include "render/headless.h"
 #include "rgb/lod/lod_criteria.h"
@@ -135,12 +136,15 @@ int run_render(std::span<const std::string> args) {
         parse_view(*angles, lod_view);
     }
     const auto limit = static_cast<std::size_t>(
-        arguments.integer("--max-triangles", static_cast<long>(rgbio::default_triangle_limit()), 1, 4'000'000'000l));
+        arguments.integer("--max-triangles", static_cast<long>(rgbio::default_triangle_limit(rgbio::MemoryUse::ScreenLod)), 1, 4'000'000'000l));
 
     const std::string& input = arguments.positional().front();
     std::vector<std::string> warnings;
+    check_output_first(*output);
     rgb::Mesh mesh = with_sharp_options(arguments, rgbio::load_mesh(input, &warnings, read_options(arguments)));
     for (const std::string& warning : warnings) std::cerr << "rgbsub render: " << input << ": " << warning << '\n';
+    if (const std::optional<std::string> problem = rgbio::scale_problem(mesh.base().positions(), rgbio::kFloatScale))
+        throw std::invalid_argument(input + ": cannot render it (the renderer works in 32-bit floats): " + *problem);
     if (options.colouring == render::Colouring::DetailDistance && !mesh.base().detail())
         throw std::invalid_argument(input + ": --mode distance needs a cage with detail (made by rgbsub remesh), and this mesh has none");
     render::Image image;
@@ -154,8 +158,10 @@ int run_render(std::span<const std::string> args) {
             request.value = rgb::ScreenCriterion(mesh.shared_base(), render::screen_view(lod_camera, view.size)).edge_value();
             request.threshold = *screen_pixels;
             request.max_triangles = limit;
+            rgbio::check_detail_size(mesh, request, limit);
             if (rgb::apply_detail_request(mesh, request).budget_bound)
                 throw rgbio::TooLarge("the view's detail needs more than " + std::to_string(limit) + " triangles (--max-triangles)");
+            std::cout << "rgbsub render: detail for the view: " << mesh.num_faces() << " triangles\n";
         });
     } catch (const rgbio::TooLarge&) {
         throw;

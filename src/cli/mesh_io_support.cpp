@@ -1,10 +1,19 @@
 #include "cli/mesh_io_support.h"
 
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
 #include <iostream>
+#include <stdexcept>
 
 #include "cli/commands.h"
 #include "io/base_uvs.h"
+#include "io/files/save_target.h"
 #include "io/gltf_export.h"
+#include "io/obj/obj_error.h"
+#include "io/scale_check.h"
 #include "rgb/mesh/sharp_angle.h"
 #include "rgb/values/restore_state.h"
 
@@ -18,8 +27,19 @@ rgbio::LoadedAsset load_input(const char* command, const std::string& file, cons
     std::vector<std::string> warnings;
     rgbio::LoadedAsset asset = rgbio::load_asset(file, &warnings, read_options(arguments));
     print_warnings(command, file, warnings);
+    if (const std::optional<std::string> problem = rgbio::scale_problem(asset.mesh.base().positions(), rgbio::kDoubleScale))
+        throw std::invalid_argument(file + ": cannot work on this mesh: " + *problem);
     asset.mesh = with_sharp_options(arguments, std::move(asset.mesh));
     return asset;
+}
+
+void check_output_first(const std::string& file) {
+    const rgbio::SaveTarget target = rgbio::resolve_save_target(file);
+    std::error_code error;
+    if (!std::filesystem::is_directory(target.folder, error))
+        throw rgbio::SaveError("cannot save " + file + ": its folder " + target.folder + " is not there");
+    if (::access(target.folder.c_str(), W_OK | X_OK) != 0)
+        throw rgbio::SaveError("cannot save " + file + ": its folder " + target.folder + " is not writable (" + std::strerror(errno) + ")");
 }
 
 void save_output(const char* command, const rgb::Mesh& mesh, const std::string& file, const rgbio::SaveOptions& save) {
@@ -28,6 +48,15 @@ void save_output(const char* command, const rgb::Mesh& mesh, const std::string& 
     if (mesh.base().has_sharp_features() && (save.normals || rgbio::is_gltf_path(file)))
         warnings.push_back("the normals follow the smooth Loop rules (rgb/values/limit_normals.h): at vertices on tagged creases and "
                            "corners, whose tangent masks are not implemented yet, they are approximate");
+    if (rgbio::is_gltf_path(file)) {
+        if (const std::optional<std::string> problem = rgbio::scale_problem(mesh.base().positions(), rgbio::kFloatScale))
+            throw std::invalid_argument("cannot write " + file + " (glTF keeps 32-bit floats): " + *problem);
+        const rgbio::GltfMesh gltf = rgbio::gltf_mesh(mesh, save);
+        for (std::string& repair : rgbio::gltf_repairs(gltf)) warnings.push_back(std::move(repair));
+        print_warnings(command, file, warnings);
+        rgbio::save_gltf(gltf, file);
+        return;
+    }
     print_warnings(command, file, warnings);
     rgbio::save_mesh_file(mesh, file, save);
 }

@@ -61,6 +61,10 @@ rgbio::LoadedAsset load_input(const char* command, const std::string& file, cons
 
 // Saves `mesh` with what rides on its base (save.attributes) to `file`: glTF for .glb/.gltf, OBJ
 // otherwise. First prints, as warnings, what the save leaves out.
+// Refuses (rgbio::SaveError) an output that cannot be saved, before any work: what
+// rgbio::resolve_save_target refuses, and a folder that is not there or not writable.
+void check_output_first(const std::string& file);
+
 void save_output(const char* command, const rgb::Mesh& mesh, const std::string& file, const rgbio::SaveOptions& save);
 
 // The help lines of the output options refine and apply share.

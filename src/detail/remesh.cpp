@@ -189,11 +189,12 @@ DetailSamples sample_detail(const DenseSurface& surface, const rgb::BaseMesh& ba
 
 // Refuses, before sampling them, more detail points than the options allow.
 void check_detail_size(std::size_t points, const RemeshOptions& options) {
-    if (points <= options.max_detail_points) return;
-    throw std::invalid_argument("the detail would hold " + std::to_string(points) + " points (" +
+    if (points > options.max_detail_points)
+        throw std::invalid_argument("the detail would hold " + std::to_string(points) + " points (" +
                                 std::to_string(points * rgb::DetailPositions::kBytesPerPoint >> 20) + " MB), more than the " +
                                 std::to_string(options.max_detail_points) +
                                 " allowed: the mesh is far denser, at least in places, than the cage's faces; give the cage more triangles");
+    if (options.check_points) options.check_points(points);
 }
 
 }  // namespace

@@ -56,6 +56,9 @@ struct RemeshOptions {
     // everywhere), so the points stay below about 2 per triangle of M plus those of Σ_K.
     int max_detail_level = 10;
     std::size_t max_detail_points = std::size_t(1) << 25;
+    // Told the detail's points before they are sampled, below max_detail_points; may throw to refuse
+    // them (the CLI's --max-triangles: what this machine's memory allows).
+    std::function<void(std::size_t)> check_points;
     FitOptions fit;
     // Told the share of the work done (0..1) and the phase's name; returns false to stop (then
     // remesh throws Stopped, having changed nothing).

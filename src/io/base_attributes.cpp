@@ -2,12 +2,16 @@
 
 #include "io/base_uvs.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <iterator>
 
 #include "io/materials/material_library.h"
 #include "io/mesh_file.h"
 #include "io/mesh_reader.h"
+#include "io/obj/obj_error.h"
+#include "io/obj/printable_text.h"
+#include "io/obj_reader.h"
 #include "rgb/mesh/face_location.h"
 
 namespace rgbio {
@@ -92,6 +96,12 @@ std::uint32_t base_corner_texcoord(const rgb::Mesh& mesh, const BaseAttributes& 
     return kNoIndex;
 }
 
+namespace {
+bool has_control_byte(std::string_view text) {
+    return std::any_of(text.begin(), text.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; });
+}
+}  // namespace
+
 std::vector<std::string> library_references(const BaseAttributes& attributes, const std::string& output_folder) {
     namespace fs = std::filesystem;
     std::vector<std::string> references;
@@ -107,7 +117,14 @@ std::vector<std::string> library_references(const BaseAttributes& attributes, co
         // mtllib names are split at blanks: a path with one cannot be written.
         const bool keep = from == to || fs::path(written).is_absolute() || moved.empty() ||
                           moved.find_first_of(" \t") != std::string::npos;
-        references.push_back(keep ? written : moved);
+        std::string reference = keep ? written : moved;
+        // A line break (or CR, form feed, vertical tab...) in a folder's name would end the line and
+        // start another: the absolute path where that has none, else the save is refused.
+        if (has_control_byte(reference)) reference = target.generic_string();
+        if (has_control_byte(reference))
+            throw SaveError("cannot write the material library " + quoted_file_text(reference, 200) +
+                            " into an mtllib line: its path holds a line break or another control character");
+        references.push_back(std::move(reference));
     }
     return references;
 }

@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "io/files/atomic_file.h"
+#include "io/files/save_target.h"
 #include "io/obj/labelled_faces.h"
 #include "io/obj/number_format.h"
 #include "io/obj/obj_error.h"
@@ -210,8 +211,10 @@ std::string format_obj(const rgb::Mesh& mesh, const SaveOptions& options) {
 }
 
 void save_mesh(const rgb::Mesh& mesh, const std::string& path, const SaveOptions& options) {
+    // The real file's folder: saved through a symbolic link, the file lives where the link leads.
+    const std::string folder = resolve_save_target(path).folder;
     AtomicFileWriter file(path);
-    write_obj(mesh, options, std::filesystem::path(path).parent_path().string(), file);
+    write_obj(mesh, options, folder, file);
     file.commit();
     options.progress.done();
 }

@@ -97,20 +97,18 @@ std::shared_ptr<rgb::Mesh> adaptive_mesh(SavedState& saved, const ObjRecords& re
 // release_text() is called once a state is parsed: nothing after needs the text. The records are
 // used up (the positions move into the result).
 LoadedMesh read_records(ObjRecords&& records, const std::string& name, const ReadOptions& options,
-                        const std::function<void()>& release_text) {
+                        const std::function<void()>& release_text, std::optional<std::string> foreign_lines) {
     const std::size_t vertices = records.positions.size();
     // Read before the text is released: the tag lines are views into it, and a saved file that does
     // not match its state (edited elsewhere) loads as a plain mesh with these tags.
     const FileTags tags = parse_tag_lines(records.tags, vertices, name);
     std::vector<std::string> warnings;
+    if (foreign_lines) warnings.push_back(std::move(*foreign_lines));
     if (!records.state.empty()) {
+        // drop_foreign_state_lines has left only a state that starts with '#rgb state'.
         std::optional<SavedState> saved = parse_state(records.state, name, records.positions.size(), records.polygons.size());
         options.progress.reach(kStateParsed);
-        if (!saved) {
-            warnings.push_back("ignored " + std::to_string(records.state.size()) +
-                               " comment lines starting with #rgb (the first on line " + std::to_string(records.state.front().line) +
-                               "): they are not an rgbsub state, which starts with '#rgb state'");
-        } else {
+        if (saved) {
             release_text();
             std::string reason;
             if (std::shared_ptr<rgb::Mesh> mesh = adaptive_mesh(*saved, records, reason, options.progress.part(kStateParsed, 1.0))) {
@@ -119,6 +117,7 @@ LoadedMesh read_records(ObjRecords&& records, const std::string& name, const Rea
                 loaded.base_uvs = std::move(saved->uvs);
                 loaded.base_colours = std::move(saved->colours);
                 loaded.adaptive_labels = std::move(saved->labels);
+                loaded.warnings.insert(loaded.warnings.begin(), warnings.begin(), warnings.end());
                 options.progress.done();
                 return loaded;
             }
@@ -145,19 +144,28 @@ LoadedMesh read_text(std::string_view text, FileText* owned, const std::string& 
     const rgb::ProgressSpan parsing = options.progress.part(0.0, kParsed);
     ReadOptions rest = options;
     rest.progress = options.progress.part(kParsed, 1.0);
-    if (!header) return read_records(parse_obj(text, name, parsing), name, rest, [] {});
+    if (!header) {
+        ObjRecords records = parse_obj(text, name, parsing);
+        std::optional<std::string> foreign = drop_foreign_state_lines(records.state);
+        return read_records(std::move(records), name, rest, [] {}, std::move(foreign));
+    }
     ObjRecords records;
+    std::optional<std::string> foreign;
     try {
         records = parse_obj(text, name, parsing);
+        foreign = drop_foreign_state_lines(records.state);
         check_saved_file_complete(*header, records, text, name);
     } catch (const ObjError& error) {
         throw truncation_or(error, *header, text, name);
     }
     const TextEnd end = text_end(records, text);
     try {
-        return read_records(std::move(records), name, rest, [owned] {
-            if (owned) owned->release();
-        });
+        return read_records(
+            std::move(records), name, rest,
+            [owned] {
+                if (owned) owned->release();
+            },
+            std::move(foreign));
     } catch (const ObjError& error) {
         throw truncation_or(error, *header, end, name);
     }

@@ -45,4 +45,19 @@ Image read_image(const std::filesystem::path& path) {
     return to_image(decoded, width, height, path.string());
 }
 
+Image BoundedImageReader::read(const std::filesystem::path& path) {
+    int width = 0, height = 0, channels = 0;
+    if (stbi_info(path.c_str(), &width, &height, &channels) == 0)
+        throw std::runtime_error(path.string() + ": cannot read the image: " + stbi_failure_reason());
+    const std::string size = std::to_string(width) + "x" + std::to_string(height) + " pixels";
+    if (width > kMaxImageSide || height > kMaxImageSide)
+        throw std::runtime_error(size + ", more than " + std::to_string(kMaxImageSide) + " on a side");
+    const std::size_t bytes = 4 * std::size_t(width) * std::size_t(height);
+    if (decoded_bytes_ + bytes > kMaxDecodedBytes)
+        throw std::runtime_error(size + ": with the textures before it, more than " + std::to_string(kMaxDecodedBytes >> 20) + " MB decoded");
+    Image image = read_image(path);
+    decoded_bytes_ += image.rgba.size();
+    return image;
+}
+
 }  // namespace render

@@ -1,5 +1,6 @@
 #pragma once
 // An RGBA8 image, rows top to bottom, its PNG form, and image files read with stb_image.
+#include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -27,5 +28,20 @@ std::string encode_png(const Image& image);
 Image decode_png(const std::string& png);
 // Any format stb_image reads (PNG, JPEG, TGA, BMP, ...), converted to RGBA8.
 Image read_image(const std::filesystem::path& path);
+
+// Images read for a preview are refused above this many pixels on a side (a 389 KB PNG can say
+// 20000x20000, 1.6 GB decoded), and, read one after another, above kMaxDecodedBytes in all.
+inline constexpr int kMaxImageSide = 8192;
+inline constexpr std::size_t kMaxDecodedBytes = std::size_t(1) << 30;
+// Reads images for a preview: the header first, and refuses (std::runtime_error, saying why) an
+// image over kMaxImageSide on a side or one that would take the images read so far past
+// kMaxDecodedBytes, before decoding it.
+class BoundedImageReader {
+public:
+    Image read(const std::filesystem::path& path);
+
+private:
+    std::size_t decoded_bytes_ = 0;
+};
 
 }  // namespace render

@@ -1,10 +1,12 @@
 #include "io/gltf/gltf_writer.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <unordered_map>
 
@@ -14,6 +16,7 @@
 #include "io/files/atomic_file.h"
 #include "io/files/save_target.h"
 #include "io/obj/obj_error.h"
+#include "io/obj/printable_text.h"
 
 namespace rgbio {
 
@@ -126,16 +129,45 @@ private:
     std::vector<unsigned char> bytes_;
 };
 
+// glTF strings are UTF-8 (JSON): a name that is not keeps its bytes as \xNN text.
+bool is_utf8(std::string_view text) {
+    for (std::size_t i = 0; i < text.size();) {
+        const auto lead = static_cast<unsigned char>(text[i]);
+        const std::size_t length = lead < 0x80 ? 1 : (lead >> 5) == 0x6 ? 2 : (lead >> 4) == 0xE ? 3 : (lead >> 3) == 0x1E ? 4 : 0;
+        if (length == 0 || i + length > text.size()) return false;
+        for (std::size_t k = 1; k < length; ++k)
+            if ((static_cast<unsigned char>(text[i + k]) >> 6) != 0x2) return false;
+        i += length;
+    }
+    return true;
+}
+std::string utf8_name(const std::string& name) {
+    if (is_utf8(name)) return name;
+    const std::string quoted = quoted_file_text(name, name.size());
+    return quoted.substr(1, quoted.size() - 2);
+}
+// A base colour factor must be a number in [0, 1]: clamped, and 1 for one that is not a number.
+double colour_factor(double x) { return std::isnan(x) ? 1.0 : std::clamp(x, 0.0, 1.0); }
+bool is_colour_factor(double x) { return x >= 0.0 && x <= 1.0; }
+// A normal that normalizes to a unit vector of floats, or nothing.
+std::optional<glm::dvec3> unit_normal(const glm::dvec3& n) {
+    const double length = glm::length(n);
+    if (!(length > 0.0) || !std::isfinite(length)) return std::nullopt;
+    const glm::dvec3 unit = n / length;
+    if (!std::isfinite(unit.x) || !std::isfinite(unit.y) || !std::isfinite(unit.z)) return std::nullopt;
+    return unit;
+}
+
 // One glTF material per mesh material; textures share images by path.
 void add_materials(const GltfMesh& mesh, const fs::path& output_folder, tinygltf::Model& model) {
     std::map<std::string, int> texture_of_path;
     for (const Material& m : mesh.materials) {
         tinygltf::Material material;
-        material.name = m.name;
+        material.name = utf8_name(m.name);
         material.pbrMetallicRoughness.metallicFactor = 0.0;  // OBJ materials are dielectrics
         material.pbrMetallicRoughness.roughnessFactor = 1.0;
         if (m.diffuse_texture.empty()) {
-            material.pbrMetallicRoughness.baseColorFactor = {m.diffuse.r, m.diffuse.g, m.diffuse.b, 1.0};
+            material.pbrMetallicRoughness.baseColorFactor = {colour_factor(m.diffuse.r), colour_factor(m.diffuse.g), colour_factor(m.diffuse.b), 1.0};
         } else {
             auto [it, inserted] = texture_of_path.try_emplace(m.diffuse_texture, static_cast<int>(model.textures.size()));
             if (inserted) {
@@ -166,6 +198,28 @@ std::vector<std::uint32_t> material_indices(const FaceLabels& face_materials, co
     return result;
 }
 
+std::vector<std::string> gltf_repairs(const GltfMesh& mesh) {
+    std::vector<std::string> warnings;
+    std::size_t names = 0, colours = 0, normals = 0;
+    const Material* first_name = nullptr;
+    const Material* first_colour = nullptr;
+    for (const Material& m : mesh.materials) {
+        if (!is_utf8(m.name) && names++ == 0) first_name = &m;
+        const bool in_range = is_colour_factor(m.diffuse.r) && is_colour_factor(m.diffuse.g) && is_colour_factor(m.diffuse.b);
+        if (m.diffuse_texture.empty() && !in_range && colours++ == 0) first_colour = &m;
+    }
+    for (const glm::dvec3& n : mesh.normals) normals += !unit_normal(n);
+    if (names > 0)
+        warnings.push_back(std::to_string(names) + " material names are not UTF-8, which glTF needs; written with \\xNN for their other bytes, the first " +
+                           quoted_file_text(first_name->name));
+    if (colours > 0)
+        warnings.push_back(std::to_string(colours) + " materials have a diffuse colour (Kd) outside 0..1, clamped for glTF's baseColorFactor, the first " +
+                           quoted_file_text(first_colour->name));
+    if (normals > 0)
+        warnings.push_back(std::to_string(normals) + " vertices have no normal (only degenerate faces around them): written as +z");
+    return warnings;
+}
+
 std::string format_gltf(const GltfMesh& mesh, GltfContainer container, const std::string& output_folder) {
     const GltfVertices vertices = unweld(mesh);
     ModelBuilder builder;
@@ -177,8 +231,8 @@ std::string format_gltf(const GltfMesh& mesh, GltfContainer container, const std
     if (!mesh.normals.empty()) {
         std::vector<glm::dvec3> normals;
         for (std::uint32_t v : vertices.position) {
-            const glm::dvec3 n = mesh.normals[v];
-            normals.push_back(glm::length(n) > 0 ? glm::normalize(n) : n);
+            // A degenerate face's point has no normal: +z stands in (gltf_repairs warns).
+            normals.push_back(unit_normal(mesh.normals[v]).value_or(glm::dvec3(0.0, 0.0, 1.0)));
         }
         base.attributes["NORMAL"] = builder.add_floats<3>(normals, TINYGLTF_TYPE_VEC3, false);
     }
@@ -234,9 +288,9 @@ std::string format_gltf(const GltfMesh& mesh, GltfContainer container, const std
 
 void save_gltf(const GltfMesh& mesh, const std::string& path) {
     const bool binary = has_extension(path, ".glb");
-    const fs::path folder = fs::path(path).parent_path();
-    write_file_atomically(path, format_gltf(mesh, binary ? GltfContainer::Binary : GltfContainer::Json,
-                                            folder.empty() ? std::string(".") : folder.string()));
+    // Image paths from the real file's folder: saved through a symbolic link, it lives where the link leads.
+    const std::string folder = resolve_save_target(path).folder;
+    write_file_atomically(path, format_gltf(mesh, binary ? GltfContainer::Binary : GltfContainer::Json, folder));
 }
 
 }  // namespace rgbio

@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <set>
 #include <istream>
 #include <streambuf>
+#include <tuple>
+#include <utility>
 #include <string_view>
 
 #include <tiny_obj_loader.h>
@@ -47,14 +50,10 @@ std::size_t announced_materials(std::string_view text) {
     return count;
 }
 
-// Appends the library's materials; false (with a warning) when it cannot be read or would take the
-// libraries beyond what they may cost.
-bool read_library(const fs::path& path, LibraryCost& cost, std::vector<Material>& materials, std::vector<std::string>& warnings) {
-    auto not_read = [&](const std::string& why) {
-        warnings.push_back("material library " + quoted_file_text(path.string(), 200) + " was not read (" + why +
-                           "); faces keep their material names");
-        return false;
-    };
+// Appends the library's materials; the reason when it cannot be read or would take the libraries
+// beyond what they may cost.
+std::optional<std::string> read_library(const fs::path& path, LibraryCost& cost, std::vector<Material>& materials) {
+    auto not_read = [](const std::string& why) { return std::optional<std::string>(why); };
     // Its size first, before any of it is read.
     std::error_code error;
     const std::uintmax_t bytes = fs::file_size(path, error);
@@ -88,7 +87,7 @@ bool read_library(const fs::path& path, LibraryCost& cost, std::vector<Material>
         material.library = path.string();
         materials.push_back(std::move(material));
     }
-    return true;
+    return std::nullopt;
 }
 
 void warn_about_missing_textures(const std::vector<Material>& materials, std::vector<std::string>& warnings) {
@@ -129,19 +128,28 @@ fs::path resolve_file_reference(const std::string& written, const fs::path& fold
 std::vector<Material> read_material_libraries(const std::vector<std::string>& libraries, const fs::path& obj_folder,
                                               const FaceLabels& face_materials, std::vector<std::string>& warnings) {
     std::vector<Material> materials;
-    bool all_read = true;
     LibraryCost cost;
+    // One warning for every library not read (a file may name 100,000 missing ones): the count, the
+    // first and why.
+    std::size_t unread = 0;
+    std::string first_unread, first_why;
     std::set<fs::path> seen;  // canonical paths: a library named again (in any spelling) is read once
     for (const std::string& library : libraries) {
         const fs::path path = resolve_file_reference(library, obj_folder);
         std::error_code error;
         const fs::path canonical = fs::weakly_canonical(path, error);
         if (!seen.insert(error ? path : canonical).second) continue;
-        all_read = read_library(path, cost, materials, warnings) && all_read;
+        if (const std::optional<std::string> why = read_library(path, cost, materials); why && unread++ == 0)
+            std::tie(first_unread, first_why) = std::pair(quoted_file_text(path.string(), 200), *why);
     }
+    if (unread == 1)
+        warnings.push_back("material library " + first_unread + " was not read (" + first_why + "); faces keep their material names");
+    if (unread > 1)
+        warnings.push_back(std::to_string(unread) + " material libraries were not read, the first " + first_unread + " (" + first_why +
+                           "); faces keep their material names");
     warn_about_missing_textures(materials, warnings);
     // An unread library was reported already; without any library, names are all a file has.
-    if (all_read && !libraries.empty()) warn_about_undefined_materials(materials, face_materials, warnings);
+    if (unread == 0 && !libraries.empty()) warn_about_undefined_materials(materials, face_materials, warnings);
     return materials;
 }
 

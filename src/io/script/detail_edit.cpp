@@ -47,12 +47,17 @@ double world_amount(const rgb::Mesh& mesh, const Amount& amount) {
     return amount.value / 100.0 * glm::distance(lo, hi);
 }
 
+MemoryUse memory_use(DetailCriterion criterion) {
+    return criterion == DetailCriterion::Tolerance ? MemoryUse::Tolerance : MemoryUse::MaxEdge;
+}
+
 rgb::DetailRequest detail_request(const rgb::Mesh& mesh, const DetailEdit& edit, std::size_t max_triangles) {
     rgb::DetailRequest request;
     request.kind = edit.kind;
     request.threshold = world_amount(mesh, edit.amount);
     request.value = edit.criterion == DetailCriterion::MaxEdge ? rgb::edge_length_value(mesh.shared_base())
                                                                : rgb::limit_error_value(mesh.shared_base(), request.threshold);
+    if (edit.criterion == DetailCriterion::Tolerance) request.shrink_per_level = 4.0;
     request.sphere = edit.sphere;
     request.max_triangles = max_triangles;
     return request;
@@ -60,7 +65,9 @@ rgb::DetailRequest detail_request(const rgb::Mesh& mesh, const DetailEdit& edit,
 
 DetailOutcome apply_detail_edit(rgb::Mesh& mesh, const DetailEdit& edit, std::size_t max_triangles) {
     DetailOutcome outcome;
-    outcome.report = rgb::apply_detail_request(mesh, detail_request(mesh, edit, max_triangles));
+    const rgb::DetailRequest request = detail_request(mesh, edit, max_triangles);
+    check_detail_size(mesh, request, max_triangles);
+    outcome.report = rgb::apply_detail_request(mesh, request);
     if (outcome.report.budget_bound)
         throw TooLarge("the request needs more than " + std::to_string(max_triangles) +
                        " triangles (set by this machine's memory; --max-triangles changes it)");

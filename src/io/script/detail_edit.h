@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "io/script/triangle_limit.h"
 #include "rgb/lod/lod_criteria.h"
 #include "rgb/lod/requests.h"
 
@@ -35,6 +36,9 @@ struct DetailEdit {
 
 // The edit's amount in world units: a percentage of the diagonal of the base mesh's bounding box.
 double world_amount(const rgb::Mesh& mesh, const Amount& amount);
+
+// The path whose memory a criterion's edit costs (triangle_limit.h).
+MemoryUse memory_use(DetailCriterion criterion);
 
 // The core's request for the edit on this mesh.
 rgb::DetailRequest detail_request(const rgb::Mesh& mesh, const DetailEdit& edit, std::size_t max_triangles);

@@ -9,6 +9,8 @@
 #include "io/files/file_text.h"
 #include "io/obj/number_format.h"
 #include "io/obj/obj_error.h"
+#include "io/obj/printable_text.h"
+#include "io/obj/text_lines.h"
 #include "rgb/lod/limit_error.h"
 #include "rgb/lod/lod_driver.h"
 #include "rgb/mesh/mesh.h"
@@ -86,7 +88,7 @@ DetailEdit detail_edit(const LineReader& r, DetailCriterion criterion) {
     if (r.size() == 8) {
         if (r[7] == "refine") edit.kind = rgb::RequestKind::Refine;
         else if (r[7] == "coarsen") edit.kind = rgb::RequestKind::Coarsen;
-        else if (r[7] != "set") r.fail("a ball's detail is refine, coarsen or set, not '" + r[7].substr(0, 40) + "'");
+        else if (r[7] != "set") r.fail("a ball's detail is refine, coarsen or set, not " + quoted_file_text(r[7]));
     }
     return edit;
 }
@@ -97,7 +99,7 @@ BrushEdit brush_edit(const LineReader& r) {
     if (r[1] == "refine") brush.mode = rgb::BrushMode::Refine;
     else if (r[1] == "coarsen") brush.mode = rgb::BrushMode::Coarsen;
     else if (r[1] == "set") brush.mode = rgb::BrushMode::Set;
-    else r.fail("the brush mode must be refine, coarsen or set, not '" + r[1] + "'");
+    else r.fail("the brush mode must be refine, coarsen or set, not " + quoted_file_text(r[1]));
     brush.level = r.level(2);
     brush.radius = r.number(3, "the brush radius");
     if (!(brush.radius > 0.0)) r.fail("the brush radius must be positive");
@@ -113,7 +115,7 @@ std::uint8_t mirror_axes(const LineReader& r, std::size_t i) {
     std::uint8_t mirror = 0;
     for (char axis : r[i]) {
         const std::uint8_t bit = axis == 'x' ? kMirrorX : axis == 'y' ? kMirrorY : axis == 'z' ? kMirrorZ : 0;
-        if (bit == 0 || (mirror & bit) != 0) r.fail("mirror takes the axes x, y and z, each at most once, not '" + r[i] + "'");
+        if (bit == 0 || (mirror & bit) != 0) r.fail("mirror takes the axes x, y and z, each at most once, not " + quoted_file_text(r[i]));
         mirror |= bit;
     }
     return mirror;
@@ -148,13 +150,12 @@ const char* mode_name(rgb::BrushMode mode) {
 
 std::vector<ScriptLine> parse_lod_script(const std::string& text, const std::string& file) {
     std::vector<ScriptLine> script;
-    std::istringstream in(text);
-    std::size_t number = 0;
     bool brush_given = false;
-    for (std::string line; std::getline(in, line);) {
-        ++number;
+    // Lines end at LF, CRLF or a lone CR, as in OBJ files.
+    for_each_line(text, [&](std::size_t number, std::string_view content) {
+        const std::string line(content);
         const std::vector<std::string> words = split_words(line);
-        if (words.empty() || words[0].starts_with('#')) continue;
+        if (words.empty() || words[0].starts_with('#')) return;
         const LineReader r(words, file, number);
         ScriptLine entry;
         entry.line = number;
@@ -181,11 +182,11 @@ std::vector<ScriptLine> parse_lod_script(const std::string& text, const std::str
             if (!brush_given) r.fail("a dab needs a 'brush' line before it");
             entry.edit = dab_edit(r);
         } else {
-            r.fail("unknown command '" + words[0].substr(0, 40) +
-                   "' (expected level, refine, coarsen, budget, max-edge, tolerance, brush or dab)");
+            r.fail("unknown command " + quoted_file_text(words[0]) +
+                   " (expected level, refine, coarsen, budget, max-edge, tolerance, brush or dab)");
         }
         script.push_back(std::move(entry));
-    }
+    });
     return script;
 }
 

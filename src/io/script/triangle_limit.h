@@ -1,7 +1,8 @@
 #pragma once
 // How large a mesh a command may build: requests are estimated before they run
-// (rgb::estimated_triangles) and refused above this limit with a message, instead of ending in
-// std::bad_alloc halfway. The default follows the machine's memory.
+// (rgb::estimated_triangles, rgb::estimated_detail_triangles) and refused above this limit with a
+// message, instead of ending in std::bad_alloc or the kernel's OOM killer halfway. The default
+// follows the machine's memory and what a triangle costs on the path that builds it.
 #include <cstddef>
 #include <stdexcept>
 #include <string>
@@ -9,16 +10,30 @@
 namespace rgb {
 class Mesh;
 struct LevelRequest;
+struct DetailRequest;
 }  // namespace rgb
 
 namespace rgbio {
 
-// About what a triangle costs while it is edited and saved (core, addresses, render copy, output
-// buffers), so that the default limit leaves the machine usable.
-inline constexpr std::size_t kBytesPerTriangleBudget = 160;
+// The paths that build or read a mesh, each with its own peak memory per triangle.
+enum class MemoryUse {
+    Level,      // refine --level, level and dab lines: the mesh, its addresses, the saved text
+    MaxEdge,    // --max-edge: the LOD driver's queue besides
+    Tolerance,  // --tolerance: the criterion's cache of every triangle's samples besides
+    ScreenLod,  // render --screen-lod: the driver, and the render copy
+    Budget,     // an apply budget line: the LOD driver from a uniform start
+    Load,       // loading a saved file: the state's records and the mesh rebuilt from them
+    Remesh,     // remesh, per point of the detail it samples
+};
 
-// Physical memory / kBytesPerTriangleBudget.
-std::size_t default_triangle_limit();
+// Peak bytes per triangle on each path, measured as whole processes by tests/bench/memory_bench.cpp
+// (docs/benchmarks.md, "Memory per triangle"), with a margin.
+std::size_t bytes_per_triangle(MemoryUse use);
+
+// The default --max-triangles of a path: three quarters of the machine's physical memory over what
+// a triangle costs there; for a path that saves a mesh, over what loading it back costs if that is
+// more, so that whatever a command saves under its default limit loads again on the same machine.
+std::size_t default_triangle_limit(MemoryUse use);
 
 class TooLarge : public std::runtime_error {
 public:
@@ -27,6 +42,10 @@ public:
 
 // Throws TooLarge naming the estimate and the limit when the request would exceed it.
 void check_request_size(const rgb::Mesh& mesh, const rgb::LevelRequest& request, std::size_t limit);
+// The same for a detail request (max-edge, tolerance, view), from a lower estimate made before any
+// work: a request refused here could not have fit; one that passes may still be stopped at the
+// limit by the work itself.
+void check_detail_size(const rgb::Mesh& mesh, const rgb::DetailRequest& request, std::size_t limit);
 // The same for a triangle budget, which is its own estimate.
 void check_budget_size(std::size_t budget, std::size_t limit);
 

@@ -7,6 +7,7 @@
 
 #include "io/obj/number_format.h"
 #include "io/obj/obj_error.h"
+#include "io/obj/printable_text.h"
 #include "io/state/base_colour_state.h"
 #include "io/state/crease_tags.h"
 #include "io/state/face_label_state.h"
@@ -246,6 +247,26 @@ void write_state(const rgb::Mesh& mesh, bool limit_positions, std::span<const st
     out += "#rgb end\n";
 }
 
+std::optional<std::string> drop_foreign_state_lines(std::vector<ObjStateLine>& lines) {
+    auto starts_state = [](const ObjStateLine& l) { return l.text.starts_with("state") && (l.text.size() == 5 || l.text[5] == ' ' || l.text[5] == '\t'); };
+    const auto first = std::find_if(lines.begin(), lines.end(), starts_state);
+    const std::size_t count = lines.size(), first_line = lines.empty() ? 0 : lines.front().line;
+    if (first == lines.end()) {
+        lines.clear();
+        if (count == 0) return std::nullopt;
+        return "ignored " + std::to_string(count) + " comment lines starting with #rgb (the first on line " + std::to_string(first_line) +
+               "): they are not an rgbsub state, which starts with '#rgb state'";
+    }
+    auto end = std::find_if(first, lines.end(), [](const ObjStateLine& l) { return l.text == "end"; });
+    if (end != lines.end()) ++end;
+    const std::size_t foreign_line = first != lines.begin() ? lines.front().line : end != lines.end() ? end->line : 0;
+    lines.erase(end, lines.end());
+    lines.erase(lines.begin(), first);
+    if (lines.size() == count) return std::nullopt;
+    return "ignored " + std::to_string(count - lines.size()) + " comment lines starting with #rgb outside the rgbsub state (the first on line " +
+           std::to_string(foreign_line) + "): another program's";
+}
+
 std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const std::string& file, std::size_t body_vertices,
                                       std::size_t body_faces) {
     if (lines.empty()) return std::nullopt;
@@ -291,7 +312,7 @@ std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const
             else if (name == "base-uvs") section = Section::BaseUvs;
             else if (name == "base-colours") section = Section::BaseColours;
             else if (name == "detail" && version >= kDetailStateFormatVersion) section = Section::Detail;
-            else r.fail("unknown section '" + std::string(name.substr(0, 40)) + "' (written by a newer rgbsub?)");
+            else r.fail("unknown section " + quoted_file_text(name) + " (written by a newer rgbsub?)");
             const auto s = static_cast<int>(section);
             if (seen[s]) r.fail("section '" + std::string(name) + "' appears twice");
             seen[s] = true;
@@ -313,12 +334,14 @@ std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const
             state.base_positions.push_back(p);
         } else if (kind == "p-as-v") {
             if (section != Section::BaseVertices) r.fail("base vertices outside their section");
+            if (version < kStateFormatVersion) r.fail("'p-as-v' is a record of format 3 on, and the state says format " + std::to_string(version));
             const std::size_t count = r.number<std::size_t>(body_vertices);
             r.expect_end();
             saved.vertices_as_v.push_back({state.base_positions.size(), count, 0});
             state.base_positions.resize(std::min(state.base_positions.size() + count, body_vertices + 1));
         } else if (kind == "t-as-f") {
             if (section != Section::BaseFaces) r.fail("base faces outside their section");
+            if (version < kStateFormatVersion) r.fail("'t-as-f' is a record of format 3 on, and the state says format " + std::to_string(version));
             const std::size_t first = r.number<std::size_t>(body_faces), count = r.number<std::size_t>(body_faces);
             r.expect_end();
             saved.faces_as_f.push_back({state.base_triangles.size(), count, first});
@@ -353,7 +376,7 @@ std::optional<SavedState> parse_state(std::span<const ObjStateLine> lines, const
             r.expect_end();
             ended = true;
         } else {
-            r.fail("unknown record '" + std::string(kind.substr(0, 40)) + "'");
+            r.fail("unknown record " + quoted_file_text(kind));
         }
     }
     StateLineReader last(lines.back(), file);

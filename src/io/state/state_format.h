@@ -98,6 +98,11 @@ void write_state(const rgb::Mesh& mesh, bool limit_positions, std::span<const st
                  const std::function<void()>& flush_if_full, std::span<const rgb::FaceId> face_lines = {}, const BaseFaceLabels& labels = {},
                  const rgb::UvChannel* uvs = nullptr, std::span<const glm::dvec3> base_colours = {});
 
+// Removes from a file's #rgb lines those of another program: all of them when none is an rgbsub
+// state's '#rgb state' line, else those before it and after its '#rgb end'. Returns the warning that
+// says so, or nothing when every line belongs to the state.
+std::optional<std::string> drop_foreign_state_lines(std::vector<ObjStateLine>& lines);
+
 // The #rgb lines of a file, or nothing when they are not an rgbsub state at all (no `#rgb state`
 // header first: some other program's comments). Throws ObjError(BadState) naming the offending line,
 // and for another format version, naming it. The body's counts of v and f lines bound what a line

@@ -11,6 +11,7 @@
 
 #include "io/obj/obj_error.h"
 #include "io/obj/obj_parser.h"
+#include "io/obj/printable_text.h"
 
 namespace rgbio {
 
@@ -50,9 +51,9 @@ public:
         const auto [end, ec] = std::from_chars(w.data(), w.data() + w.size(), value);
         if constexpr (std::is_floating_point_v<T>) {
             if (ec == std::errc::result_out_of_range || (ec == std::errc() && std::abs(value) > kMaxCoordinate))
-                fail("coordinate '" + std::string(w.substr(0, 40)) + "' exceeds the supported magnitude 1e12");
+                fail("coordinate " + quoted_file_text(w) + " exceeds the supported magnitude 1e12");
         }
-        if (ec != std::errc() || end != w.data() + w.size()) fail("expected a number, found '" + std::string(w.substr(0, 40)) + "'");
+        if (ec != std::errc() || end != w.data() + w.size()) fail("expected a number, found " + quoted_file_text(w));
         if constexpr (std::is_floating_point_v<T>) {
             if (!std::isfinite(value)) fail("non-finite value");
         } else if (value > max) {

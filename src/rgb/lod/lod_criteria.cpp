@@ -131,6 +131,38 @@ LodSettings whole_surface_settings(const DetailRequest& r) {
     return settings;
 }
 
+double estimated_detail_triangles(const Mesh& mesh, const DetailRequest& r) {
+    constexpr int kMarginLevels = 2;
+    check(r);
+    if (r.kind == RequestKind::Coarsen) return static_cast<double>(mesh.num_faces());
+    // Base faces by the level they need (less the margin: Loop's limit surface is smaller than its
+    // cage, so lengths may fall faster than halving), each level's group estimated as a
+    // level request restricted to it (which scales by the part of a face a ball can cover).
+    const BaseMesh& base = mesh.base();
+    std::vector<std::vector<std::uint32_t>> by_level(static_cast<std::size_t>(std::max(r.max_level, 0)) + 1);
+    for (std::uint32_t f = 0; f < base.num_faces(); ++f) {
+        double value = 0.0;
+        for (int i = 0; i < 3; ++i) value = std::max(value, r.value(corner_point(f, i), corner_point(f, (i + 1) % 3)));
+        int level = 0;
+        if (value > r.threshold) {
+            const double levels = std::log(value / r.threshold) / std::log(r.shrink_per_level);  // inf for a tiny threshold
+            level = levels < double(r.max_level) ? std::max(0, static_cast<int>(std::ceil(levels)) - kMarginLevels) : r.max_level - kMarginLevels;
+        }
+        by_level[static_cast<std::size_t>(std::max(level, 0))].push_back(f);
+    }
+    double total = 0.0;
+    for (std::size_t level = 0; level < by_level.size(); ++level) {
+        if (by_level[level].empty()) continue;
+        LevelRequest group;
+        group.kind = RequestKind::Refine;
+        group.level = static_cast<int>(level);
+        group.sphere = r.sphere;
+        group.base_faces = std::move(by_level[level]);
+        total += estimated_triangles(mesh, group) - static_cast<double>(mesh.num_faces());
+    }
+    return total;
+}
+
 LodReport apply_detail_request(Mesh& mesh, const DetailRequest& r) {
     check(r);
     if (r.kind == RequestKind::Set && !r.sphere) {

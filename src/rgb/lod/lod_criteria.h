@@ -49,7 +49,17 @@ struct DetailRequest {
     std::optional<Sphere> sphere;  // none: the whole surface
     std::size_t max_triangles = 1'000'000;
     int max_level = kMaxLevel;  // edges of this level are never split
+    // How much the values fall per level, for estimated_detail_triangles: 2 for a length (edges
+    // halve), 4 for a distance to the limit surface (it falls with the square of the edge length).
+    double shrink_per_level = 2.0;
 };
+
+// A lower estimate of the triangles the request leaves, made before any work and bounded whatever
+// the threshold: each base face the region meets needs the level at which its largest level-0
+// edge value falls to the threshold (shrink_per_level per level), capped at max_level; two levels
+// less are counted, as a margin for values that fall faster. So a request whose result cannot fit
+// (a threshold of 1e-300 asks for every face at the maximum level) is known at once.
+double estimated_detail_triangles(const Mesh& mesh, const DetailRequest& request);
 
 // Throws std::invalid_argument for a threshold that is negative or not finite, a bad sphere, or a
 // request without a value. With budget_bound set the result is cut short: over the whole surface at
