@@ -53,6 +53,7 @@ rgb::DetailRequest detail_request(const rgb::Mesh& mesh, const DetailEdit& edit,
     request.threshold = world_amount(mesh, edit.amount);
     request.value = edit.criterion == DetailCriterion::MaxEdge ? rgb::edge_length_value(mesh.shared_base())
                                                                : rgb::limit_error_value(mesh.shared_base(), request.threshold);
+    if (edit.criterion == DetailCriterion::MaxEdge) request.mesh_value = rgb::edge_length;
     request.sphere = edit.sphere;
     request.max_triangles = max_triangles;
     return request;
