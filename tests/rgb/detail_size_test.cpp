@@ -74,10 +74,14 @@ private:
     double threshold_;
 };
 
-rgb::LodReport apply_max_edge(rgb::Mesh& mesh, rgb::RequestKind kind, double length, std::optional<rgb::Sphere> sphere) {
+// With `from_mesh`, also the same values computed from the mesh (DetailRequest::mesh_value), which
+// the script's and the command line's max-edge give the driver: it must reach the same vertices.
+rgb::LodReport apply_max_edge(rgb::Mesh& mesh, rgb::RequestKind kind, double length, std::optional<rgb::Sphere> sphere,
+                              bool from_mesh = false) {
     rgb::DetailRequest request;
     request.kind = kind;
     request.value = rgb::edge_length_value(mesh.shared_base());
+    if (from_mesh) request.mesh_value = rgb::edge_length;
     request.threshold = length;
     request.sphere = sphere;
     request.max_level = kCap;
@@ -89,28 +93,30 @@ class DetailSize : public testing::TestWithParam<TestMesh> {};
 TEST_P(DetailSize, OverTheWholeSurfaceNoEdgeIsLongerThanAsked) {
     const TestMesh& base = GetParam();
     const UniformLoopOracle oracle(base.positions, base.triangles, kCap);
-    for (double share : {0.4, 0.75, 0.9}) {
-        const double length = clear_threshold(oracle, kCap, share);
-        const DetailMeaning meaning(oracle, length);
-        rgb::Mesh mesh = make_rgb_mesh(base);
-        IdentityTracker ids(mesh, oracle);
-        rgb::set_level(mesh, 1, rgb::Sphere{base.positions[1], 0.3 * bounding_box_diagonal(base.positions)});
-        const rgb::LodReport report = apply_max_edge(mesh, rgb::RequestKind::Set, length, std::nullopt);
-        EXPECT_FALSE(report.budget_bound);
-        EXPECT_EQ(ids.live_identities(), meaning.refined(meaning.base(), std::nullopt)) << "share " << share;
-        EXPECT_TRUE(rgb::check_invariants(mesh).ok());
-        EXPECT_TRUE(rgb::check_normal_form(mesh).ok());
-        // Edge by edge: every green edge is within the length in the uniform mesh of its level,
-        // unless it is at the level cap.
-        for (rgb::FaceId f : mesh.faces())
-            for (int i = 0; i < 3; ++i) {
-                const rgb::HalfedgeId h = rgb::Mesh::halfedge(f, i);
-                const rgb::EdgeType t = mesh.edge_type(h);
-                if (t.colour != rgb::Colour::Green || t.level >= kCap) continue;
-                const Identity x = ids.identity(mesh.from_vertex(h)), y = ids.identity(mesh.to_vertex(h));
-                EXPECT_LE(oracle_edge_length(oracle, x, y), length) << "edge " << x << "-" << y << " of level " << t.level;
-            }
-    }
+    for (double share : {0.4, 0.75, 0.9})
+        for (bool from_mesh : {false, true}) {
+            SCOPED_TRACE(from_mesh ? "values from the mesh" : "values from the hierarchy evaluator");
+            const double length = clear_threshold(oracle, kCap, share);
+            const DetailMeaning meaning(oracle, length);
+            rgb::Mesh mesh = make_rgb_mesh(base);
+            IdentityTracker ids(mesh, oracle);
+            rgb::set_level(mesh, 1, rgb::Sphere{base.positions[1], 0.3 * bounding_box_diagonal(base.positions)});
+            const rgb::LodReport report = apply_max_edge(mesh, rgb::RequestKind::Set, length, std::nullopt, from_mesh);
+            EXPECT_FALSE(report.budget_bound);
+            EXPECT_EQ(ids.live_identities(), meaning.refined(meaning.base(), std::nullopt)) << "share " << share;
+            EXPECT_TRUE(rgb::check_invariants(mesh).ok());
+            EXPECT_TRUE(rgb::check_normal_form(mesh).ok());
+            // Edge by edge: every green edge is within the length in the uniform mesh of its level,
+            // unless it is at the level cap.
+            for (rgb::FaceId f : mesh.faces())
+                for (int i = 0; i < 3; ++i) {
+                    const rgb::HalfedgeId h = rgb::Mesh::halfedge(f, i);
+                    const rgb::EdgeType t = mesh.edge_type(h);
+                    if (t.colour != rgb::Colour::Green || t.level >= kCap) continue;
+                    const Identity x = ids.identity(mesh.from_vertex(h)), y = ids.identity(mesh.to_vertex(h));
+                    EXPECT_LE(oracle_edge_length(oracle, x, y), length) << "edge " << x << "-" << y << " of level " << t.level;
+                }
+        }
 }
 
 TEST_P(DetailSize, RequestsInABallFollowTheirMeaning) {

@@ -58,6 +58,7 @@ rgb::DetailRequest detail_request(const rgb::Mesh& mesh, const DetailEdit& edit,
     request.value = edit.criterion == DetailCriterion::MaxEdge ? rgb::edge_length_value(mesh.shared_base())
                                                                : rgb::limit_error_value(mesh.shared_base(), request.threshold);
     if (edit.criterion == DetailCriterion::Tolerance) request.shrink_per_level = 4.0;
+    if (edit.criterion == DetailCriterion::MaxEdge) request.mesh_value = rgb::edge_length;
     request.sphere = edit.sphere;
     request.max_triangles = max_triangles;
     return request;

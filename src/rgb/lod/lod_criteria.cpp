@@ -123,7 +123,7 @@ SplitValue on_mesh(EdgeValue value) {
 LodSettings whole_surface_settings(const DetailRequest& r) {
     check(r);
     LodSettings settings;
-    settings.value = on_mesh(r.value);
+    settings.value = r.mesh_value ? r.mesh_value : on_mesh(r.value);
     settings.threshold = r.threshold;
     settings.max_triangles = r.max_triangles;
     settings.max_level = r.max_level;

@@ -45,6 +45,10 @@ SplitValue on_mesh(EdgeValue value);
 struct DetailRequest {
     RequestKind kind = RequestKind::Set;
     EdgeValue value;
+    // Optional: the same values, bit for bit, computed from the mesh (rgb::edge_length for
+    // edge_length_value), which a Set over the whole surface then uses: the driver keys such edges
+    // from the limits it keeps by slot instead of descending the hierarchy evaluator for each.
+    SplitValue mesh_value;
     double threshold = 0.0;  // split where the value is above it, keep only where it is
     std::optional<Sphere> sphere;  // none: the whole surface
     std::size_t max_triangles = 1'000'000;

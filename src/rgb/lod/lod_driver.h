@@ -60,7 +60,9 @@ struct LodSettings {
     // split wanted (threshold 0) may start with the uniform levels the budget will surely hold,
     // through refine_uniform in one long step (about a third of the cost per split). The result is
     // the same; where the start proves wrong (a vertex of those levels not wanted, or below the
-    // split where the budget stops) the run starts again the ordinary way.
+    // split where the budget stops) the run starts again the ordinary way, from a copy of the mesh
+    // kept before the start. On a mesh of very different triangle sizes, where an estimate from the
+    // base's edges shows it would prove wrong, it is not tried (uniform_start_hopeless).
     bool uniform_start = false;
 };
 
@@ -141,6 +143,7 @@ private:
     void stop_room_prefault();
     void prefault_room(std::size_t faces, std::size_t vertices);
     int uniform_start_level() const;
+    bool uniform_start_hopeless(int level) const;
     void refine_uniform_start();
     void undo_uniform_start();
     bool split(const Candidate& c);
@@ -190,6 +193,7 @@ private:
     // wrong), whether it proved wrong, and whether refine_uniform is running (keys wait for its end).
     std::optional<Candidate> uniform_lowest_;
     bool uniform_start_failed_ = false, keys_wait_ = false;
+    std::unique_ptr<Mesh> before_uniform_start_;  // the mesh the start began from, while it may prove wrong
     // A run with every split wanted has the room it reserved, and the mesh's table of limits, faulted
     // in ahead of its writes. Two threads: the room fills front to back, all ranges in step, but the
     // table all over at once (the uniform start's limits), so it cannot wait its turn among them.

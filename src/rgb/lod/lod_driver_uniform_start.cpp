@@ -6,10 +6,16 @@
 // (docs/benchmarks.md).
 #include "rgb/lod/lod_driver.h"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <optional>
 #include <vector>
 
+#include <glm/geometric.hpp>
+
 #include "rgb/lod/refine.h"
+#include "rgb/mesh/base_mesh.h"
 #include "rgb/mesh/operators.h"
 #include "rgb/support/parallel.h"
 #include "rgb/values/loop_geometry.h"
@@ -46,6 +52,38 @@ int LodDriver::uniform_start_level() const {
     return level;
 }
 
+// Whether the start would surely prove wrong, by an estimate from the base mesh alone (it decides only
+// whether to try: the result is the same either way). Its lowest vertex's edge is about the base's
+// shortest edge halved at each level below `level`; before the ordinary run comes down to that value,
+// a base face whose edges are r times as long is split about log2(r) levels deep, into 4^log2(r)
+// triangles. On a mesh of very different triangle sizes (a scan, a part with small details) that
+// overfills the budget by far, and the start would only be undone at the budget's end, after a whole
+// run on top of it (it was 3.5 times the cost per output triangle of a uniform level there).
+bool LodDriver::uniform_start_hopeless(int level) const {
+    const BaseMesh& base = mesh_.base();
+    double shortest = std::numeric_limits<double>::infinity();
+    std::vector<double> mean_edge(base.num_faces());
+    for (std::uint32_t f = 0; f < base.num_faces(); ++f) {
+        const Triangle& t = base.face(f);
+        double sum = 0.0;
+        for (int i = 0; i < 3; ++i) {
+            const double length = glm::distance(base.position(t[i]), base.position(t[(i + 1) % 3]));
+            shortest = std::min(shortest, length);
+            sum += length;
+        }
+        mean_edge[f] = sum / 3.0;
+    }
+    const double lowest = std::ldexp(shortest, 1 - level);
+    if (!(lowest > 0.0)) return true;
+    const double budget = static_cast<double>(settings_.max_triangles);
+    double triangles = 0.0;
+    for (double edge : mean_edge) {
+        triangles += edge > lowest ? std::exp2(2.0 * std::ceil(std::log2(edge / lowest))) : 1.0;
+        if (triangles > budget) return true;
+    }
+    return false;
+}
+
 // Every vertex of the uniform levels, through refine_uniform, with its key as a split would give it
 // (a key depends on the vertex's edge alone). The run then goes on from that mesh; the result is the
 // same if every one of those vertices is wanted and outranks the split where the budget stops (then
@@ -53,7 +91,10 @@ int LodDriver::uniform_start_level() const {
 // checks against the lowest of them.
 void LodDriver::refine_uniform_start() {
     const int level = uniform_start_level();
-    if (level == 0) return;
+    if (level == 0 || uniform_start_hopeless(level)) return;
+    // The mesh before the start (the base: a run removes the old detail first), to go back to in one
+    // copy should the start prove wrong, rather than by removing its vertices one by one.
+    before_uniform_start_ = std::make_unique<Mesh>(mesh_);
     keys_wait_ = true;
     refine_uniform(mesh_, level);
     keys_wait_ = false;
@@ -82,19 +123,21 @@ void LodDriver::refine_uniform_start() {
 }
 
 // The uniform start held a vertex the ordinary run would not have: back to the mesh the run started
-// from (the base: a run removes the old detail first), with no candidates and the report of before
-// the start, for the ordinary way from there.
+// from, copied before the start, with no candidates, no limits known by slot (the copy's table of
+// limits holds only what the base had), and the report of before the start, for the ordinary way from
+// there. The copy keeps the arrays' room (a vector assigned a shorter one keeps its capacity).
 void LodDriver::undo_uniform_start() {
     uniform_start_failed_ = true;
     uniform_lowest_.reset();
-    const std::vector<VertexId> detail = detail_coarsest_first(mesh_);
-    for (auto it = detail.rbegin(); it != detail.rend(); ++it) remove_vertex(mesh_, *it);
+    clear_added_faces();
+    mesh_ = *before_uniform_start_;
+    before_uniform_start_.reset();
+    std::fill(limit_known_.begin(), limit_known_.end(), std::uint8_t(0));
     bands_.clear();
     band_list_.clear();
     queue_ = decltype(queue_)(Lower{this});
     band_next_ = 0;
     band_sorted_ = false;
-    clear_added_faces();
     steps_ = 0;
     report_ = report_before_start_;
 }
