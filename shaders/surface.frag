@@ -10,6 +10,7 @@ const int kColourVertex = 4;
 const int kColourChecker = 5;
 const int kColourTexture = 6;
 const int kColourDistance = 7;
+const int kColourMatcap = 8;
 const int kDistanceBands = 11;  // render/colour_map.h
 // render/surface_appearance.h
 const uint kNoTexture = 0xffffffffu;
@@ -25,6 +26,7 @@ in vec2 v_texcoord;
 flat in uint v_texture;
 
 uniform vec3 u_eye;
+uniform mat3 u_view_rotation;  // world to camera directions (x right, y up, z towards the viewer)
 uniform bool u_flat;
 uniform int u_colouring;
 uniform vec3 u_plain_colour;
@@ -68,6 +70,21 @@ vec3 base_colour(vec3 texel) {
     return u_plain_colour;
 }
 
+// The matcap: a clay sphere lit by a warm key light from the upper left, a cool fill from the lower
+// right, a rim light along the silhouette and a small highlight, looked up by the normal `n` in the
+// camera's frame (facing the viewer). Made here rather than read from an image, so that it needs no
+// file and no texture unit.
+vec3 matcap(vec3 n) {
+    const vec3 kKey = normalize(vec3(-0.5, 0.6, 0.62));
+    const vec3 kFill = normalize(vec3(0.7, -0.35, 0.45));
+    const vec3 kClay = vec3(0.80, 0.64, 0.54);
+    float key = max(dot(n, kKey), 0.0);
+    float fill = max(dot(n, kFill), 0.0);
+    float rim = pow(1.0 - clamp(n.z, 0.0, 1.0), 3.0);
+    float highlight = pow(max(dot(n, normalize(kKey + vec3(0.0, 0.0, 1.0))), 0.0), 48.0);
+    return clamp(kClay * (0.16 + 0.78 * key) + vec3(0.10, 0.13, 0.20) * fill + vec3(0.30) * rim + vec3(0.40) * highlight, 0.0, 1.0);
+}
+
 // 1 on a line of `width` pixels where `distance` (in units of its own screen derivative) is zero.
 float line_coverage(float distance_in_pixels, float width) {
     return 1.0 - smoothstep(0.5 * width - 0.5, 0.5 * width + 0.5, distance_in_pixels);
@@ -82,6 +99,10 @@ void main() {
     // Back faces (inside an open mesh, seen through a hole) in a colour of their own, so that holes
     // look open.
     vec3 colour = (gl_FrontFacing ? base_colour(texel) : u_back_colour) * (0.3 + 0.7 * diffuse);
+    if (u_colouring == kColourMatcap && gl_FrontFacing) {
+        vec3 seen = u_view_rotation * normalize(normal);
+        colour = matcap(seen.z < 0.0 ? -seen : seen);  // lit from both sides, as the headlight
+    }
 
     if (u_wire) {
         vec3 per_pixel = max(fwidth(v_barycentric), vec3(1e-6));

@@ -56,7 +56,7 @@ rgb::Dab make_dab(const BrushSettings& settings, bool inverted, const BaseSpaceH
 void grow_radius(BrushSettings& settings, int steps) {
     const float factor = std::pow(1.1f, static_cast<float>(steps));
     if (settings.unit == RadiusUnit::ScreenPixels)
-        settings.radius_px = std::clamp(settings.radius_px * factor, 2.0f, 1000.0f);
+        settings.radius_px = std::clamp(settings.radius_px * factor, kLeastRadiusPx, kMostRadiusPx);
     else
         settings.radius_world = std::clamp(settings.radius_world * factor, 1e-6f, 1e6f);
 }

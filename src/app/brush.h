@@ -16,6 +16,13 @@ enum class RadiusUnit { ScreenPixels, World };
 
 // The finest level the brush and "Set all" offer (the core accepts up to rgb::kMaxLevel).
 inline constexpr int kMaxBrushLevel = 12;
+// The screen radii the brush takes.
+inline constexpr float kLeastRadiusPx = 2.0f;
+inline constexpr float kMostRadiusPx = 1000.0f;
+// The stroke spacing and the lazy mouse's string offered (BrushSettings).
+inline constexpr float kLeastDabsPerRadius = 0.5f;
+inline constexpr float kMostDabsPerRadius = 20.0f;
+inline constexpr float kMostLazyPx = 200.0f;
 
 struct BrushSettings {
     BrushMode mode = BrushMode::Refine;
@@ -39,6 +46,14 @@ struct BrushSettings {
     // Symmetric painting: every dab with its mirror images across these planes of the mesh's own
     // frame (rgbio::kMirrorX | kMirrorY | kMirrorZ; rgbio::with_mirror_images).
     std::uint8_t mirror = 0;
+    // Stroke spacing: dabs per brush radius along the stroke (4: a dab every quarter radius, which
+    // overlaps enough to leave no gaps).
+    float dabs_per_radius = 4.0f;
+    // Lazy mouse: the brush trails the pointer on a string this many screen pixels long, moving
+    // only when the pointer pulls it, so that hand jitter smaller than that leaves a smooth stroke
+    // (0: off). The string shows on screen while painting.
+    float lazy_px = 0.0f;
+    bool operator==(const BrushSettings&) const = default;
 };
 
 // Shift inverts: refine becomes coarsen down to the base level (so it always removes what refining

@@ -24,7 +24,6 @@ double as_shown(float value) {
 }  // namespace
 
 void detail_panel(Editor& editor) {
-    if (!ImGui::CollapsingHeader("Detail by size, accuracy, view", ImGuiTreeNodeFlags_DefaultOpen)) return;
     DetailSettings& detail = editor.detail_settings();
     int criterion = static_cast<int>(detail.criterion);
     ImGui::RadioButton("max edge", &criterion, 0);

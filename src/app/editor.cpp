@@ -25,8 +25,6 @@ constexpr std::size_t kRollbackReserve = std::size_t{32} << 20;
 }  // namespace
 namespace {
 
-constexpr float kDabSpacing = 0.25f;  // of the brush radius: dabs overlap enough to leave no gaps
-constexpr std::size_t kMaxRecentFiles = 8;
 
 EditorOptions options_for(glm::ivec2 viewport) {
     EditorOptions options;
@@ -65,6 +63,10 @@ void Editor::set_viewport(glm::ivec2 viewport) { viewport_ = glm::max(viewport, 
 void Editor::mouse_moved(glm::vec2 px) {
     const glm::vec2 delta = px - mouse_;
     mouse_ = px;
+    if (adjust_) {
+        adjust_brush(*adjust_, px, brush_);
+        return;
+    }
     if (drag_ == Drag::Orbit) camera_.orbit(delta);
     if (drag_ == Drag::Pan) camera_.pan(delta, viewport_);
     if (painting_) continue_stroke(px);
@@ -73,6 +75,10 @@ void Editor::mouse_moved(glm::vec2 px) {
 
 void Editor::mouse_pressed(MouseButton button, Modifiers mods) {
     mods_ = mods;
+    if (adjust_) {
+        end_brush_adjust(button == MouseButton::Left);
+        return;
+    }
     if (drag_ != Drag::None || painting_) return;
     // Navigation never conflicts with painting: right/middle drag, or Alt with the left button.
     if (button == MouseButton::Right || (button == MouseButton::Left && mods.alt && !mods.shift)) {
@@ -122,12 +128,14 @@ void Editor::key_pressed(Key key, Modifiers mods) {
             case Key::O: browse_request_ = Browse::Open; break;
             case Key::E: browse_request_ = Browse::SaveStrokes; break;
             case Key::Q: request_quit(); break;
+            case Key::F: begin_brush_adjust(BrushAdjust::What::Target); break;
             default: break;
         }
         return;
     }
     switch (key) {
-        case Key::F: frame_mesh(); break;
+        case Key::F: begin_brush_adjust(BrushAdjust::What::Radius); break;
+        case Key::Home: frame_mesh(); break;
         case Key::R: reset_view(); break;
         case Key::S: sample_level_under_cursor(); break;
         case Key::LeftBracket: grow_radius(brush_, -1); break;
@@ -138,7 +146,8 @@ void Editor::key_pressed(Key key, Modifiers mods) {
         case Key::Digit2: brush_.mode = BrushMode::Coarsen; break;
         case Key::Digit3: brush_.mode = BrushMode::Set; break;
         case Key::Escape:
-            if (pending_ != Pending::None) answer_pending(false);
+            if (adjust_) end_brush_adjust(false);
+            else if (pending_ != Pending::None) answer_pending(false);
             else if (view_lod()) freeze_view_lod();
             else if (!jobs_.empty()) cancel_job();
             else stop_opening();
@@ -219,6 +228,22 @@ bool Editor::refuse_if_busy(const char* action) {
 
 // ---- brush and strokes ------------------------------------------------------------------------
 
+void Editor::begin_brush_adjust(BrushAdjust::What what) {
+    // Not again while one runs (a held key repeats).
+    if (adjust_ || painting_ || drag_ != Drag::None || crease_drag_ || pending_ != Pending::None) return;
+    adjust_ = app::begin_brush_adjust(brush_, what, mouse_);
+}
+
+void Editor::end_brush_adjust(bool keep) {
+    if (!keep) brush_ = adjust_->before;
+    adjust_.reset();
+}
+
+std::optional<glm::vec2> Editor::lazy_point() const {
+    if (!painting_ || brush_.lazy_px <= 0.0f) return std::nullopt;
+    return lazy_;
+}
+
 double Editor::brush_world_radius(const glm::dvec3& at) const {
     if (brush_.unit == RadiusUnit::World) return brush_.radius_world;
     return brush_.radius_px * camera_.world_per_pixel(camera_.depth_of(at), viewport_);
@@ -241,14 +266,23 @@ void Editor::begin_stroke(glm::vec2 px) {
     stroke_script_ = StrokeScript();
     stroke_ = stroke.get();
     queue(std::move(stroke));
+    lazy_ = px;
     for (glm::vec2 p : sampler_.begin(px)) dab(p);
     timing_.stroke_start_ms = milliseconds_since(start);
 }
 
 void Editor::continue_stroke(glm::vec2 px) {
-    float spacing_px = kDabSpacing * brush_.radius_px;
+    // The lazy mouse: the brush moves only as far as the pointer pulls it on its string.
+    if (brush_.lazy_px > 0.0f) {
+        const float pulled = glm::distance(px, lazy_) - brush_.lazy_px;
+        if (pulled <= 0.0f) return;
+        lazy_ += glm::normalize(px - lazy_) * pulled;
+        px = lazy_;
+    }
+    const float spacing = 1.0f / std::clamp(brush_.dabs_per_radius, kLeastDabsPerRadius, kMostDabsPerRadius);
+    float spacing_px = spacing * brush_.radius_px;
     if (brush_.unit == RadiusUnit::World && last_hit_point_)
-        spacing_px = static_cast<float>(kDabSpacing * brush_.radius_world /
+        spacing_px = static_cast<float>(spacing * brush_.radius_world /
                                         camera_.world_per_pixel(camera_.depth_of(*last_hit_point_), viewport_));
     for (glm::vec2 p : sampler_.move_to(px, spacing_px)) dab(p);
 }
@@ -376,9 +410,18 @@ bool Editor::sample_level_under_cursor() {
     return true;
 }
 
+// Absolute, so that the list stays right in a session started from another folder.
 void Editor::remember_recent(const std::string& path) {
-    std::erase(recent_, path);
-    recent_.insert(recent_.begin(), path);
+    std::error_code error;
+    const std::filesystem::path absolute = std::filesystem::absolute(path, error).lexically_normal();
+    const std::string kept = error ? path : absolute.string();
+    std::erase(recent_, kept);
+    recent_.insert(recent_.begin(), kept);
+    if (recent_.size() > kMaxRecentFiles) recent_.resize(kMaxRecentFiles);
+}
+
+void Editor::set_recent_files(std::vector<std::string> paths) {
+    recent_ = std::move(paths);
     if (recent_.size() > kMaxRecentFiles) recent_.resize(kMaxRecentFiles);
 }
 

@@ -24,6 +24,7 @@
 #include "app/auto_lod.h"
 #include "app/background_task.h"
 #include "app/brush.h"
+#include "app/brush_adjust.h"
 #include "app/crease_tool.h"
 #include "app/detail_job.h"
 #include "app/document.h"
@@ -50,6 +51,8 @@ enum class Pending { None, DiscardForQuit, DiscardForOpen, Overwrite, Recover, D
 
 // A plain mesh with more triangles than this is offered a cage when it is opened (Pending::DenseMesh).
 inline constexpr std::size_t kDenseMeshTriangles = 200000;
+// The recent files kept, newest first.
+inline constexpr std::size_t kMaxRecentFiles = 8;
 // The cage offered: this share of the dense mesh's triangles, at least the topology's smallest.
 inline constexpr double kCageShare = 0.005;
 
@@ -100,6 +103,7 @@ public:
     ViewCamera& camera() { return camera_; }
     const ViewCamera& camera() const { return camera_; }
     BrushSettings& brush() { return brush_; }
+    const BrushSettings& brush() const { return brush_; }
     AutoLodSettings& auto_lod_settings() { return auto_lod_settings_; }
     rgbio::SaveOptions& save_options() { return save_options_; }
     glm::ivec2 viewport() const { return viewport_; }
@@ -131,6 +135,13 @@ public:
     std::optional<SurfaceHit> cursor_hit();
     double brush_world_radius(const glm::dvec3& at) const;
     BrushMode active_mode() const { return effective_mode(brush_.mode, mods_.shift); }
+    // F (radius) or Ctrl+F (target) under way: the pointer's distance from its centre sets the value
+    // (brush_adjust.h); a left click keeps it, a right click or Esc restores the old one.
+    const std::optional<BrushAdjust>& brush_adjust() const { return adjust_; }
+    // The lazy mouse's brush position while painting with BrushSettings::lazy_px (the pointer pulls
+    // it on its string); none otherwise.
+    std::optional<glm::vec2> lazy_point() const;
+    glm::vec2 pointer() const { return mouse_; }
     int active_level() const { return effective_level(brush_, mods_.shift); }
 
     // ---- whole-mesh actions ----
@@ -218,7 +229,12 @@ public:
     bool should_quit() const;
     // A clean exit: the recovery copy goes (after one being written is done).
     void close_session();
+    // Absolute paths, newest first (at most kMaxRecentFiles).
     const std::vector<std::string>& recent_files() const { return recent_; }
+    // Those of an earlier session (editor_settings.h).
+    void set_recent_files(std::vector<std::string> paths);
+    // A note in the status line from outside the editor (the window's settings file, say).
+    void show_message(std::string message, bool error) { report(std::move(message), error); }
     // Ctrl+O, Ctrl+Shift+S and Ctrl+E ask the window for its file browser.
     enum class Browse { None, Open, SaveAs, SaveStrokes };
     Browse take_browse_request() { return std::exchange(browse_request_, Browse::None); }
@@ -245,6 +261,8 @@ public:
     bool run_guarded(const std::function<void()>& step);
 
 private:
+    void begin_brush_adjust(BrushAdjust::What what);
+    void end_brush_adjust(bool keep);
     void begin_stroke(glm::vec2 px);
     void continue_stroke(glm::vec2 px);
     void end_stroke();
@@ -308,6 +326,8 @@ private:
     enum class Drag { None, Orbit, Pan } drag_ = Drag::None;
 
     bool painting_ = false;
+    std::optional<BrushAdjust> adjust_;
+    glm::vec2 lazy_{0.0f};  // the lazy mouse's brush position in the stroke under way
     RequestJob* stroke_ = nullptr;  // the open stroke, in jobs_
     StrokeScript stroke_script_;
     StrokeSampler sampler_;

@@ -33,6 +33,7 @@ struct DisplayMode {
 constexpr DisplayMode kDisplayModes[] = {
     {"shaded", render::Shading::Smooth, render::Colouring::Plain},
     {"flat", render::Shading::Flat, render::Colouring::Plain},
+    {"matcap (clay)", render::Shading::Smooth, render::Colouring::Matcap},
     {"RGB triangle types", render::Shading::Flat, render::Colouring::RgbType},
     {"level heat map", render::Shading::Smooth, render::Colouring::Level},
     {"material colours", render::Shading::Smooth, render::Colouring::Material},
@@ -59,7 +60,6 @@ const char* mode_name(BrushMode mode) {
 }
 
 void brush_panel(Editor& editor) {
-    if (!ImGui::CollapsingHeader("Brush", ImGuiTreeNodeFlags_DefaultOpen)) return;
     BrushSettings& brush = editor.brush();
     int mode = static_cast<int>(brush.mode);
     ImGui::RadioButton("refine", &mode, 0);
@@ -84,7 +84,7 @@ void brush_panel(Editor& editor) {
     brush.target = static_cast<BrushSettings::Target>(target);
     if (brush.target == BrushSettings::Target::Level) {
         ImGui::SliderInt("target level", &brush.target_level, 0, kMaxBrushLevel);
-        hover_tooltip("The level painting aims for (keys - and =)");
+        hover_tooltip("The level painting aims for (keys - and =, or Ctrl+F and drag)");
     } else {
         int unit = static_cast<int>(brush.detail_unit);
         ImGui::RadioButton("px##detail", &unit, 0);
@@ -109,7 +109,13 @@ void brush_panel(Editor& editor) {
         ImGui::SliderFloat("radius (px)", &brush.radius_px, 2.0f, 400.0f, "%.0f px");
     else
         ImGui::DragFloat("radius (world)", &brush.radius_world, brush.radius_world * 0.01f, 1e-6f, 1e6f, "%.4g units");
-    hover_tooltip("Keys [ and ]");
+    hover_tooltip("Keys [ and ], or F and drag (a click keeps it, right click or Esc puts it back)");
+    ImGui::SliderFloat("spacing", &brush.dabs_per_radius, kLeastDabsPerRadius, kMostDabsPerRadius, "%.1f dabs per radius",
+                       ImGuiSliderFlags_Logarithmic);
+    hover_tooltip("How close the dabs lie along a stroke: more dabs per radius paint a smoother edge, fewer paint faster");
+    ImGui::SliderFloat("lazy mouse", &brush.lazy_px, 0.0f, kMostLazyPx, brush.lazy_px > 0.0f ? "%.0f px string" : "off");
+    hover_tooltip("The brush trails the pointer on a string this long and moves only when the pointer pulls it:\n"
+                  "hand jitter shorter than the string leaves a smooth stroke (the string shows while painting)");
     ImGui::SliderFloat("falloff", &brush.falloff, 0.0f, 1.0f, "%.2f of radius");
     hover_tooltip("The part of the radius, from the rim in, over which the level tapers off");
     ImGui::Checkbox("paint through", &brush.paint_through);
@@ -137,7 +143,6 @@ void brush_panel(Editor& editor) {
 }
 
 void actions_panel(Editor& editor, PanelState& state) {
-    if (!ImGui::CollapsingHeader("Whole mesh", ImGuiTreeNodeFlags_DefaultOpen)) return;
     ImGui::SliderInt("##flood", &state.flood_level, 0, kMaxBrushLevel, "level %d");
     ImGui::SameLine();
     if (ImGui::Button("Set all")) editor.start_flood_fill(state.flood_level);
@@ -178,16 +183,19 @@ void actions_panel(Editor& editor, PanelState& state) {
                 static_cast<double>(history.bytes()) / 1e6, static_cast<double>(history.byte_bound()) / 1e6);
 }
 
-void files_panel(Editor& editor, PanelState& state) {
-    // The field follows the document, and goes back to it after a file that could not be opened.
-    // A made document without a file (a cage) or a sample shows the name Save proposes.
+// The path field follows the document (the File section shows it; the browser starts there), and
+// goes back to it after a file that could not be opened. A made document without a file (a cage)
+// or a sample shows the name Save proposes.
+void follow_document_path(Editor& editor, PanelState& state) {
     const std::string& shown = editor.suggested_path().empty() ? editor.document().path() : editor.suggested_path();
     if (shown != state.shown_document_path || editor.open_failures() != state.seen_open_failures) {
         state.shown_document_path = shown;
         state.seen_open_failures = editor.open_failures();
         copy_path(state, state.shown_document_path);
     }
-    if (!ImGui::CollapsingHeader("File", ImGuiTreeNodeFlags_DefaultOpen)) return;
+}
+
+void files_panel(Editor& editor, PanelState& state) {
     ImGui::InputText("path", state.path.data(), state.path.size());
     hover_tooltip("The file Open and Save as use; ... browses");
     ImGui::SameLine();
@@ -235,7 +243,6 @@ void files_panel(Editor& editor, PanelState& state) {
 
 // `detail`: the mesh is a cage with detail, which the distance heat map needs.
 void display_panel(Editor& editor, render::RenderOptions& options, bool detail) {
-    if (!ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) return;
     const auto offered = [detail](const DisplayMode& mode) { return detail || mode.colouring != render::Colouring::DetailDistance; };
     // A mode not offered (the distance heat map after opening a mesh without detail) falls back to the first.
     const DisplayMode* current = &kDisplayModes[0];
@@ -246,7 +253,8 @@ void display_panel(Editor& editor, render::RenderOptions& options, bool detail) 
             if (offered(mode) && ImGui::Selectable(mode.name, &mode == current)) current = &mode;
         ImGui::EndCombo();
     }
-    hover_tooltip("The heat map gives every level one colour of its own. Material colours (Kd), vertex colours, the checker\n"
+    hover_tooltip("Matcap lights the surface like clay under studio lights fixed to the view, which shows its shape and\n"
+            "small detail clearly. The heat map gives every level one colour of its own. Material colours (Kd), vertex colours, the checker\n"
             "over the texture coordinates and the diffuse texture show the file's data: the exact colours and texture\n"
             "coordinates at the positions' level, the values a saved OBJ of this mesh holds. On a cage with detail, the\n"
             "distance to the dense mesh colours each triangle by its largest departure from it, in fixed bands of the\n"
@@ -271,7 +279,6 @@ void display_panel(Editor& editor, render::RenderOptions& options, bool detail) 
 // The colour and level counts are the displayed triangles' (kept as the display follows the mesh,
 // so they cost nothing per frame at any size).
 void statistics_panel(Editor& editor, PanelState& state) {
-    if (!ImGui::CollapsingHeader("Statistics")) return;
     const rgb::Mesh& mesh = editor.document().mesh();
     const render::SurfaceGeometry& geometry = editor.document().shown();
     ImGui::Text("V %zu   F %zu", mesh.num_vertices(), mesh.num_faces());
@@ -292,15 +299,16 @@ void statistics_panel(Editor& editor, PanelState& state) {
 }
 
 void shortcuts_panel() {
-    if (!ImGui::CollapsingHeader("Shortcuts")) return;
     ImGui::TextUnformatted(
         "left drag        paint (Shift: inverse)\n"
         "right drag       orbit (or Alt+left)\n"
         "middle drag      pan (or Alt+Shift+left)\n"
         "wheel            zoom to the cursor\n"
-        "F / R            frame mesh / reset view\n"
+        "Home / R         frame mesh / reset view\n"
         "[ / ]            smaller / larger brush\n"
+        "F, drag, click   brush radius\n"
         "- / =            target level down / up\n"
+        "Ctrl+F, drag     brush target (level, amount)\n"
         "1 2 3            refine / coarsen / set level\n"
         "S                sample level under cursor\n"
         "numpad 1 3 7     front / right / top view\n"
@@ -347,6 +355,16 @@ void status_bar(Editor& editor) {
     ImGui::End();
 }
 
+// A section's header, open as the layout remembers it (or by default), and the layout told what it
+// is now (a click toggles it).
+bool section(PanelLayout& layout, const char* label, bool open_by_default) {
+    const auto remembered = layout.sections.find(label);
+    ImGui::SetNextItemOpen(remembered != layout.sections.end() ? remembered->second : open_by_default, ImGuiCond_Once);
+    const bool open = ImGui::CollapsingHeader(label);
+    layout.sections[label] = open;
+    return open;
+}
+
 }  // namespace
 
 void draw_panels(Editor& editor, PanelState& state, render::RenderOptions& options) {
@@ -354,18 +372,21 @@ void draw_panels(Editor& editor, PanelState& state, render::RenderOptions& optio
     // Anchored to the right edge at every size, above the status bar; framing keeps the mesh clear of it.
     ImGui::SetNextWindowPos(ImVec2(display.x - kPanelWidth - 8.0f, 8.0f), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(kPanelWidth, std::max(display.y - 16.0f - kStatusBarHeight, 100.0f)), ImGuiCond_Always);
-    state.panel_open = ImGui::Begin("rgbsub", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize);
-    editor.set_covered_right(state.panel_open ? kPanelCover : 0.0f);
-    if (state.panel_open) {
+    ImGui::SetNextWindowCollapsed(!state.layout.panel_open, ImGuiCond_Once);
+    state.layout.panel_open = ImGui::Begin("rgbsub", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize);
+    editor.set_covered_right(state.layout.panel_open ? kPanelCover : 0.0f);
+    follow_document_path(editor, state);
+    if (state.layout.panel_open) {
+        PanelLayout& layout = state.layout;
         ImGui::PushItemWidth(-120.0f);
-        brush_panel(editor);
+        if (section(layout, "Brush", true)) brush_panel(editor);
         crease_panel(editor);
-        actions_panel(editor, state);
-        detail_panel(editor);
-        files_panel(editor, state);
-        display_panel(editor, options, editor.document().mesh().base().detail() != nullptr);
-        statistics_panel(editor, state);
-        shortcuts_panel();
+        if (section(layout, "Whole mesh", true)) actions_panel(editor, state);
+        if (section(layout, "Detail by size, accuracy, view", true)) detail_panel(editor);
+        if (section(layout, "File", true)) files_panel(editor, state);
+        if (section(layout, "Display", true)) display_panel(editor, options, editor.document().mesh().base().detail() != nullptr);
+        if (section(layout, "Statistics", false)) statistics_panel(editor, state);
+        if (section(layout, "Shortcuts", false)) shortcuts_panel();
         ImGui::PopItemWidth();
     }
     ImGui::End();

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <string>
 
+#include "app/editor_settings.h"
 #include "render/renderer.h"
 
 namespace app {
@@ -34,7 +35,7 @@ struct PanelState {
     int flood_level = 2;
     double frame_ms = 0.0;  // the window's own work in the last frame, not the wait for input
     FileBrowser browser;
-    bool panel_open = true;
+    PanelLayout layout;  // kept between sessions (editor_settings.h)
 };
 
 // Draws every panel and applies what the user did to `editor` and `options`.

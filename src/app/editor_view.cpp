@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <string>
 
 #include <glm/vec4.hpp>
 
@@ -46,7 +48,53 @@ void draw_axis_gizmo(const render::OrbitCamera& camera) {
                   camera.orthographic ? "ortho" : "persp");
 }
 
+// F / Ctrl+F: the circle whose radius is the value, the value beside the pointer. The lazy mouse:
+// the string from the brush to the pointer while painting.
+void draw_brush_feedback(const Editor& editor) {
+    ImDrawList* draw = ImGui::GetBackgroundDrawList();
+    const ImVec2 pointer(editor.pointer().x, editor.pointer().y);
+    if (const std::optional<BrushAdjust>& adjust = editor.brush_adjust()) {
+        const ImVec2 centre(adjust->centre.x, adjust->centre.y);
+        const float radius = std::hypot(pointer.x - centre.x, pointer.y - centre.y);
+        const ImU32 colour = IM_COL32(255, 140, 0, 255);
+        draw->AddCircle(centre, std::max(radius, 1.0f), colour, 96, 2.0f);
+        draw->AddLine(centre, pointer, IM_COL32(255, 140, 0, 160), 1.0f);
+        draw->AddCircleFilled(centre, 3.0f, colour);
+        const std::string label = brush_adjust_label(*adjust, editor.brush());
+        const ImVec2 at(pointer.x + 14.0f, pointer.y - 22.0f), size = ImGui::CalcTextSize(label.c_str());
+        draw->AddRectFilled(ImVec2(at.x - 4.0f, at.y - 2.0f), ImVec2(at.x + size.x + 4.0f, at.y + size.y + 2.0f), IM_COL32(30, 30, 30, 200), 3.0f);
+        draw->AddText(at, IM_COL32(255, 255, 255, 255), label.c_str());
+    }
+    if (const std::optional<glm::vec2> lazy = editor.lazy_point()) {
+        const ImVec2 brush(lazy->x, lazy->y);
+        draw->AddLine(brush, pointer, IM_COL32(90, 90, 90, 220), 1.5f);
+        draw->AddCircleFilled(brush, 3.5f, IM_COL32(255, 140, 0, 255));
+    }
+}
+
 }  // namespace
+
+EditorView::EditorView() { apply_settings(EditorSettings()); }
+
+void EditorView::apply_settings(const EditorSettings& settings) {
+    const DisplaySettings& display = settings.display;
+    options_.shading = display.shading;
+    options_.colouring = display.colouring;
+    options_.wireframe = display.wireframe;
+    options_.base_mesh_overlay = display.base_mesh;
+    options_.positions = display.limit_positions ? render::PositionSource::Limit : render::PositionSource::Displayed;
+    panels_.layout = settings.panel;
+}
+
+void EditorView::take_settings(EditorSettings& settings) const {
+    DisplaySettings& display = settings.display;
+    display.shading = options_.shading;
+    display.colouring = options_.colouring;
+    display.wireframe = options_.wireframe;
+    display.base_mesh = options_.base_mesh_overlay;
+    display.limit_positions = options_.positions == render::PositionSource::Limit;
+    settings.panel = panels_.layout;
+}
 
 void EditorView::draw(Editor& editor, glm::ivec2 framebuffer, bool show_cursor) {
     Document& document = editor.document();
@@ -61,7 +109,8 @@ void EditorView::draw(Editor& editor, glm::ivec2 framebuffer, bool show_cursor) 
     renderer_.show(document.mesh(), geometry, changes.ranges, changes.rebuilt);
 
     options_.brush.reset();
-    if (show_cursor && !ImGui::GetIO().WantCaptureMouse)
+    // While F or Ctrl+F adjusts the brush, its own circle stands for the brush.
+    if (show_cursor && !ImGui::GetIO().WantCaptureMouse && !editor.brush_adjust())
         if (const auto hit = editor.cursor_hit()) {
             // Orange where a drag adds detail, blue where it removes it (coarsen, or Shift).
             const bool removes = editor.active_mode() == BrushMode::Coarsen ||
@@ -71,6 +120,7 @@ void EditorView::draw(Editor& editor, glm::ivec2 framebuffer, bool show_cursor) 
         }
     renderer_.draw(editor.camera().camera(), options_, framebuffer);
     if (axis_gizmo_) draw_axis_gizmo(editor.camera().camera());
+    draw_brush_feedback(editor);
 }
 
 }  // namespace app

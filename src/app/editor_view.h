@@ -7,6 +7,7 @@
 #include <glm/vec2.hpp>
 
 #include "app/editor_panels.h"
+#include "app/editor_settings.h"
 #include "render/renderer.h"
 
 namespace app {
@@ -15,7 +16,8 @@ class Editor;
 
 class EditorView {
 public:
-    EditorView() = default;
+    // The display starts as DisplaySettings' defaults (the topology shown).
+    EditorView();
 
     // Builds the ImGui frame (between ImGui::NewFrame and ImGui::Render) and draws the mesh.
     // Call ImGui_ImplOpenGL3_RenderDrawData afterwards.
@@ -26,6 +28,9 @@ public:
     void show_axis_gizmo(bool on) { axis_gizmo_ = on; }
     // The window's own work in the last frame (the wait for input left out), for the statistics.
     void set_frame_ms(double ms) { panels_.frame_ms = ms; }
+    // The display and the panel's layout kept between sessions (editor_settings.h).
+    void apply_settings(const EditorSettings& settings);
+    void take_settings(EditorSettings& settings) const;
 
 private:
     render::Renderer renderer_;

@@ -18,7 +18,10 @@
 
 #include <unistd.h>
 
+#include <glm/common.hpp>
+
 #include "app/editor.h"
+#include "app/editor_settings.h"
 #include "app/editor_view.h"
 #include "app/ui_input_queue.h"
 #include "app/job_pacer.h"
@@ -36,6 +39,61 @@ constexpr UiInputQueue::ModifierSlots kGlfwModifiers{{GLFW_KEY_LEFT_CONTROL, GLF
 // Frames drawn after the last event: ImGui shows what an input opened (a combo's list, a popup) a
 // frame after it took the input.
 constexpr int kFramesAfterInput = 2;
+
+// Changed settings are written once they have been changed for this long (the idle loop wakes up
+// every second to look) and at exit, so that a crash loses little and dragging a slider does not
+// write the file every frame.
+constexpr std::chrono::seconds kSettingsDelay{2};
+
+// The settings file (editor_settings.h): read at start, written when what it holds has changed.
+class SettingsKeeper {
+public:
+    SettingsKeeper() {
+        const std::optional<std::filesystem::path> folder = settings_folder();
+        if (!folder) return;
+        file_ = settings_file(*folder);
+        LoadedSettings loaded = load_settings(*file_);
+        warning_ = std::move(loaded.warning);
+        written_ = loaded.settings;
+    }
+    const EditorSettings& loaded() const { return written_; }
+    // A damaged file, said on stderr and in the status line.
+    void report(Editor& editor) const {
+        if (!warning_) return;
+        std::cerr << "rgbsub edit: " << *warning_ << "\n";
+        editor.show_message(*warning_, true);
+    }
+    // `now`: at exit, without waiting for the delay.
+    void keep(GLFWwindow* window, Editor& editor, const EditorView& view, bool now) {
+        if (!file_ || failed_) return;
+        EditorSettings current;
+        take_settings(editor, current);
+        view.take_settings(current);
+        glfwGetWindowSize(window, &current.window_size.x, &current.window_size.y);
+        current.window_size = glm::clamp(current.window_size, kLeastWindowSide, kMostWindowSide);
+        if (current == written_) {
+            changed_.reset();
+            return;
+        }
+        if (!changed_) changed_ = Clock::now();
+        if (!now && Clock::now() - *changed_ < kSettingsDelay) return;
+        try {
+            store_settings(*file_, current);
+            written_ = current;
+            changed_.reset();
+        } catch (const std::exception& failure) {
+            failed_ = true;  // said once; the session goes on with its settings unsaved
+            editor.show_message(std::string("settings not saved: ") + failure.what(), true);
+        }
+    }
+
+private:
+    std::optional<std::filesystem::path> file_;
+    std::optional<std::string> warning_;
+    EditorSettings written_;
+    std::optional<Clock::time_point> changed_;
+    bool failed_ = false;
+};
 
 struct WindowState {
     Editor* editor = nullptr;
@@ -83,6 +141,7 @@ std::optional<Key> key_of(int glfw_key) {
         case GLFW_KEY_KP_3: return Key::Keypad3;
         case GLFW_KEY_KP_5: return Key::Keypad5;
         case GLFW_KEY_KP_7: return Key::Keypad7;
+        case GLFW_KEY_HOME: return Key::Home;
         default: return std::nullopt;
     }
 }
@@ -135,7 +194,9 @@ void install_callbacks(GLFWwindow* window) {
         double x = 0.0, y = 0.0;
         glfwGetCursorPos(w, &x, &y);
         editor_of(w).run_guarded([&] {
-            if (action == GLFW_PRESS && !panels_take(x, y)) editor_of(w).mouse_pressed(*b, modifiers_of(mods));
+            // A click anywhere ends a brush adjustment (F, Ctrl+F), over the panel too.
+            if (action == GLFW_PRESS && (editor_of(w).brush_adjust() || !panels_take(x, y)))
+                editor_of(w).mouse_pressed(*b, modifiers_of(mods));
             if (action == GLFW_RELEASE) editor_of(w).mouse_released(*b);
         });
     });
@@ -178,14 +239,14 @@ void install_callbacks(GLFWwindow* window) {
     });
 }
 
-GLFWwindow* open_window() {
+GLFWwindow* open_window(glm::ivec2 size) {
     if (!glfwInit()) return nullptr;
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
     glfwWindowHint(GLFW_SAMPLES, 4);
-    GLFWwindow* window = glfwCreateWindow(1280, 800, "rgbsub", nullptr, nullptr);
+    GLFWwindow* window = glfwCreateWindow(size.x, size.y, "rgbsub", nullptr, nullptr);
     if (window == nullptr) return nullptr;
     glfwMakeContextCurrent(window);
     if (gladLoadGL(glfwGetProcAddress) == 0) {
@@ -202,9 +263,10 @@ bool only_waiting_for_a_file(const Editor& editor) {
     return editor.job() == nullptr && !editor.painting() && editor.file_task() != nullptr && editor.document().display_up_to_date();
 }
 
-void run_loop(GLFWwindow* window, WindowState& state, const WindowLaunch& launch, Clock::time_point start) {
+void run_loop(GLFWwindow* window, WindowState& state, const WindowLaunch& launch, Clock::time_point start, SettingsKeeper& settings) {
     Editor& editor = *state.editor;
     EditorView view;
+    view.apply_settings(settings.loaded());
     JobPacer pacer;
     std::string title;
     bool file_shown = !launch.file;
@@ -230,7 +292,10 @@ void run_loop(GLFWwindow* window, WindowState& state, const WindowLaunch& launch
             if (!state.redraw && !editor.needs_frames()) {
                 const std::string message = editor.message();
                 editor.run_guarded([&] { editor.update(pacer.slice()); });
-                if (editor.message() == message && !editor.needs_frames()) continue;
+                if (editor.message() == message && !editor.needs_frames()) {
+                    settings.keep(window, editor, view, false);
+                    continue;
+                }
             }
         }
         if (std::exchange(state.redraw, false)) state.settle_frames = kFramesAfterInput;
@@ -266,7 +331,9 @@ void run_loop(GLFWwindow* window, WindowState& state, const WindowLaunch& launch
                 std::printf("file shown after %.1f ms\n", std::chrono::duration<double, std::milli>(Clock::now() - start).count());
         }
         frames_after_shown += file_shown;
+        settings.keep(window, editor, view, false);
     }
+    settings.keep(window, editor, view, true);
 }
 
 }  // namespace
@@ -280,7 +347,8 @@ std::optional<std::string> default_mesh_path() {
 
 int run_editor_window(const WindowLaunch& launch) {
     const auto start = Clock::now();
-    GLFWwindow* window = open_window();
+    SettingsKeeper settings;
+    GLFWwindow* window = open_window(settings.loaded().window_size);
     if (window == nullptr) {
         std::cerr << "rgbsub edit: cannot open an OpenGL 3.3 core window; headless alternative: rgbsub render\n";
         glfwTerminate();
@@ -291,6 +359,8 @@ int run_editor_window(const WindowLaunch& launch) {
     options.covered_right = kPanelCover;
     options.samples_folder = RGBSUB_ASSETS_DIR;
     Editor editor(options);
+    apply_settings(editor, settings.loaded());
+    settings.report(editor);
     WindowState state;
     state.editor = &editor;
     glfwSetWindowUserPointer(window, &state);
@@ -301,7 +371,7 @@ int run_editor_window(const WindowLaunch& launch) {
     ImGui::StyleColorsDark();
     ImGui_ImplGlfw_InitForOpenGL(window, false);
     ImGui_ImplOpenGL3_Init("#version 330 core");
-    run_loop(window, state, launch, start);
+    run_loop(window, state, launch, start, settings);
     if (editor.should_quit() || launch.frames) editor.close_session();
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplGlfw_Shutdown();

@@ -6,7 +6,7 @@ namespace app {
 enum class MouseButton { Left, Right, Middle };
 
 enum class Key { F, R, Z, Y, S, O, Q, E, LeftBracket, RightBracket, Minus, Equal, Digit1, Digit2, Digit3, Digit4, Digit5, Escape,
-                 Keypad1, Keypad3, Keypad5, Keypad7 };
+                 Keypad1, Keypad3, Keypad5, Keypad7, Home };
 
 struct Modifiers {
     bool shift = false;

@@ -23,7 +23,9 @@ float aspect_of(glm::ivec2 viewport) {
 
 void ViewCamera::frame(const render::BoundingSphere& scene, glm::ivec2 viewport) {
     scene_ = scene;
+    const bool orthographic = camera_.orthographic;  // the projection is the user's choice, kept
     camera_ = render::frame_sphere(scene, kDefaultAzimuthDeg, kDefaultElevationDeg, aspect_of(viewport));
+    camera_.orthographic = orthographic;
     fit_clip_planes();
 }
 

@@ -15,7 +15,8 @@ struct Ray {
 
 class ViewCamera {
 public:
-    // Frames `scene` from the default angles for a viewport of `viewport` pixels (F and Reset).
+    // Frames `scene` from the default angles for a viewport of `viewport` pixels (R, and opening a
+    // file); the projection stays as the user chose it.
     void frame(const render::BoundingSphere& scene, glm::ivec2 viewport);
     // Keeps the framing angles and target, only refits the distance (F).
     void refit(const render::BoundingSphere& scene, glm::ivec2 viewport);

@@ -36,8 +36,11 @@ int write_screenshot(const std::string& file, const std::string& output, const s
         frame.colouring = render::Colouring::Texture;
     } else if (mode == "distance") {
         frame.colouring = render::Colouring::DetailDistance;
+    } else if (mode == "matcap") {
+        frame.colouring = render::Colouring::Matcap;
     } else if (mode != "shaded") {
-        throw UsageError("--mode must be shaded, wire, rgb, level, material, colours, checker, texture or distance, got '" + mode + "'");
+        throw UsageError("--mode must be shaded, wire, rgb, level, matcap, material, colours, checker, texture or distance, got '" + mode +
+                         "'");
     }
     app::EditorOptions options;
     options.viewport = frame.size;
@@ -62,7 +65,8 @@ int run_edit(std::span<const std::string> args) {
                      "                      from launch to the first frame and to FILE shown\n"
                      "  --screenshot PATH   write one editor frame, panels included, as a PNG and exit\n"
                      "                      (headless through OSMesa: no display needed)\n"
-                     "  --mode MODE         for the screenshot: shaded, wire, rgb, level, or the file's look:\n"
+                     "  --mode MODE         for the screenshot: shaded, wire, rgb, level, matcap (clay lit from\n"
+                     "                      the view: shape and detail at a glance), or the file's look:\n"
                      "                      material (Kd), colours (vertex colours), checker (over the UVs),\n"
                      "                      texture (map_Kd over the UVs; Kd without one), or distance (a\n"
                      "                      cage with detail only: its distance to the dense mesh)\n"

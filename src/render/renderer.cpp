@@ -243,6 +243,7 @@ void Renderer::draw(const OrbitCamera& camera, const RenderOptions& options, glm
     const float shading_scale = std::exp2(-std::round(std::log2(camera.distance)));
     surface.set("u_shading_scale", shading_scale);
     surface.set("u_eye", camera.eye() * shading_scale);
+    surface.set("u_view_rotation", glm::mat3(camera.view()));
     surface.set("u_flat", options.shading == Shading::Flat);
     surface.set("u_colouring", static_cast<int>(options.colouring));
     surface.set("u_plain_colour", kPlainColour);

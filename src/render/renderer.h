@@ -29,8 +29,10 @@ enum class Shading { Smooth, Flat };
 // a material without a texture (or a face without texture coordinates) in its diffuse colour, and one
 // whose texture could not be read as the checker. DetailDistance is the heat map of each face's distance
 // to the dense mesh of a cage with detail (colour_map.h's bands, with a legend); a mesh without detail
-// shows the plain colour.
-enum class Colouring { Plain, RgbType, Level, Material, VertexColour, Checker, Texture, DetailDistance };
+// shows the plain colour. Matcap shades the surface from a lit clay sphere (a "material capture", made
+// in the shader) looked up by the normal as the camera sees it: lighting fixed to the view, which
+// shows the surface's shape and small detail more clearly than the headlight.
+enum class Colouring { Plain, RgbType, Level, Material, VertexColour, Checker, Texture, DetailDistance, Matcap };
 
 // A circle on the surface: where a sphere around `centre` cuts it.
 struct BrushCursor {

@@ -81,6 +81,9 @@ void ShaderProgram::set(const char* name, const glm::vec2& value) const {
 void ShaderProgram::set(const char* name, const glm::vec3& value) const {
     glUniform3fv(glGetUniformLocation(id_, name), 1, glm::value_ptr(value));
 }
+void ShaderProgram::set(const char* name, const glm::mat3& value) const {
+    glUniformMatrix3fv(glGetUniformLocation(id_, name), 1, GL_FALSE, glm::value_ptr(value));
+}
 void ShaderProgram::set(const char* name, const glm::mat4& value) const {
     glUniformMatrix4fv(glGetUniformLocation(id_, name), 1, GL_FALSE, glm::value_ptr(value));
 }

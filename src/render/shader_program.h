@@ -36,6 +36,7 @@ public:
     void set(const char* name, float value) const;
     void set(const char* name, const glm::vec2& value) const;
     void set(const char* name, const glm::vec3& value) const;
+    void set(const char* name, const glm::mat3& value) const;
     void set(const char* name, const glm::mat4& value) const;
     void set_array(const char* name, const glm::vec3* values, int count) const;
 

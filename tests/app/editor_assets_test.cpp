@@ -1,6 +1,7 @@
 // A file's materials, groups, texture coordinates and colours in the editor: opening it shows them
 // (the document's appearance), painting keeps them, and Save writes the labels back with an mtllib
 // that still leads to the library from another folder, as OBJ or glTF.
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -96,6 +97,50 @@ TEST(EditorAssets, OpeningShowsTheFilesLookAndSavingKeepsItsLabels) {
     std::string magic(4, '\0');
     glb.read(magic.data(), 4);
     EXPECT_EQ(magic, "glTF");
+}
+
+// The samples that ship in assets/ (made by assets/make_samples.py) open with their look: the
+// textured box with texture coordinates and its brick image, the coloured box with a colour per
+// vertex, (1 + its direction from the centre) / 2.
+TEST(EditorAssets, TheShippedSamplesOpenWithTheirTextureAndColours) {
+    constexpr std::size_t kSampleFaces = 192, kSampleVertices = 98;
+    Editor editor(kViewport);
+    ASSERT_TRUE(editor.open(test::asset_path("textured.obj"))) << editor.message();
+    ASSERT_FALSE(editor.message_is_error()) << editor.message();
+    const std::shared_ptr<const render::SurfaceAppearance> textured = editor.document().appearance();
+    ASSERT_NE(textured, nullptr);
+    ASSERT_EQ(editor.document().mesh().base().num_faces(), kSampleFaces);
+    ASSERT_TRUE(textured->uvs.has_value());
+    ASSERT_EQ(textured->uvs->corners.size(), kSampleFaces);
+    for (const glm::dvec2& uv : textured->uvs->values) {
+        EXPECT_TRUE(uv.x >= 0.0 && uv.x <= 1.0 && uv.y >= 0.0 && uv.y <= 1.0) << uv.x << ", " << uv.y;
+        EXPECT_DOUBLE_EQ(uv.x * 4.0, std::round(uv.x * 4.0)) << "a corner of the 4 x 4 grid on each cube face";
+    }
+    EXPECT_EQ(textured->face_textures, std::vector<std::uint32_t>(kSampleFaces, 0u)) << "every face shows layer 0, its map_Kd";
+    const render::TextureLayers& layers = textured->textures;
+    ASSERT_EQ(layers.count(), 1u);
+    ASSERT_EQ(layers.width, 64);
+    ASSERT_EQ(layers.height, 64);
+    // The script's pattern: the image's top row (the layer's last, rows bottom-up) is mortar, the
+    // brick below it at the left the first shade.
+    const auto pixel = [&](int x, int image_y) {
+        const std::size_t at = 4 * (std::size_t(63 - image_y) * 64 + std::size_t(x));
+        return glm::ivec3(layers.rgba[at], layers.rgba[at + 1], layers.rgba[at + 2]);
+    };
+    EXPECT_EQ(pixel(5, 0), glm::ivec3(215, 210, 200));
+    EXPECT_EQ(pixel(5, 4), glm::ivec3(150, 60, 40));
+
+    ASSERT_TRUE(editor.open(test::asset_path("coloured.obj"))) << editor.message();
+    const std::shared_ptr<const render::SurfaceAppearance> coloured = editor.document().appearance();
+    ASSERT_NE(coloured, nullptr);
+    const rgb::BaseMesh& base = editor.document().mesh().base();
+    ASSERT_EQ(base.num_vertices(), kSampleVertices);
+    ASSERT_EQ(coloured->vertex_colours.size(), kSampleVertices);
+    EXPECT_FALSE(coloured->uvs.has_value());
+    for (std::uint32_t v = 0; v < base.num_vertices(); ++v) {
+        const glm::dvec3 expected = (1.0 + glm::normalize(base.position(v))) / 2.0;
+        for (int k = 0; k < 3; ++k) EXPECT_NEAR(coloured->vertex_colours[v][k], expected[k], 2e-6) << "vertex " << v;
+    }
 }
 
 }  // namespace

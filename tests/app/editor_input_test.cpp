@@ -69,8 +69,9 @@ TEST_F(EditorInput, PanMovesTheSceneWithThePointer) {
     EXPECT_FALSE(editor.document().history().can_undo()) << "navigation never paints";
 }
 
-// F frames the mesh again from the current angles; R also restores the default angles.
-TEST_F(EditorInput, FFramesTheMeshKeepingTheAnglesAndRResetsThem) {
+// Home frames the mesh again from the current angles (as Blender; F sizes the brush); R also
+// restores the default angles.
+TEST_F(EditorInput, HomeFramesTheMeshKeepingTheAnglesAndRResetsThem) {
     const render::OrbitCamera opened = camera();
     drag(MouseButton::Right, centre, {40.0f, -25.0f});  // orbit
     drag(MouseButton::Middle, centre, {200.0f, 0.0f});  // pan most of the mesh out of view
@@ -79,7 +80,7 @@ TEST_F(EditorInput, FFramesTheMeshKeepingTheAnglesAndRResetsThem) {
     ASSERT_NE(moved.azimuth_deg, opened.azimuth_deg);
     ASSERT_FALSE(whole_mesh_in_view());
 
-    editor.key_pressed(Key::F, {});
+    editor.key_pressed(Key::Home, {});
     EXPECT_EQ(camera().azimuth_deg, moved.azimuth_deg);
     EXPECT_EQ(camera().elevation_deg, moved.elevation_deg);
     EXPECT_EQ(camera().target, opened.target);

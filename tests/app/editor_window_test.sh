@@ -31,6 +31,7 @@ editor_pid=
 trap 'if [[ -n "$editor_pid" ]]; then kill "$editor_pid" 2>/dev/null || true; fi; rm -rf "$work"' EXIT
 cp "$bunny" "$work/mesh.obj"
 export XDG_STATE_HOME="$work/state"  # the recovery copy stays in here
+export XDG_CONFIG_HOME="$work/config"  # the settings too: a fresh start, the user's own untouched
 
 "$rgbsub" edit "$work/mesh.obj" >"$work/editor.log" 2>&1 &
 editor_pid=$!
@@ -110,6 +111,11 @@ wait "$editor_pid" || { echo "the editor exited with an error:" >&2; cat "$work/
 editor_pid=
 if [ -n "$(ls -A "$XDG_STATE_HOME/rgbsub" 2>/dev/null)" ]; then
   echo "a clean exit left a recovery copy: $(ls "$XDG_STATE_HOME/rgbsub")" >&2
+  exit 1
+fi
+# The settings outlive the session: the file opened heads the recent files.
+if ! grep -qxF "recent = $work/mesh.obj" "$XDG_CONFIG_HOME/rgbsub/settings.txt" 2>/dev/null; then
+  echo "the editor kept no settings naming $work/mesh.obj as recent" >&2
   exit 1
 fi
 

@@ -8,7 +8,9 @@
 //   - pick ms for rays through random pixels (the index alone),
 //   - the press that starts a stroke,
 //   - undo and redo of the stroke (the call, and the frames of its job when the step is too large
-//     for one), with its splits, and of a shorter stroke of about 10k splits.
+//     for one), with its splits, and of a shorter stroke of about 10k splits,
+//   - what the user waits for, frames as the window runs them: mouse-up to the stroke done and
+//     shown, Ctrl+Z to the undo done and shown.
 // Run on demand: ./brush_bench [levels...]   (default: 4 5, i.e. 940k and 3.8M triangles)
 // RGBSUB_BENCH_MESH=FILE.obj replays the path on that file instead, opened with its look (materials,
 // texture coordinates, colours: the display's exact channels are then timed too).
@@ -79,6 +81,11 @@ struct StrokeResult {
     // and the longest display work of one.
     std::size_t undo_display_frames = 0;
     double undo_display_frame_max_ms = 0.0;
+    // What the user waits for, in wall time with frames as the window runs them: from the mouse-up
+    // until the stroke's work is done and the display has caught up (and in how many frames), and
+    // from Ctrl+Z until the undo is done and shown.
+    double mouse_up_ms = 0.0, undo_shown_ms = 0.0;
+    std::size_t mouse_up_frames = 0;
     std::size_t splits = 0;
     std::size_t frames = 0, faces_before = 0, faces_after = 0;
 };
@@ -107,7 +114,17 @@ StrokeResult replay(app::Editor& editor, app::Modifiers mods, double fraction = 
         frame();
     }
     editor.mouse_released(app::MouseButton::Left);
+    const auto released = Clock::now();
+    const std::size_t frames_before_release = r.engine_ms.size();
     while (editor.job() != nullptr) frame();
+    r.mouse_up_frames = r.engine_ms.size() - frames_before_release;
+    // Frames that only catch the display up (left out of the engine's figures, as before), each
+    // taking the changes as the renderer does.
+    for (editor.document().take_display_changes(); !editor.document().display_up_to_date(); ++r.mouse_up_frames) {
+        editor.update(kFrameSlice);
+        editor.document().take_display_changes();
+    }
+    r.mouse_up_ms = ms_since(released);
     r.frames = r.engine_ms.size();
     r.faces_after = editor.document().mesh().num_faces();
     const std::size_t vertices = editor.document().mesh().num_vertices();
@@ -125,11 +142,15 @@ StrokeResult replay(app::Editor& editor, app::Modifiers mods, double fraction = 
     r.redo_display_ms = ms_since(start);
     // The undo again, followed as the window follows it: a frame at a time, Editor::update catching
     // the display up within the slice.
+    start = Clock::now();
     editor.undo();
     for (; editor.job() != nullptr || editor.document().display_behind(); ++r.undo_display_frames) {
         editor.update(kFrameSlice);
         r.undo_display_frame_max_ms = std::max(r.undo_display_frame_max_ms, editor.timing().geometry_ms);
     }
+    for (editor.document().take_display_changes(); !editor.document().display_up_to_date(); editor.document().take_display_changes())
+        editor.update(kFrameSlice);
+    r.undo_shown_ms = ms_since(start);
     editor.redo();
     editor.finish_work();
     editor.document().geometry();
@@ -151,6 +172,8 @@ void report(const char* what, const StrokeResult& r) {
                 r.undo.longest_ms, r.redo.frames, r.redo.longest_ms);
     std::printf("    after the undo, frame by frame: the display catches up over %zu frames, at most %.1f ms in one\n",
                 r.undo_display_frames, r.undo_display_frame_max_ms);
+    std::printf("    waits: mouse-up to the stroke done and shown %.1f ms (%zu frames) | Ctrl+Z to the undo done and shown %.1f ms\n",
+                r.mouse_up_ms, r.mouse_up_frames, r.undo_shown_ms);
 }
 
 void pick_rays(app::Editor& editor) {

@@ -77,5 +77,23 @@ TEST_F(EditCommand, ATextureOverTheSizeCapIsNotDecoded) {
     }
 }
 
+// The window keeps its settings in XDG_CONFIG_HOME (app/editor_settings.h); a screenshot never reads
+// them, so that it stays reproducible: the same bytes with settings that change the display mode,
+// the wireframe, the projection and the panel as without any.
+TEST_F(EditCommand, ScreenshotIgnoresSavedSettings) {
+    const std::string mesh = write("octahedron.obj", rgbio::test::kOctahedron);
+    std::filesystem::create_directories(path("config/rgbsub"));
+    write("config/rgbsub/settings.txt",
+          "display.colouring = level\ndisplay.wireframe = true\ndisplay.orthographic = true\npanel.open = false\n"
+          "window.width = 640\nwindow.height = 480\n");
+    std::filesystem::create_directories(path("empty"));
+    for (const std::string& config : {path("config"), path("empty")}) {
+        const cli_test::Outcome shot = run_rgbsub({"edit", mesh, "--screenshot", config + ".png"}, "env XDG_CONFIG_HOME='" + config + "'");
+        ASSERT_EQ(shot.exit_code, exit_ok) << shot.output;
+    }
+    EXPECT_EQ(read("config.png"), read("empty.png"));
+    EXPECT_EQ(render::read_image(path("config.png")).width, 1280);
+}
+
 }  // namespace
 }  // namespace cli
