@@ -5,6 +5,7 @@
 #include "cli/commands.h"
 #include "io/base_uvs.h"
 #include "io/gltf_export.h"
+#include "io/mesh_export.h"
 #include "rgb/mesh/sharp_angle.h"
 #include "rgb/values/restore_state.h"
 
@@ -29,6 +30,11 @@ void save_output(const char* command, const rgb::Mesh& mesh, const std::string& 
         warnings.push_back("the normals follow the smooth Loop rules (rgb/values/limit_normals.h): at vertices on tagged creases and "
                            "corners, whose tangent masks are not implemented yet, they are approximate");
     print_warnings(command, file, warnings);
+    // glTF exports have always been plain exports (docs/files.md); the formats added beside them say it.
+    const rgbio::MeshFormat format = rgbio::mesh_format(file);
+    if (save.state && format != rgbio::MeshFormat::Obj && format != rgbio::MeshFormat::Gltf)
+        std::cerr << "rgbsub " << command << ": " << file << ": note: the adaptive state is kept only in OBJ files; this "
+                  << rgbio::format_name(format) << " file is an export that rgbsub cannot refine further\n";
     rgbio::save_mesh_file(mesh, file, save);
 }
 

@@ -1,6 +1,6 @@
 #include "io/gltf_export.h"
 
-#include "io/files/save_target.h"
+#include "io/formats/mesh_format.h"
 #include "rgb/mesh/face_location.h"
 #include "rgb/values/limit_normals.h"
 #include "rgb/values/loop_geometry.h"
@@ -10,7 +10,7 @@
 
 namespace rgbio {
 
-bool is_gltf_path(const std::string& path) { return has_extension(path, ".glb") || has_extension(path, ".gltf"); }
+bool is_gltf_path(const std::string& path) { return mesh_format(path) == MeshFormat::Gltf; }
 
 GltfMesh gltf_mesh(const rgb::Mesh& mesh, const SaveOptions& options) {
     GltfMesh out;
@@ -60,15 +60,6 @@ GltfMesh gltf_mesh(const rgb::Mesh& mesh, const SaveOptions& options) {
 
 void export_gltf(const rgb::Mesh& mesh, const std::string& path, const SaveOptions& options) {
     save_gltf(gltf_mesh(mesh, options), path);
-}
-
-void save_mesh_file(const rgb::Mesh& mesh, const std::string& path, const SaveOptions& options) {
-    if (is_gltf_path(path)) {
-        export_gltf(mesh, path, options);
-        options.progress.done();  // glTF is written in one piece: no progress before the end
-    } else {
-        save_mesh(mesh, path, options);
-    }
 }
 
 }  // namespace rgbio
