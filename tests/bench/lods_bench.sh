@@ -16,17 +16,7 @@ rgbsub=$(cd "$build" && pwd)/rgbsub
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-awk 'BEGIN {
-  m = 44; n = 44; R = 1.0; r = 0.35; pi = atan2(0, -1)
-  for (i = 0; i < m; i++) for (j = 0; j < n; j++) {
-    u = 2 * pi * i / m; v = 2 * pi * j / n
-    printf "v %.17g %.17g %.17g\n", (R + r * cos(v)) * cos(u), (R + r * cos(v)) * sin(u), r * sin(v)
-  }
-  for (i = 0; i < m; i++) for (j = 0; j < n; j++) {
-    a = i * n + j + 1; b = ((i + 1) % m) * n + j + 1; c = ((i + 1) % m) * n + (j + 1) % n + 1; d = i * n + (j + 1) % n + 1
-    printf "f %d %d %d\nf %d %d %d\n", a, b, c, a, c, d
-  }
-}' > "$work/torus.obj"
+awk -v m=44 -v n=44 -f "$(dirname "$0")/torus.awk" > "$work/torus.obj"
 
 seconds() {
   /usr/bin/time -o "$work/time.out" -f "%e" "$@" > /dev/null 2> /dev/null

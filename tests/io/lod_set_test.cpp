@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "io/script/lod_set.h"
+#include "io/script/triangle_limit.h"
 #include "rgb/lod/requests.h"
 #include "rgb/mesh/mesh.h"
 #include "rgb/values/loop_geometry.h"
@@ -57,8 +58,10 @@ TEST(LodSet, LevelsAreCanonicalAndNest) {
             const std::vector<glm::dvec3> positions = limit_positions(from_base);
             EXPECT_EQ(from_base.num_faces(), from_painted.num_faces()) << list << " LOD" << i;
             EXPECT_TRUE(rgbio::positions_nested(limit_positions(from_painted), positions)) << list << " LOD" << i;
-            if (i > 0) EXPECT_TRUE(rgbio::positions_nested(positions, finer)) << list << " LOD" << i;
-            if (i > 0) EXPECT_FALSE(rgbio::positions_nested(finer, positions)) << list << " LOD" << i;
+            if (i > 0) {
+                EXPECT_TRUE(rgbio::positions_nested(positions, finer)) << list << " LOD" << i;
+                EXPECT_FALSE(rgbio::positions_nested(finer, positions)) << list << " LOD" << i;
+            }
             finer = positions;
         }
     }
