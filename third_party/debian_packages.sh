@@ -11,9 +11,15 @@ RGBSUB_BUILD_PACKAGES=(
 # Only the test suite uses these: a virtual display for the editor window (xvfb-run needs xauth),
 # input injection, reference meshes, clang with its libFuzzer runtime for the loader's fuzz target,
 # OpenSubdiv's Far (libosd-dev), the Loop oracle for creases, corners and face-varying UVs, and
-# meshoptimizer, which the LOD quality benchmark (tests/bench/lod_quality.cpp) compares against.
+# meshoptimizer, which the LOD quality benchmark (tests/bench/lod_quality.cpp) compares against;
+# python3-meshio (with numpy), the independent reader of the PLY, STL, VTU and MSH files rgbsub writes
+# (tests/cli/formats_check.py); nodejs and npm, which install and run the Khronos glTF validator
+# (npm gltf-validator, into the build tree: tests/cli/CMakeLists.txt).
 # (GCC's AddressSanitizer and UBSan runtimes come with build-essential's g++.)
-RGBSUB_TEST_PACKAGES=(xvfb xauth xdotool assimp-testmodels clang libclang-rt-14-dev libosd-dev libmeshoptimizer-dev)
+RGBSUB_TEST_PACKAGES=(xvfb xauth xdotool assimp-testmodels clang libclang-rt-14-dev libosd-dev libmeshoptimizer-dev
+  python3-meshio nodejs)
+# A node from elsewhere (NodeSource's nodejs package) brings its own npm and conflicts with Debian's.
+command -v npm >/dev/null || RGBSUB_TEST_PACKAGES+=(npm)
 
 # Installs whichever of the given packages are missing; apt-get runs only when one is.
 # Without root or sudo it prints the command to run and exits 2.

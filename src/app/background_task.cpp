@@ -6,7 +6,7 @@
 #include <utility>
 
 #include "detail/remesh.h"
-#include "io/gltf_export.h"
+#include "io/mesh_export.h"
 
 namespace app {
 

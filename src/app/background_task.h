@@ -23,7 +23,7 @@ public:
 
     // Reads `path` with load_document.
     static std::unique_ptr<BackgroundTask> open(const std::string& path, render::PositionSource source);
-    // Writes `copy` to `path` with rgbio::save_mesh_file (atomically; glTF for .glb and .gltf).
+    // Writes `copy` to `path` with rgbio::save_mesh_file (atomically; the format by the extension).
     static std::unique_ptr<BackgroundTask> save(rgb::Mesh copy, const std::string& path, const rgbio::SaveOptions& options);
 
     // Makes a cage of about `cage_triangles` triangles for the dense mesh `dense` that keeps its

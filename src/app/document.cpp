@@ -6,7 +6,7 @@
 #include <span>
 #include <utility>
 
-#include "io/gltf_export.h"
+#include "io/mesh_export.h"
 #include "rgb/values/restore_state.h"
 
 namespace app {
@@ -58,7 +58,7 @@ void Document::start_history(std::string path, bool unsaved) {
 
 void Document::save(const std::string& path, const rgbio::SaveOptions& options) {
     rgbio::save_mesh_file(mesh_, path, with_attributes(options));
-    if (!rgbio::is_gltf_path(path)) mark_saved(path);
+    if (!rgbio::is_export_path(path)) mark_saved(path);
 }
 
 void Document::mark_saved(const std::string& path) {

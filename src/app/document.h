@@ -35,8 +35,8 @@ public:
     // Adopts `mesh` as an unsaved document named `path` (may be empty).
     void adopt(rgb::Mesh mesh, std::string path);
     // Throws rgbio::SaveError. Writes an OBJ, with_attributes(options), clears the unsaved mark and
-    // makes `path` the document's file; a .glb or .gltf path is an export (rgbio::is_gltf_path): it
-    // writes glTF and leaves the document as it was (its file, its unsaved mark).
+    // makes `path` the document's file; a path of another format is an export (rgbio::is_export_path):
+    // it writes glTF, PLY, STL, VTU or MSH and leaves the document as it was (its file, its unsaved mark).
     void save(const std::string& path, const rgbio::SaveOptions& options);
     // `options` with what rides on the base mesh (materials, groups, colours from the file read, the
     // exact texture coordinates' layout), for saves made elsewhere (in the background).

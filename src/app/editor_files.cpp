@@ -11,6 +11,7 @@
 #include "io/files/atomic_file.h"
 #include "io/gltf_export.h"
 #include "io/formats/mesh_format.h"
+#include "io/mesh_export.h"
 #include "io/obj/obj_error.h"
 
 namespace app {
@@ -84,7 +85,7 @@ bool Editor::save_as(const std::string& path) {
         report(error.what(), true);
         return false;
     }
-    if (rgbio::is_gltf_path(path)) {
+    if (rgbio::is_export_path(path)) {
         report(exported_message(path), false);
         return true;
     }
@@ -96,7 +97,8 @@ bool Editor::save_as(const std::string& path) {
 }
 
 std::string Editor::exported_message(const std::string& path) const {
-    return "exported " + path + " (glTF, without the adaptive state: " + document_title(document_) + " stays the document)";
+    return "exported " + path + " (" + std::string(rgbio::format_name(rgbio::output_format(path))) +
+           ", without the adaptive state: " + document_title(document_) + " stays the document)";
 }
 
 // The script replays on the file the history's edits start from, whatever the document was saved as
@@ -204,7 +206,7 @@ void Editor::poll_file_task() {
         open_failures_ += task->kind() == BackgroundTask::Kind::Open;
         return;
     }
-    if (task->kind() == BackgroundTask::Kind::Save && rgbio::is_gltf_path(task->path())) {
+    if (task->kind() == BackgroundTask::Kind::Save && rgbio::is_export_path(task->path())) {
         report(exported_message(task->path()), false);
         return;
     }

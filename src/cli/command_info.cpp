@@ -87,6 +87,7 @@ int run_info(std::span<const std::string> args) {
     print_sharp_features(std::cout, mesh.base());
     print_detail(std::cout, mesh.base());
     print_summary(std::cout, summarize(mesh));
+    print_quality(std::cout, mesh);
     return exit_ok;
 }
 

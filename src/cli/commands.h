@@ -32,7 +32,8 @@ struct UsageError : std::runtime_error {
     X(info, "validate an OBJ file and print its counts, topology and RGB make-up") \
     X(refine, "set the level of detail of an OBJ mesh (everywhere or in a sphere) and save it") \
     X(apply, "run a script of level-of-detail edits on an OBJ mesh and save it") \
-    X(remesh, "make a coarse cage of a dense OBJ mesh that keeps its detail, and save it")
+    X(remesh, "make a coarse cage of a dense OBJ mesh that keeps its detail, and save it") \
+    X(lods, "write a set of levels of detail (glTF with MSFT_lod, or a file per level)")
 
 #define RGBSUB_DECLARE_COMMAND(name, description) int run_##name(std::span<const std::string> args);
 RGBSUB_COMMANDS(RGBSUB_DECLARE_COMMAND)

@@ -14,6 +14,7 @@
 #include "io/gltf_export.h"
 #include "io/obj/obj_error.h"
 #include "io/scale_check.h"
+#include "io/mesh_export.h"
 #include "rgb/mesh/sharp_angle.h"
 #include "rgb/values/restore_state.h"
 
@@ -58,6 +59,11 @@ void save_output(const char* command, const rgb::Mesh& mesh, const std::string& 
         return;
     }
     print_warnings(command, file, warnings);
+    // glTF exports have always been plain exports (docs/files.md); the formats added beside them say it.
+    const rgbio::OutputFormat format = rgbio::output_format(file);
+    if (save.state && format != rgbio::OutputFormat::Obj && format != rgbio::OutputFormat::Gltf)
+        std::cerr << "rgbsub " << command << ": " << file << ": note: the adaptive state is kept only in OBJ files; this "
+                  << rgbio::format_name(format) << " file is an export that rgbsub cannot refine further\n";
     rgbio::save_mesh_file(mesh, file, save);
 }
 

@@ -59,19 +59,23 @@ void print_warnings(const char* command, const std::string& file, const std::vec
 // --sharp-angle and --boundary (with_sharp_options).
 rgbio::LoadedAsset load_input(const char* command, const std::string& file, const Arguments& arguments);
 
-// Saves `mesh` with what rides on its base (save.attributes) to `file`: glTF for .glb/.gltf, OBJ
-// otherwise. First prints, as warnings, what the save leaves out.
 // Refuses (rgbio::SaveError) an output that cannot be saved, before any work: what
 // rgbio::resolve_save_target refuses, and a folder that is not there or not writable.
 void check_output_first(const std::string& file);
 
+// Saves `mesh` with what rides on its base (save.attributes) to `file` in the format of its extension
+// (io/formats/mesh_format.h). First prints, as warnings, what the save leaves out (the adaptive state
+// in any format but OBJ, unless --plain asked for none).
 void save_output(const char* command, const rgb::Mesh& mesh, const std::string& file, const rgbio::SaveOptions& save);
 
 // The help lines of the output options refine and apply share.
 inline constexpr std::string_view kOutputHelp =
     "  -o OUT              OUT.obj keeps the adaptive state (and the input's materials, groups, objects and\n"
     "                      smoothing groups); OUT.glb or OUT.gltf writes glTF 2.0 (positions, limit normals,\n"
-    "                      materials, texture coordinates while the mesh is at level 0)\n"
+    "                      materials, texture coordinates while the mesh is at level 0); OUT.ply (binary, doubles),\n"
+    "                      OUT.stl (binary, floats), OUT.vtu (VTK XML) and OUT.msh (Gmsh 4.1) write the mesh\n"
+    "                      with each face's level and RGB colour (and in .vtu/.msh its quality), without the\n"
+    "                      adaptive state\n"
     "  --normals           OBJ: vn lines with the exact normals of the Loop limit surface\n";
 
 // "display" or "limit"; throws UsageError otherwise.

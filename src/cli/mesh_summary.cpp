@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "rgb/support/parallel.h"
+#include "rgb/values/triangle_quality.h"
 
 namespace cli {
 
@@ -68,6 +69,14 @@ void print_summary(std::ostream& out, const MeshSummary& s) {
         << ", blue " << s.blue << "\ntriangles per level:";
     for (const auto& [level, count] : s.faces_per_level) out << ' ' << level << ':' << count;
     out << '\n';
+}
+
+void print_quality(std::ostream& out, const rgb::Mesh& mesh) {
+    out << "triangle quality per level (angles in degrees; aspect ratio: longest edge x perimeter / (4 sqrt(3) x area), 1 when "
+           "equilateral):\n";
+    for (const auto& [level, q] : rgb::quality_by_level(mesh))
+        out << "  level " << level << ": minimum angle " << q.min_angle << ", mean minimum angle " << q.mean_min_angle
+            << ", worst aspect ratio " << q.max_aspect_ratio << '\n';
 }
 
 }  // namespace cli

@@ -1,5 +1,5 @@
 #pragma once
-// The numbers `rgbsub info` prints about a mesh: counts, topology and the RGB make-up.
+// The numbers `rgbsub info` prints about a mesh: counts, topology, the RGB make-up and the triangles' shape.
 #include <cstddef>
 #include <map>
 #include <ostream>
@@ -17,5 +17,9 @@ struct MeshSummary {
 
 MeshSummary summarize(const rgb::Mesh& mesh);
 void print_summary(std::ostream& out, const MeshSummary& summary);
+
+// The triangles' shape per level (rgb/values/triangle_quality.h): smallest angle, mean of each
+// triangle's smallest angle, worst aspect ratio.
+void print_quality(std::ostream& out, const rgb::Mesh& mesh);
 
 }  // namespace cli

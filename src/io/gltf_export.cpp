@@ -1,34 +1,28 @@
 #include "io/gltf_export.h"
 
-#include "io/files/save_target.h"
+#include "io/formats/mesh_format.h"
+#include "io/mesh_export.h"
 #include "rgb/mesh/face_location.h"
 #include "rgb/values/limit_normals.h"
-#include "rgb/values/loop_geometry.h"
 #include "rgb/values/mesh_uvs.h"
 #include "rgb/values/uv_evaluator.h"
-#include "rgb/values/vertex_channel.h"
 
 namespace rgbio {
 
-bool is_gltf_path(const std::string& path) { return has_extension(path, ".glb") || has_extension(path, ".gltf"); }
+bool is_gltf_path(const std::string& path) { return output_format(path) == OutputFormat::Gltf; }
 
 GltfMesh gltf_mesh(const rgb::Mesh& mesh, const SaveOptions& options) {
     GltfMesh out;
     const bool limit = options.positions == SavedPositions::Limit;
     const BaseAttributes* attributes = options.attributes.get();
-    // Colours by the position rules, at the positions' level, as the OBJ writer writes them.
-    const std::vector<glm::dvec3> colours =
-        attributes && !attributes->colours.empty()
-            ? rgb::vertex_channel_values(mesh, attributes->colours, limit ? rgb::ChannelLevel::Limit : rgb::ChannelLevel::Displayed)
-            : std::vector<glm::dvec3>();
-    std::vector<std::uint32_t> index(mesh.vertex_capacity(), kNoIndex);
+    // Positions, colours and triangles as every other format writes them, live vertices in slot order.
+    ExportMesh flat = export_mesh(mesh, options);
+    out.positions = std::move(flat.positions);
+    out.colours = std::move(flat.colours);
+    out.triangles = std::move(flat.triangles);
     const std::vector<glm::dvec3> normals = rgb::limit_normals(mesh);
-    for (rgb::VertexId v : mesh.vertices()) {
-        index[v.idx] = static_cast<std::uint32_t>(out.positions.size());
-        out.positions.push_back(limit ? rgb::limit_position_uncached(mesh, v) : rgb::displayed_position(mesh, v));
-        out.normals.push_back(normals[v.idx]);
-        if (!colours.empty()) out.colours.push_back(colours[v.idx]);
-    }
+    out.normals.reserve(out.positions.size());
+    for (rgb::VertexId v : mesh.vertices()) out.normals.push_back(normals[v.idx]);
     // The exact UV channel gives every corner's UV at every level (the OBJ writer's vt); without it,
     // the level-0 texture coordinates serve while the mesh is its base mesh.
     rgb::MeshUvs uvs;
@@ -42,8 +36,6 @@ GltfMesh gltf_mesh(const rgb::Mesh& mesh, const SaveOptions& options) {
     FaceLabels materials;  // per written triangle, for material_indices
     if (attributes && !attributes->labels.materials.empty()) materials.names = attributes->labels.materials.names;
     for (rgb::FaceId f : mesh.faces()) {
-        const auto& v = mesh.face_vertices(f);
-        out.triangles.push_back({index[v[0].idx], index[v[1].idx], index[v[2].idx]});
         if (options.uvs) out.triangle_texcoords.push_back(uvs.corners[f.idx]);
         if (texcoords)
             out.triangle_texcoords.push_back({base_corner_texcoord(mesh, *attributes, f, 0), base_corner_texcoord(mesh, *attributes, f, 1),
@@ -60,15 +52,6 @@ GltfMesh gltf_mesh(const rgb::Mesh& mesh, const SaveOptions& options) {
 
 void export_gltf(const rgb::Mesh& mesh, const std::string& path, const SaveOptions& options) {
     save_gltf(gltf_mesh(mesh, options), path);
-}
-
-void save_mesh_file(const rgb::Mesh& mesh, const std::string& path, const SaveOptions& options) {
-    if (is_gltf_path(path)) {
-        export_gltf(mesh, path, options);
-        options.progress.done();  // glTF is written in one piece: no progress before the end
-    } else {
-        save_mesh(mesh, path, options);
-    }
 }
 
 }  // namespace rgbio

@@ -14,15 +14,12 @@
 
 namespace rgbio {
 
-// Whether `path` names a glTF file (.glb or .gltf, any case): what `-o` and Save use to choose.
+// Whether `path` names a glTF file (.glb or .gltf, any case: formats/mesh_format.h).
 bool is_gltf_path(const std::string& path);
 
 GltfMesh gltf_mesh(const rgb::Mesh& mesh, const SaveOptions& options);
 
 // save_gltf(gltf_mesh(mesh, options), path). Throws SaveError.
 void export_gltf(const rgb::Mesh& mesh, const std::string& path, const SaveOptions& options);
-
-// export_gltf for a glTF path, save_mesh otherwise.
-void save_mesh_file(const rgb::Mesh& mesh, const std::string& path, const SaveOptions& options);
 
 }  // namespace rgbio

@@ -25,19 +25,7 @@ else
 fi
 
 # A torus of 54 x 54 quads cut into 5,832 triangles: level 5 gives 5,971,968.
-torus() {
-  awk 'BEGIN {
-    m = 54; n = 54; R = 1.0; r = 0.35; pi = atan2(0, -1)
-    for (i = 0; i < m; i++) for (j = 0; j < n; j++) {
-      u = 2 * pi * i / m; v = 2 * pi * j / n
-      printf "v %.17g %.17g %.17g\n", (R + r * cos(v)) * cos(u), (R + r * cos(v)) * sin(u), r * sin(v)
-    }
-    for (i = 0; i < m; i++) for (j = 0; j < n; j++) {
-      a = i * n + j + 1; b = ((i + 1) % m) * n + j + 1; c = ((i + 1) % m) * n + (j + 1) % n + 1; d = i * n + (j + 1) % n + 1
-      printf "f %d %d %d\nf %d %d %d\n", a, b, c, a, c, d
-    }
-  }'
-}
+torus() { awk -v m=54 -v n=54 -f "$source_dir/tests/bench/torus.awk"; }
 
 # Prints "wall user+sys maxrss_kb" of one run of the command.
 measure() {

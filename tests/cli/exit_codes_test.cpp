@@ -118,6 +118,23 @@ TEST_F(ExitCodes, EveryCommandFollowsTheDocumentedTable) {
         {{"remesh", missing, "-o", obj, "--cage-triangles", "8"}, "I/O or resource failure"},
         {{"remesh", mesh, "-o", obj, "--cage-triangles", "8", "--max-triangles", "4"}, "I/O or resource failure"},
         {{"remesh", mesh, "-o", obj, "--cage-triangles", "8"}, "I/O or resource failure", tiny_disk},
+
+        {{"lods", mesh, "-o", obj, "--levels", "2,1,0"}, "ok"},
+        {{"lods", mesh, "-o", path("set.glb"), "--budgets", "200,50"}, "ok"},
+        {{"lods", mesh, "-o", obj, "--levels", "2,1,0", "-x"}, "usage error"},
+        {{"lods", mesh, "-o", obj}, "usage error"},
+        {{"lods", mesh, "-o", obj, "--levels", "2,,0"}, "usage error"},
+        {{"lods", mesh, "-o", obj, "--levels", "1,1"}, "usage error"},
+        {{"lods", mesh, "-o", obj, "--budgets", "0"}, "usage error"},
+        {{"lods", mesh, "-o", obj, "--tolerances", "-1%"}, "usage error"},
+        {{"lods", mesh, "-o", obj, "--levels", "1", "--budgets", "100"}, "usage error"},
+        {{"lods", broken, "-o", obj, "--levels", "1"}, "bad input"},
+        {{"lods", missing, "-o", obj, "--levels", "1"}, "I/O or resource failure"},
+        {{"lods", mesh, "-o", folder + "/x.glb/", "--levels", "1"}, "I/O or resource failure"},
+        {{"lods", mesh, "-o", obj, "--levels", "4,0", "--max-triangles", "100"}, "I/O or resource failure"},
+        {{"lods", mesh, "-o", obj, "--budgets", "300000,10", "--max-triangles", "100"}, "I/O or resource failure"},
+        {{"lods", mesh, "-o", obj, "--tolerances", "0.0001%,1%", "--max-triangles", "100"}, "I/O or resource failure"},
+        {{"lods", mesh, "-o", path("set.glb"), "--levels", "2,1"}, "I/O or resource failure", tiny_disk},
     };
 
     std::set<std::pair<std::string, std::string>> covered;

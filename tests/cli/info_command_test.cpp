@@ -24,17 +24,24 @@ protected:
     }
 };
 
-// Closed and genus 0: V - E + F = 2, E = 3F/2.
+// The header of the quality lines (rgb/values/triangle_quality.h).
+const std::string kQuality = "triangle quality per level (angles in degrees; aspect ratio: longest edge x perimeter / (4 sqrt(3) x area), 1 when equilateral):\n";
+
+// Closed and genus 0: V - E + F = 2, E = 3F/2. Every face equilateral: angles of 60 degrees, aspect ratio 1.
 TEST_F(InfoCommand, ClosedOctahedron) {
     EXPECT_EQ(info("octahedron.obj", rgbio::test::kOctahedron),
               path("octahedron.obj") + ": valid\n"
               "adaptive state: none (base mesh)\n"
               "vertices: 6\nedges: 12\nfaces: 8\nboundary loops: 0\nEuler characteristic: 2\n"
               "triangles per colour: green 8, red 0, blue 0\n"
-              "triangles per level: 0:8\n");
+              "triangles per level: 0:8\n" + kQuality +
+              "  level 0: minimum angle 60, mean minimum angle 60, worst aspect ratio 1\n");
 }
 
-// A square ring: four outer and four inner corners, two triangles per side, two boundary loops.
+// A square ring: four outer and four inner corners, two triangles per side, two boundary loops. Each
+// side's triangles, (-2,-2) (2,-2) (1,-1) and (-2,-2) (1,-1) (-1,-1) and their turns, have the smallest
+// angle atan(1/3) = 18.4349 degrees; the worst aspect ratio is the first's: edges 4, sqrt 2, sqrt 10,
+// area 2: 4 (4 + sqrt 2 + sqrt 10) / (8 sqrt 3) = 3.00174.
 TEST_F(InfoCommand, AnnulusHasTwoBoundaryLoops) {
     const std::string ring =
         "v -2 -2 0\nv 2 -2 0\nv 2 2 0\nv -2 2 0\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n"
@@ -44,7 +51,8 @@ TEST_F(InfoCommand, AnnulusHasTwoBoundaryLoops) {
               "adaptive state: none (base mesh)\n"
               "vertices: 8\nedges: 16\nfaces: 8\nboundary loops: 2\nEuler characteristic: 0\n"
               "triangles per colour: green 8, red 0, blue 0\n"
-              "triangles per level: 0:8\n");
+              "triangles per level: 0:8\n" + kQuality +
+              "  level 0: minimum angle 18.4349, mean minimum angle 18.4349, worst aspect ratio 3.00174\n");
 }
 
 // A fixed file says so and lists what was fixed: a quad split in two, an unused vertex dropped.
@@ -61,7 +69,12 @@ TEST_F(InfoCommand, FixesAreListedAsWarnings) {
         << run.out;
 }
 
-// A saved level-1 refinement: 4 * 8 green faces of level 1; V = 6 + 12 edge points, E = 3F/2.
+// A saved level-1 refinement: 4 * 8 green faces of level 1; V = 6 + 12 edge points, E = 3F/2. By Loop's
+// rules the corners move to 132/256 of themselves (valence 4: beta = 31/256, the neighbours sum to 0)
+// and the edge points are 3/8 (a + b) (the opposite vertices sum to 0): 8 equilateral middle triangles
+// and 24 isosceles corner ones, whose smallest angle is 48.5409 degrees, the mean of the 32 smallest
+// angles 51.4057, the worst aspect ratio 1.28045 (computed from those points by the law of cosines
+// and Heron's formula).
 TEST_F(InfoCommand, SavedStateIsReportedWithItsLevels) {
     ASSERT_EQ(test::run_command({"refine", write("octahedron.obj", rgbio::test::kOctahedron), "-o", path("fine.obj"), "--level", "1"})
                   .exit_code,
@@ -72,7 +85,8 @@ TEST_F(InfoCommand, SavedStateIsReportedWithItsLevels) {
                        "adaptive state: restored from the file's #rgb lines\n"
                        "vertices: 18\nedges: 48\nfaces: 32\nboundary loops: 0\nEuler characteristic: 2\n"
                        "triangles per colour: green 32, red 0, blue 0\n"
-                       "triangles per level: 1:32\n");
+                       "triangles per level: 1:32\n" + kQuality +
+                       "  level 1: minimum angle 48.5409, mean minimum angle 51.4057, worst aspect ratio 1.28045\n");
 }
 
 // A cage with detail of levels per face: the octahedron, its faces at levels 1 3 2 2 1 3 2 1. The

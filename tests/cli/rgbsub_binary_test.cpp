@@ -33,7 +33,7 @@ TEST(RgbsubBinary, HelpListsEverySubcommandAndExitsZero) {
         EXPECT_FALSE(description.empty()) << name << " has a description";
         listed.push_back(name);
     }
-    EXPECT_EQ(listed, (std::vector<std::string>{"edit", "render", "info", "refine", "apply", "remesh"}));
+    EXPECT_EQ(listed, (std::vector<std::string>{"edit", "render", "info", "refine", "apply", "remesh", "lods"}));
     EXPECT_NE(run.output.find("without a COMMAND: rgbsub edit"), std::string::npos) << run.output;
 }
 

@@ -6,6 +6,7 @@
 #include "io/formats/assimp_reader.h"
 #include "io/formats/gltf_reader.h"
 #include "io/formats/ply_reader.h"
+#include "io/files/save_target.h"
 
 namespace rgbio {
 
@@ -36,6 +37,27 @@ LoadedMesh read_foreign_file(const std::string& path, MeshFormat format, const R
     LoadedMesh loaded = weld_foreign_mesh(std::move(mesh), path, options);
     options.progress.done();
     return loaded;
+}
+
+OutputFormat output_format(const std::string& path) {
+    if (has_extension(path, ".glb") || has_extension(path, ".gltf")) return OutputFormat::Gltf;
+    if (has_extension(path, ".ply")) return OutputFormat::Ply;
+    if (has_extension(path, ".stl")) return OutputFormat::Stl;
+    if (has_extension(path, ".vtu")) return OutputFormat::Vtu;
+    if (has_extension(path, ".msh")) return OutputFormat::Msh;
+    return OutputFormat::Obj;
+}
+
+std::string_view format_name(OutputFormat format) {
+    switch (format) {
+        case OutputFormat::Obj: return "OBJ";
+        case OutputFormat::Gltf: return "glTF";
+        case OutputFormat::Ply: return "PLY";
+        case OutputFormat::Stl: return "STL";
+        case OutputFormat::Vtu: return "VTK XML (.vtu)";
+        case OutputFormat::Msh: return "Gmsh (.msh)";
+    }
+    return "OBJ";
 }
 
 }  // namespace rgbio

@@ -8,6 +8,7 @@
 #include <map>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 #include <unordered_map>
 
 #include <glm/geometric.hpp>
@@ -220,9 +221,12 @@ std::vector<std::string> gltf_repairs(const GltfMesh& mesh) {
     return warnings;
 }
 
-std::string format_gltf(const GltfMesh& mesh, GltfContainer container, const std::string& output_folder) {
+namespace {
+
+// The mesh's glTF vertices and one primitive per material in material order, then the triangles
+// without one, every primitive indexed.
+tinygltf::Mesh add_mesh(ModelBuilder& builder, const GltfMesh& mesh) {
     const GltfVertices vertices = unweld(mesh);
-    ModelBuilder builder;
     tinygltf::Primitive base;
     base.mode = TINYGLTF_MODE_TRIANGLES;
     std::vector<glm::dvec3> positions;
@@ -247,8 +251,6 @@ std::string format_gltf(const GltfMesh& mesh, GltfContainer container, const std
             texcoords.push_back(uv == kNoIndex ? glm::dvec2(0.0) : glm::dvec2(mesh.texcoords[uv].x, 1.0 - mesh.texcoords[uv].y));
         base.attributes["TEXCOORD_0"] = builder.add_floats<2>(texcoords, TINYGLTF_TYPE_VEC2, false);
     }
-
-    // One primitive per material in material order, then the triangles without one.
     std::map<std::uint32_t, std::vector<std::uint32_t>> indices_of_material;
     for (std::size_t t = 0; t < vertices.triangles.size(); ++t) {
         const std::uint32_t material = mesh.triangle_materials.empty() ? kNoIndex : mesh.triangle_materials[t];
@@ -263,16 +265,41 @@ std::string format_gltf(const GltfMesh& mesh, GltfContainer container, const std
         primitive.material = material == kNoIndex ? -1 : static_cast<int>(material);
         gltf_mesh.primitives.push_back(primitive);
     }
+    return gltf_mesh;
+}
+
+}  // namespace
+
+std::string format_gltf_lods(std::span<const GltfMesh> levels, std::span<const double> coverage, GltfContainer container,
+                             const std::string& output_folder) {
+    if (levels.empty() || (levels.size() > 1 && coverage.size() != levels.size()))
+        throw std::invalid_argument("format_gltf_lods: one or more levels, with a screen coverage each when several");
+    ModelBuilder builder;
+    for (const GltfMesh& level : levels) builder.model.meshes.push_back(add_mesh(builder, level));
     builder.finish();
 
     tinygltf::Model& model = builder.model;
     model.asset.version = "2.0";
     model.asset.generator = "rgbsub";
-    add_materials(mesh, output_folder, model);
-    model.meshes.push_back(gltf_mesh);
-    tinygltf::Node node;
-    node.mesh = 0;
-    model.nodes.push_back(node);
+    add_materials(levels[0], output_folder, model);  // every level has the materials of the same input
+    for (std::size_t i = 0; i < levels.size(); ++i) {
+        tinygltf::Node node;
+        node.mesh = static_cast<int>(i);
+        if (levels.size() > 1) node.name = "LOD" + std::to_string(i);
+        model.nodes.push_back(node);
+    }
+    if (levels.size() > 1) {
+        // MSFT_lod: the scene's node shows LOD0 and names the coarser levels' nodes, which are in no
+        // scene; MSFT_screencoverage gives per level the screen coverage down to which it is shown.
+        tinygltf::Value::Array ids, coverages;
+        for (std::size_t i = 1; i < levels.size(); ++i) ids.emplace_back(static_cast<int>(i));
+        for (double c : coverage) coverages.emplace_back(c);
+        tinygltf::Value::Object lod{{"ids", tinygltf::Value(ids)}};
+        model.nodes[0].extensions["MSFT_lod"] = tinygltf::Value(lod);
+        tinygltf::Value::Object extras{{"MSFT_screencoverage", tinygltf::Value(coverages)}};
+        model.nodes[0].extras = tinygltf::Value(extras);
+        model.extensionsUsed.push_back("MSFT_lod");
+    }
     tinygltf::Scene scene;
     scene.nodes.push_back(0);
     model.scenes.push_back(scene);
@@ -286,11 +313,17 @@ std::string format_gltf(const GltfMesh& mesh, GltfContainer container, const std
     return out.str();
 }
 
-void save_gltf(const GltfMesh& mesh, const std::string& path) {
+std::string format_gltf(const GltfMesh& mesh, GltfContainer container, const std::string& output_folder) {
+    return format_gltf_lods(std::span<const GltfMesh>(&mesh, 1), {}, container, output_folder);
+}
+
+void save_gltf_lods(std::span<const GltfMesh> levels, std::span<const double> coverage, const std::string& path) {
     const bool binary = has_extension(path, ".glb");
     // Image paths from the real file's folder: saved through a symbolic link, it lives where the link leads.
     const std::string folder = resolve_save_target(path).folder;
-    write_file_atomically(path, format_gltf(mesh, binary ? GltfContainer::Binary : GltfContainer::Json, folder));
+    write_file_atomically(path, format_gltf_lods(levels, coverage, binary ? GltfContainer::Binary : GltfContainer::Json, folder));
 }
+
+void save_gltf(const GltfMesh& mesh, const std::string& path) { save_gltf_lods(std::span<const GltfMesh>(&mesh, 1), {}, path); }
 
 }  // namespace rgbio

@@ -11,6 +11,7 @@
 // 32-bit floats (glTF allows no doubles for them).
 #include <array>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -50,5 +51,14 @@ std::string format_gltf(const GltfMesh& mesh, GltfContainer container, const std
 
 // Binary for a path ending in .glb, JSON otherwise. Throws SaveError.
 void save_gltf(const GltfMesh& mesh, const std::string& path);
+
+// A set of levels of detail, finest first, in one file: each level a mesh of its own in `meshes` and
+// a node of its own; the scene's one node shows LOD0 and names the others through the MSFT_lod
+// extension, with MSFT_screencoverage in its extras: per level the screen coverage down to which it
+// is shown (`coverage`, one per level, not increasing; the last 0, so the coarsest is never culled).
+// One level alone is format_gltf's file. Materials are levels[0]'s, shared by every level.
+std::string format_gltf_lods(std::span<const GltfMesh> levels, std::span<const double> coverage, GltfContainer container,
+                             const std::string& output_folder);
+void save_gltf_lods(std::span<const GltfMesh> levels, std::span<const double> coverage, const std::string& path);
 
 }  // namespace rgbio

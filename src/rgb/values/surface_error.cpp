@@ -10,6 +10,7 @@
 #include "rgb/mesh/mesh.h"
 #include "rgb/values/hierarchy_evaluator.h"
 #include "rgb/values/hierarchy_triangle.h"
+#include "rgb/support/parallel.h"
 #include "rgb/values/loop_geometry.h"
 
 namespace rgb {
@@ -31,7 +32,11 @@ glm::dvec3 target_position(const BaseMesh& base, HierarchyEvaluator& evaluator, 
     return evaluator.limit_position(p);
 }
 
-SurfaceError face_surface_error(const Mesh& mesh, HierarchyEvaluator& evaluator, FaceId f) {
+namespace {
+
+// face_surface_error with the face's corners shown at shown(v).
+template <class Shown>
+SurfaceError face_error_shown(const Mesh& mesh, HierarchyEvaluator& evaluator, FaceId f, const Shown& shown_at) {
     const BaseMesh& base = mesh.base();
     SurfaceError out;
     const int level = mesh.level(f);
@@ -41,7 +46,7 @@ SurfaceError face_surface_error(const Mesh& mesh, HierarchyEvaluator& evaluator,
     for (int c = 0; c < 3; ++c) {
         const VertexId v = mesh.face_vertices(f)[static_cast<std::size_t>(c)];
         corners[static_cast<std::size_t>(c)] = numerators_at(*in_face(base, mesh.address(v), g), level + 2);
-        shown[static_cast<std::size_t>(c)] = displayed_position(mesh, v);
+        shown[static_cast<std::size_t>(c)] = shown_at(v);
     }
     // The samples of the face are those of the triangle of Σl it is a piece of that lie in it.
     HierarchyTriangle parent;
@@ -63,6 +68,39 @@ SurfaceError face_surface_error(const Mesh& mesh, HierarchyEvaluator& evaluator,
         if (error > out.max_error) {
             out.max_error = error;
             out.where = limit;
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+SurfaceError face_surface_error(const Mesh& mesh, HierarchyEvaluator& evaluator, FaceId f) {
+    return face_error_shown(mesh, evaluator, f, [&](VertexId v) { return displayed_position(mesh, v); });
+}
+
+SurfaceError surface_error_at(const Mesh& mesh, const std::vector<glm::dvec3>& corner_positions) {
+    // Per block of face slots its own evaluator (it caches), the blocks joined in slot order.
+    std::vector<SurfaceError> blocks(parallel_blocks(mesh.face_capacity(), 1 << 12));
+    parallel_blocks_for(mesh.face_capacity(), blocks.size(), [&](std::size_t b, std::size_t begin, std::size_t end) {
+        HierarchyEvaluator evaluator(mesh.base());
+        for (std::size_t i = begin; i < end; ++i) {
+            const FaceId f(static_cast<std::uint32_t>(i));
+            if (!mesh.is_live(f)) continue;
+            const SurfaceError face = face_error_shown(mesh, evaluator, f, [&](VertexId v) { return corner_positions[v.idx]; });
+            blocks[b].samples += face.samples;
+            if (face.max_error > blocks[b].max_error) {
+                blocks[b].max_error = face.max_error;
+                blocks[b].where = face.where;
+            }
+        }
+    });
+    SurfaceError out;
+    for (const SurfaceError& block : blocks) {
+        out.samples += block.samples;
+        if (block.max_error > out.max_error) {
+            out.max_error = block.max_error;
+            out.where = block.where;
         }
     }
     return out;

@@ -6,6 +6,7 @@
 // displayed positions (spec §4.6). This is the measure the tolerance criterion (limit_error.h)
 // bounds.
 #include <cstddef>
+#include <vector>
 
 #include <glm/vec3.hpp>
 
@@ -35,6 +36,11 @@ SurfaceError face_surface_error(const Mesh& mesh, HierarchyEvaluator& evaluator,
 
 // The largest error over every face (face_surface_error's), the first face in slot order where tied.
 SurfaceError displayed_surface_error(const Mesh& mesh);
+
+// The same measure for the flat faces between other corner positions, one per vertex slot (such as
+// the limit positions a file is written with: rgbsub lods), on all cores; the first face in slot order
+// where tied, as above.
+SurfaceError surface_error_at(const Mesh& mesh, const std::vector<glm::dvec3>& corner_positions);
 
 // The length that percentages of the mesh's size are of (tolerances and automatic LOD in the editor,
 // the distance heat map's scale): the diagonal of the base mesh's bounding box, so that it does not
