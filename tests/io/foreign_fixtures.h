@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec3.hpp>
+
 namespace rgbio::test {
 
 // Appends v's bytes, little endian (or big endian when asked).
@@ -45,6 +47,25 @@ inline std::string binary_stl(const std::vector<std::array<float, 9>>& triangles
         for (float x : t) put<float>(out, x);
         put<std::uint16_t>(out, 0);
     }
+    return out;
+}
+
+// A tetrahedron in binary PLY, little endian doubles with byte colours, then big endian floats.
+inline std::string binary_tetrahedron_ply(bool big_endian, bool doubles, const std::vector<glm::dvec3>& p) {
+    std::string out = std::string("ply\nformat ") + (big_endian ? "binary_big_endian" : "binary_little_endian") + " 1.0\nelement vertex 4\n";
+    for (const char* axis : {"x", "y", "z"}) out += std::string("property ") + (doubles ? "double " : "float ") + axis + "\n";
+    out += "property uchar red\nproperty uchar green\nproperty uchar blue\nelement face 4\nproperty list uchar uint vertex_indices\n"
+           "element edge 1\nproperty int vertex1\nproperty int vertex2\nend_header\n";
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        for (int c = 0; c < 3; ++c) doubles ? put<double>(out, p[i][c], big_endian) : put<float>(out, static_cast<float>(p[i][c]), big_endian);
+        for (std::uint8_t c : {std::uint8_t(255), std::uint8_t(128), std::uint8_t(i)}) put<std::uint8_t>(out, c);
+    }
+    for (std::array<std::uint32_t, 3> f : {std::array<std::uint32_t, 3>{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}}) {
+        put<std::uint8_t>(out, 3);
+        for (std::uint32_t v : f) put<std::uint32_t>(out, v, big_endian);
+    }
+    put<std::int32_t>(out, 0, big_endian);
+    put<std::int32_t>(out, 1, big_endian);
     return out;
 }
 

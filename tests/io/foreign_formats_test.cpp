@@ -3,14 +3,13 @@
 // the file stores them (doubles where it stores doubles, floats where floats), vertices split per
 // corner welded into one manifold with their texture coordinates kept per corner, node transforms
 // composed, meshes as groups, materials, one warning naming what is dropped, and hostile files
-// refused with an ObjError naming the file and the reason.
+// refused with an ObjError naming the file and the reason. `info` on them: foreign_info_test.cpp.
 #include <cstdio>
 #include <map>
 #include <set>
 
 #include <gtest/gtest.h>
 
-#include "cli/dispatch.h"
 #include "foreign_fixtures.h"
 #include "io/gltf/gltf_writer.h"
 #include "io/mesh_reader.h"
@@ -22,6 +21,7 @@
 namespace rgbio {
 namespace {
 
+using test::binary_tetrahedron_ply;
 using test::has_warning;
 using test::put;
 
@@ -246,25 +246,6 @@ TEST_F(ForeignFormats, AsciiPlyDoublesBitForBit) {
     EXPECT_TRUE(mesh.warnings.front().find("triangulated 1 quads") != std::string::npos) << mesh.warnings.front();
 }
 
-// A tetrahedron in binary PLY, little endian doubles with byte colours, then big endian floats.
-std::string binary_tetrahedron_ply(bool big_endian, bool doubles, const std::vector<glm::dvec3>& p) {
-    std::string out = std::string("ply\nformat ") + (big_endian ? "binary_big_endian" : "binary_little_endian") + " 1.0\nelement vertex 4\n";
-    for (const char* axis : {"x", "y", "z"}) out += std::string("property ") + (doubles ? "double " : "float ") + axis + "\n";
-    out += "property uchar red\nproperty uchar green\nproperty uchar blue\nelement face 4\nproperty list uchar uint vertex_indices\n"
-           "element edge 1\nproperty int vertex1\nproperty int vertex2\nend_header\n";
-    for (std::size_t i = 0; i < p.size(); ++i) {
-        for (int c = 0; c < 3; ++c) doubles ? put<double>(out, p[i][c], big_endian) : put<float>(out, static_cast<float>(p[i][c]), big_endian);
-        for (std::uint8_t c : {std::uint8_t(255), std::uint8_t(128), std::uint8_t(i)}) put<std::uint8_t>(out, c);
-    }
-    for (std::array<std::uint32_t, 3> f : {std::array<std::uint32_t, 3>{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}}) {
-        put<std::uint8_t>(out, 3);
-        for (std::uint32_t v : f) put<std::uint32_t>(out, v, big_endian);
-    }
-    put<std::int32_t>(out, 0, big_endian);
-    put<std::int32_t>(out, 1, big_endian);
-    return out;
-}
-
 TEST_F(ForeignFormats, BinaryPlyPositionsAndColours) {
     const std::vector<glm::dvec3> p = {{0.1, 0.2, 0.3}, {1.0 / 3.0, 0.0, 0.0}, {0.0, 1.1, 0.0}, {0.0, 0.0, 2.0 / 3.0}};
     write("le.ply", binary_tetrahedron_ply(false, true, p));
@@ -341,22 +322,6 @@ TEST_F(ForeignFormats, ExtensionsInAnyCase) {
     EXPECT_EQ(read_mesh_file(path("UPPER.PLY")).triangles.size(), 1u);
     write("mesh.txt", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
     EXPECT_EQ(read_mesh_file(path("mesh.txt")).triangles.size(), 1u);
-}
-
-// `info` prints the same report for any format; a bad file is exit code 2.
-TEST_F(ForeignFormats, InfoOnOtherFormats) {
-    const std::vector<glm::dvec3> p = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-    write("tetra.ply", binary_tetrahedron_ply(false, false, p));
-    testing::internal::CaptureStdout();
-    const int code = cli::dispatch(std::vector<std::string>{"info", path("tetra.ply")});
-    const std::string out = testing::internal::GetCapturedStdout();
-    EXPECT_EQ(code, 0);
-    EXPECT_NE(out.find("faces: 4\n"), std::string::npos) << out;
-    EXPECT_NE(out.find("Euler characteristic: 2\n"), std::string::npos) << out;
-    write("bad.glb", "glTF but not really");
-    testing::internal::CaptureStderr();
-    EXPECT_EQ(cli::dispatch(std::vector<std::string>{"info", path("bad.glb")}), 2);
-    EXPECT_NE(testing::internal::GetCapturedStderr().find(path("bad.glb")), std::string::npos);
 }
 
 }  // namespace
