@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "rgb/lod/refine.h"
+#include "rgb/mesh/operators.h"
 #include "rgb/support/parallel.h"
 #include "rgb/values/loop_geometry.h"
 
