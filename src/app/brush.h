@@ -35,8 +35,8 @@ struct BrushSettings {
     // Paint only faces facing the camera and connected to the hit through the surface.
     bool paint_through = false;
     // What a dab asks for: the target level, a detail size or a tolerance (docs/requests.md "Detail by size,
-    // accuracy and view"): no edge longer than the size, or the surface shown within the tolerance
-    // of the limit surface, in the ball, as coarse as that allows (set; refine only adds, coarsen
+    // accuracy and view"): no green edge longer than the size, or the surface shown within the
+    // tolerance of the limit surface at its samples, in the ball, as coarse as the criterion allows (set; refine only adds, coarsen
     // only removes); the amount in screen pixels where the dab lands (relative detail) or in the
     // mesh's units (constant detail). Such dabs have no falloff and paint through.
     enum class Target { Level, DetailSize, Tolerance } target = Target::Level;

@@ -27,11 +27,12 @@ void detail_panel(Editor& editor) {
     DetailSettings& detail = editor.detail_settings();
     int criterion = static_cast<int>(detail.criterion);
     ImGui::RadioButton("max edge", &criterion, 0);
-    hover_tooltip("No edge longer than the amount (as `rgbsub refine --max-edge`), as coarse as that allows");
+    hover_tooltip("No green edge longer than the amount (as `rgbsub refine --max-edge`; transition diagonals can be),\n"
+            "as coarse as that allows");
     ImGui::SameLine();
     ImGui::RadioButton("tolerance", &criterion, 1);
-    hover_tooltip("The surface shown within the amount of the Loop limit surface (as `rgbsub refine --tolerance`),\n"
-            "with as few triangles as that allows");
+    hover_tooltip("The surface shown within the amount of the Loop limit surface at its samples\n"
+            "(as `rgbsub refine --tolerance`), as coarse as the criterion allows");
     detail.criterion = static_cast<rgbio::DetailCriterion>(criterion);
     float amount = static_cast<float>(detail.amount.value);
     // Taken only when changed: the float would otherwise replace the exact default every frame.

@@ -76,11 +76,12 @@ void brush_panel(Editor& editor) {
     hover_tooltip("Dabs aim for a subdivision level");
     ImGui::SameLine();
     ImGui::RadioButton("detail size", &target, 1);
-    hover_tooltip("Dabs aim for an edge length: no edge longer, as coarse as that allows (no falloff)");
+    hover_tooltip("Dabs aim for an edge length: no green edge longer (transition diagonals can be),\n"
+            "as coarse as that allows (no falloff)");
     ImGui::SameLine();
     ImGui::RadioButton("tolerance", &target, 2);
-    hover_tooltip("Dabs aim for accuracy: the surface shown within the amount of the Loop limit surface,\n"
-            "with as few triangles as that allows (no falloff)");
+    hover_tooltip("Dabs aim for accuracy: the surface shown within the amount of the Loop limit surface\n"
+            "at its samples, as coarse as the criterion allows (no falloff)");
     brush.target = static_cast<BrushSettings::Target>(target);
     if (brush.target == BrushSettings::Target::Level) {
         ImGui::SliderInt("target level", &brush.target_level, 0, kMaxBrushLevel);

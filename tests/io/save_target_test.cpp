@@ -2,10 +2,17 @@
 // owner and hard links; folders, FIFOs, sockets, devices and read-only files are refused with a
 // message naming what they are, and left exactly as they were.
 #include <csignal>
+#include <cstddef>
+#include <iostream>
+#include <iterator>
 #include <filesystem>
 #include <fstream>
 
+#include <linux/filter.h>
+#include <linux/seccomp.h>
 #include <sched.h>
+#include <sys/prctl.h>
+#include <sys/syscall.h>
 #include <sys/mount.h>
 #include <sys/resource.h>
 #include <sys/socket.h>
@@ -109,7 +116,9 @@ TEST_F(SaveTarget, OwnerIsKept) {
 }
 
 // A user who may write someone else's file (group-writable) cannot give a new file that owner, so
-// the file is written in place: same inode, same owner.
+// the file is written in place: same inode, same owner. The child enters the folder before it drops to
+// that user and names the file relative to it: the folder lies wherever the temporary folder is (under
+// a home of mode 0700, say), where the other user could not walk the path down to it.
 TEST_F(SaveTarget, FileOfAnotherOwnerIsWrittenInPlace) {
     ASSERT_EQ(::geteuid(), 0u) << "run the tests as root (./test.sh does): making a file owned by another user takes privileges";
     write("mesh.obj", "old content that is longer than the new one\n");
@@ -118,8 +127,8 @@ TEST_F(SaveTarget, FileOfAnotherOwnerIsWrittenInPlace) {
     ASSERT_EQ(::chmod(folder_.c_str(), 0777), 0);
     const ino_t inode = status_of(path("mesh.obj")).st_ino;
     EXPECT_TRUE(in_child([&] {
-        if (::setgid(65534) != 0 || ::setuid(65534) != 0) return false;
-        return save_error(path("mesh.obj"), "new\n").empty();
+        if (::chdir(folder_.c_str()) != 0 || ::setgid(65534) != 0 || ::setuid(65534) != 0) return false;
+        return save_error("mesh.obj", "new\n").empty();
     }));
     EXPECT_EQ(read(path("mesh.obj")), "new\n");
     EXPECT_EQ(status_of(path("mesh.obj")).st_ino, inode);
@@ -158,29 +167,53 @@ TEST_F(SaveTarget, HardLinkedFileOverTheSizeLimitIsUnchanged) {
     EXPECT_EQ(entries(), 2u);
 }
 
+// A disk that is full for the claim of space in place, without mounting one: a seccomp filter (no
+// privilege needed) answers fallocate, which only that claim calls, with ENOSPC as a full disk does,
+// while the temporary file's writes go through.
+bool refuse_space_claims() {
+    sock_filter filter[] = {
+        BPF_STMT(BPF_LD | BPF_W | BPF_ABS, offsetof(seccomp_data, nr)),
+        BPF_JUMP(BPF_JMP | BPF_JEQ | BPF_K, __NR_fallocate, 0, 1),
+        BPF_STMT(BPF_RET | BPF_K, SECCOMP_RET_ERRNO | (ENOSPC & SECCOMP_RET_DATA)),
+        BPF_STMT(BPF_RET | BPF_K, SECCOMP_RET_ALLOW),
+    };
+    const sock_fprog program{static_cast<unsigned short>(std::size(filter)), filter};
+    return ::prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0) == 0 && ::prctl(PR_SET_SECCOMP, SECCOMP_MODE_FILTER, &program) == 0;
+}
+
 // A full disk with room for the temporary file but not for the content in place: the space is
-// claimed before the file is touched. The disk is a 64 KiB tmpfs (16 pages) mounted in a private
-// mount namespace of a child process: 2 pages of old file + 10 of temporary file leave 4, and the
-// file needs 8 more.
+// claimed before the file is touched. Two disks, each in a child process: a 64 KiB tmpfs (16 pages)
+// mounted in a private mount namespace, where this process may mount one (2 pages of old file + 10 of
+// temporary file leave 4, and the file needs 8 more); and always, needing no privilege at all, the
+// folder with its claims of space refused (refuse_space_claims).
 TEST_F(SaveTarget, HardLinkedFileOnAFullDiskIsUnchanged) {
     fs::create_directory(folder_ / "disk");
-    const std::string disk = path("disk");
-    enum : int { kHeld = 0, kBroken = 1, kNoMount = 2 };
-    const int status = test::wait_status_of_child([&] {
-        if (!enter_private_mount_namespace()) return int(kNoMount);
-        if (::mount("tmpfs", disk.c_str(), "tmpfs", 0, "size=64k") != 0) return int(kNoMount);
+    fs::create_directory(folder_ / "claims_refused");
+    enum : int { kHeld = 0, kBroken = 1, kNoDisk = 2 };
+    const auto save_on_a_full_disk = [&](const std::string& disk) {
         const std::string old(8 << 10, 'o');
-        write("disk/a.obj", old);
+        std::ofstream(disk + "/a.obj", std::ios::binary) << old;
         fs::create_hard_link(disk + "/a.obj", disk + "/b.obj");
         const std::string message = save_error(disk + "/a.obj", std::string(40 << 10, 'n'));
         const bool held = message == "cannot save " + disk + "/a.obj: no room for the new content (the file is unchanged): No space left on device" &&
                           read(disk + "/b.obj") == old && fs::hard_link_count(disk + "/a.obj") == 2 &&
                           std::distance(fs::directory_iterator(disk), fs::directory_iterator()) == 2;
         return int(held ? kHeld : kBroken);
+    };
+    const int on_tmpfs = test::wait_status_of_child([&] {
+        const std::string disk = path("disk");
+        if (!enter_private_mount_namespace() || ::mount("tmpfs", disk.c_str(), "tmpfs", 0, "size=64k") != 0) return int(kNoDisk);
+        return save_on_a_full_disk(disk);
     });
-    ASSERT_TRUE(WIFEXITED(status));
-    ASSERT_NE(WEXITSTATUS(status), kNoMount) << "cannot mount a small tmpfs here: run the tests as root (./test.sh does) or where user namespaces are allowed";
-    EXPECT_EQ(WEXITSTATUS(status), kHeld);
+    ASSERT_TRUE(WIFEXITED(on_tmpfs));
+    if (WEXITSTATUS(on_tmpfs) == kNoDisk) std::cout << "no tmpfs could be mounted here: the refused claims alone stand for a full disk\n";
+    else EXPECT_EQ(WEXITSTATUS(on_tmpfs), kHeld) << "on a full tmpfs";
+    const int refused = test::wait_status_of_child([&] {
+        if (!refuse_space_claims()) return int(kNoDisk);
+        return save_on_a_full_disk(path("claims_refused"));
+    });
+    ASSERT_TRUE(WIFEXITED(refused));
+    EXPECT_EQ(WEXITSTATUS(refused), kHeld) << "with every claim of space refused";
 }
 
 TEST_F(SaveTarget, ReadOnlyFileIsRefused) {

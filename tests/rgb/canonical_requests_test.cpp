@@ -13,7 +13,6 @@
 #include "rgb/lod/dab.h"
 #include "rgb/lod/requests.h"
 #include "rgb/mesh/invariants.h"
-#include "rgb/support/triangle_geometry.h"
 #include "rgb/values/restore_state.h"
 #include "support/identity_tracker.h"
 #include "support/oracle_checks.h"
@@ -109,6 +108,24 @@ TEST_P(CanonicalRequests, CoarseningRemovesExactlyWhatTheMeaningRemoves) {
         for (const Request& r : random_requests(base, rng, 3, rgb::RequestKind::Coarsen, -1)) {
             rgb::apply_request(t.mesh, as_request(r));
             expected = meaning.coarsened(expected, r.level, {r.ball.centre, r.ball.radius});
+            ASSERT_EQ(t.ids.live_identities(), expected) << "trial " << trial;
+        }
+        ASSERT_TRUE(healthy(t, base)) << "trial " << trial;
+    }
+}
+
+// A set to N (`level N` in a ball) is a coarsen to N and then a refine to N in the same ball, by the
+// meaning's own rules, from any start: here the base, and the mesh at level 3 everywhere.
+TEST_P(CanonicalRequests, SettingGivesExactlyWhatTheMeaningGives) {
+    std::mt19937 rng(16);
+    for (int trial = 0; trial < 4; ++trial) {
+        Tracked t(base, oracle);
+        if (trial % 2 == 1) rgb::set_level(t.mesh, 3);
+        std::set<Identity> expected = t.ids.live_identities();
+        for (const Request& r : random_requests(base, rng, 3, rgb::RequestKind::Set, -1)) {
+            rgb::apply_request(t.mesh, as_request(r));
+            const OracleBall ball{r.ball.centre, r.ball.radius};
+            expected = meaning.refined(meaning.coarsened(expected, r.level, ball), r.level, ball);
             ASSERT_EQ(t.ids.live_identities(), expected) << "trial " << trial;
         }
         ASSERT_TRUE(healthy(t, base)) << "trial " << trial;
@@ -214,7 +231,7 @@ TEST(SmallRegions, ReachTheirLevel) {
             for (rgb::FaceId f : mesh.faces()) {
                 std::array<glm::dvec3, 3> corners;
                 for (int i = 0; i < 3; ++i) corners[i] = mesh.base_space_position(mesh.face_vertices(f)[i]);
-                if (rgb::distance_to_triangle(ball.centre, corners[0], corners[1], corners[2]) > ball.radius) continue;
+                if (oracle_distance_to_triangle(ball.centre, corners[0], corners[1], corners[2]) > ball.radius) continue;
                 ++meeting;
                 EXPECT_EQ(mesh.level(f), level);
             }

@@ -15,6 +15,7 @@
 #include "rgb/mesh/invariants.h"
 #include "rgb/mesh/mesh.h"
 #include "rgb/rules/sharp_features.h"
+#include "support/budget_run.h"
 #include "support/clear_threshold.h"
 #include "support/identity_tracker.h"
 #include "support/request_oracle.h"
@@ -41,16 +42,6 @@ std::set<Identity> wanted_vertices(const UniformLoopOracle& oracle, double thres
                 if (length > threshold && wanted.count(x) && wanted.count(y)) wanted.insert(*oracle.midpoint(x, y));
             }
     return wanted;
-}
-
-rgb::LodReport run_budget(rgb::Mesh& mesh, std::size_t budget, int cap = rgb::kMaxLevel) {
-    rgb::LodSettings settings;
-    settings.max_triangles = budget;
-    settings.max_level = cap;
-    rgb::LodDriver driver(mesh, settings);
-    driver.run();
-    EXPECT_TRUE(driver.done());
-    return driver.report();
 }
 
 class LodDriverMeaning : public testing::TestWithParam<TestMesh> {};

@@ -9,9 +9,13 @@
 //   refine N [sphere X Y Z R]    at least level N there
 //   coarsen N [sphere X Y Z R]   at most level N there
 //   budget TRIANGLES             the LOD driver: refine the longest edges up to the budget, or trim
-//   max-edge L [sphere X Y Z R]  no edge longer than L (world units, or L% of the bounding-box
-//                                diagonal) in the uniform mesh of its level, as coarse as that allows
-//   tolerance E [sphere X Y Z R] the displayed surface within E (or E%) of the Loop limit surface
+//   max-edge L [sphere X Y Z R]  no green edge (an edge of a uniform level) longer than L (world
+//                                units, or L% of the bounding-box diagonal) in the uniform mesh of
+//                                its level, as coarse as that allows; red and blue diagonals can be
+//                                longer
+//   tolerance E [sphere X Y Z R] the displayed surface within E (or E%) of the Loop limit surface at
+//                                its samples (between them up to 3% above E), in the smallest mesh
+//                                in which no unsplit edge could push the error over E
 //                                (both in a ball: set by default; a trailing `refine` only adds the
 //                                detail, `coarsen` only removes it: rgb/lod/lod_criteria.h)
 //   brush refine|coarsen|set LEVEL RADIUS [FALLOFF]

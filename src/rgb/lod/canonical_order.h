@@ -11,7 +11,12 @@
 //   3. lowered to the keys of its two endpoints, so that no vertex outranks a vertex it needs (a base
 //      vertex's key is the largest there is).
 // Key 0 means "not wanted": the value is not above the threshold, or the edge is at the level cap.
-// Between equal keys, the base-space midpoint decides, by x, then y, then z.
+// Between equal keys, the base-space midpoint decides, by x, then y, then z. Two different edges
+// with the same midpoint (their ends coincide in base space: a UV seam stored as two vertex copies, as
+// glTF exporters write it, or a polygon soup) are told apart by what surrounds them, never by storage:
+// their ends' base-space positions, then the vertices opposite them in the uniform mesh of their level
+// (the corners of the triangles on either side), each list greatest first (surroundings_come_before).
+// Only edges whose triangles coincide too (a face stored twice) stay equal.
 //
 // A run's result is the minimal RGB mesh holding every wanted vertex whose key is above a threshold,
 // with the lowest threshold that keeps the mesh within the budget: the driver splits in this order,
@@ -22,7 +27,9 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <tuple>
+#include <vector>
 
 #include <glm/common.hpp>
 #include <glm/vec3.hpp>
@@ -84,6 +91,29 @@ inline std::uint64_t split_key(const MortonFrame& frame, double value, const glm
 inline bool comes_before(std::uint64_t x, const glm::dvec3& mx, std::uint64_t y, const glm::dvec3& my) {
     if (x != y) return x > y;
     return std::tie(mx.x, mx.y, mx.z) > std::tie(my.x, my.y, my.z);
+}
+
+// What surrounds a split in base space, for ties of key and midpoint: its two ends and the vertices
+// opposite it in the uniform mesh of its level (one on the boundary), each list greatest first.
+struct SplitSurroundings {
+    std::vector<std::tuple<double, double, double>> ends, opposite;
+};
+
+inline SplitSurroundings split_surroundings(const glm::dvec3& end_a, const glm::dvec3& end_b, std::span<const glm::dvec3> opposite) {
+    auto greatest_first = [](std::vector<std::tuple<double, double, double>>& points) { std::sort(points.rbegin(), points.rend()); };
+    SplitSurroundings s;
+    s.ends = {{end_a.x, end_a.y, end_a.z}, {end_b.x, end_b.y, end_b.z}};
+    for (const glm::dvec3& p : opposite) s.opposite.emplace_back(p.x, p.y, p.z);
+    greatest_first(s.ends);
+    greatest_first(s.opposite);
+    return s;
+}
+
+// Whether a split with surroundings x comes before one with y (same key and midpoint): the greater
+// ends, then the greater opposite vertices (a longer list first where one is the start of the other).
+inline bool surroundings_come_before(const SplitSurroundings& x, const SplitSurroundings& y) {
+    if (x.ends != y.ends) return x.ends > y.ends;
+    return x.opposite > y.opposite;
 }
 
 }  // namespace rgb

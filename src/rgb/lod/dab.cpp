@@ -1,6 +1,7 @@
 #include "rgb/lod/dab.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -20,15 +21,17 @@ double strength(double falloff, double d, double radius) {
     return band <= 0.0 ? 1.0 : std::clamp((radius - d) / band, 0.0, 1.0);
 }
 
+// Base-space points by x, then y, then z: an order that no storage changes.
+bool position_less(const glm::dvec3& x, const glm::dvec3& y) {
+    if (x.x != y.x) return x.x < y.x;
+    if (x.y != y.y) return x.y < y.y;
+    return x.z < y.z;
+}
+
 // Oriented normal (unnormalised), from the corners rotated to start at the lexicographically smallest,
 // so that the input's corner rotation cannot flip a borderline facing test.
 glm::dvec3 canonical_normal(std::array<glm::dvec3, 3> c) {
-    auto less = [](const glm::dvec3& x, const glm::dvec3& y) {
-        if (x.x != y.x) return x.x < y.x;
-        if (x.y != y.y) return x.y < y.y;
-        return x.z < y.z;
-    };
-    const auto first = std::min_element(c.begin(), c.end(), less);
+    const auto first = std::min_element(c.begin(), c.end(), position_less);
     std::rotate(c.begin(), first, c.end());
     return glm::cross(c[1] - c[0], c[2] - c[0]);
 }
@@ -51,21 +54,24 @@ std::vector<std::uint32_t> facing_base_faces(const Mesh& mesh, const Sphere& bal
     const std::vector<std::uint32_t> meeting = base.face_index().faces_meeting_sphere(ball.centre, ball.radius);
     auto in_ball = [&](std::uint32_t f) { return std::binary_search(meeting.begin(), meeting.end(), f); };
     auto facing = [&](std::uint32_t f) { return glm::dot(canonical_normal(base.corner_positions(f)), view) < 0.0; };
-    // The hit: the facing base face nearest the centre (ties: the smaller corner positions, not ids).
+    // The hit: the facing base face nearest the centre; on an exact tie of distances (a centre on a
+    // vertex or edge several facing faces share), the one with the least corners (sorted, compared by
+    // x, y, z), not the least id, so that the input's face order cannot choose which faces are reached.
     std::optional<std::uint32_t> hit;
     double best = 0.0;
+    std::array<glm::dvec3, 3> best_corners{};
+    auto corners_less = [](const std::array<glm::dvec3, 3>& x, const std::array<glm::dvec3, 3>& y) {
+        return std::lexicographical_compare(x.begin(), x.end(), y.begin(), y.end(), position_less);
+    };
     for (std::uint32_t f : meeting) {
         if (!facing(f)) continue;
         auto c = base.corner_positions(f);
-        std::sort(c.begin(), c.end(), [](const glm::dvec3& x, const glm::dvec3& y) {
-            if (x.x != y.x) return x.x < y.x;
-            if (x.y != y.y) return x.y < y.y;
-            return x.z < y.z;
-        });
+        std::sort(c.begin(), c.end(), position_less);
         const double d = distance_to_triangle(ball.centre, c[0], c[1], c[2]);
-        if (!hit || d < best) {
+        if (!hit || d < best || (d == best && corners_less(c, best_corners))) {
             hit = f;
             best = d;
+            best_corners = c;
         }
     }
     std::vector<std::uint32_t> reached;

@@ -9,6 +9,7 @@
 #include <glm/geometric.hpp>
 
 #include "rgb/lod/refine.h"
+#include "rgb/lod/request_steps.h"
 #include "rgb/mesh/mesh.h"
 #include "rgb/values/hierarchy_evaluator.h"
 
@@ -16,26 +17,8 @@ namespace rgb {
 
 namespace {
 
-// Collects the faces each operator creates, and counts.
-class DetailLog : public MeshObserver {
-public:
-    explicit DetailLog(Mesh& mesh) : mesh_(mesh) { mesh_.add_observer(this); }
-    ~DetailLog() override { mesh_.remove_observer(this); }
-    DetailLog(const DetailLog&) = delete;
-    DetailLog& operator=(const DetailLog&) = delete;
-
-    void vertex_added(const Mesh&, VertexId, VertexId, VertexId) override { ++report.splits; }
-    void vertex_removed(const Mesh&, VertexId) override { ++report.removals; }
-    void face_added(const Mesh&, FaceId f) override { added.push_back(f); }
-
-    std::vector<FaceId> added;
-    LodReport report;
-
-private:
-    Mesh& mesh_;
-};
-
-std::vector<FaceId> region_faces(const Mesh& mesh, const std::optional<Sphere>& sphere) {
+// The faces to start from: those meeting the ball, or all of them.
+std::vector<FaceId> faces_meeting_or_all(const Mesh& mesh, const std::optional<Sphere>& sphere) {
     if (sphere) return faces_meeting(mesh, *sphere);
     std::vector<FaceId> faces;
     faces.reserve(mesh.num_faces());
@@ -46,15 +29,13 @@ std::vector<FaceId> region_faces(const Mesh& mesh, const std::optional<Sphere>& 
 void check(const DetailRequest& r) {
     if (!r.value) throw std::invalid_argument("a detail request needs a criterion");
     if (!(r.threshold >= 0.0) || !std::isfinite(r.threshold)) throw std::invalid_argument("a detail threshold must be finite and not negative");
-    if (r.sphere && !(r.sphere->radius > 0.0 && std::isfinite(r.sphere->radius) && std::isfinite(r.sphere->centre.x) &&
-                      std::isfinite(r.sphere->centre.y) && std::isfinite(r.sphere->centre.z)))
-        throw std::invalid_argument("a request's sphere needs a finite centre and a positive radius");
+    check_sphere(r.sphere);
 }
 
 void coarsen(Mesh& mesh, const DetailRequest& r) {
     std::vector<VertexId> doomed;
     std::vector<bool> seen(mesh.vertex_capacity(), false);
-    for (FaceId f : region_faces(mesh, r.sphere))
+    for (FaceId f : faces_meeting_or_all(mesh, r.sphere))
         for (VertexId v : mesh.face_vertices(f)) {
             if (mesh.level(v) == 0 || seen[v.idx]) continue;
             seen[v.idx] = true;
@@ -62,15 +43,11 @@ void coarsen(Mesh& mesh, const DetailRequest& r) {
             const PointStencil s = parent_stencil(mesh.base(), mesh.address(v));
             if (!(r.value(s.ends[0], s.ends[1]) > r.threshold)) doomed.push_back(v);
         }
-    // Finest first; a vertex may be gone already as a dependent of another (removals add no vertices,
-    // so a live slot is still the same vertex). The result does not depend on the order.
-    std::stable_sort(doomed.begin(), doomed.end(), [&](VertexId a, VertexId b) { return mesh.level(a) > mesh.level(b); });
-    for (VertexId v : doomed)
-        if (mesh.is_live(v)) remove_with_dependents(mesh, v);
+    remove_finest_first(mesh, std::move(doomed));
 }
 
-void refine(Mesh& mesh, const DetailRequest& r, DetailLog& log) {
-    std::vector<FaceId> stack = region_faces(mesh, r.sphere);
+void refine(Mesh& mesh, const DetailRequest& r, OperatorLog& log, LodReport& report) {
+    std::vector<FaceId> stack = faces_meeting_or_all(mesh, r.sphere);
     while (!stack.empty()) {
         const FaceId f = stack.back();
         stack.pop_back();
@@ -83,14 +60,14 @@ void refine(Mesh& mesh, const DetailRequest& r, DetailLog& log) {
             if (r.sphere && !segment_meets_sphere(mesh.base_space_position(a), mesh.base_space_position(b), *r.sphere)) continue;
             if (!(r.value(mesh.address(a), mesh.address(b)) > r.threshold)) continue;
             if (t.level >= r.max_level) {
-                log.report.level_cap_bound = true;
+                report.level_cap_bound = true;
                 continue;
             }
             log.added.clear();
             refine_edge(mesh, h);
             stack.insert(stack.end(), log.added.begin(), log.added.end());
             if (mesh.num_faces() > r.max_triangles) {
-                log.report.budget_bound = true;
+                report.budget_bound = true;
                 return;
             }
             break;  // f is gone; the faces that replaced it are on the stack
@@ -170,10 +147,13 @@ LodReport apply_detail_request(Mesh& mesh, const DetailRequest& r) {
         driver.run();
         return driver.report();
     }
-    DetailLog log(mesh);
+    OperatorLog log(mesh);
+    LodReport report;
     if (r.kind != RequestKind::Refine) coarsen(mesh, r);
-    if (r.kind != RequestKind::Coarsen) refine(mesh, r, log);
-    return log.report;
+    if (r.kind != RequestKind::Coarsen) refine(mesh, r, log, report);
+    report.splits = log.splits;
+    report.removals = log.removals;
+    return report;
 }
 
 }  // namespace rgb

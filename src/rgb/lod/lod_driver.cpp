@@ -9,6 +9,7 @@
 
 #include "rgb/lod/canonical_order.h"
 #include "rgb/lod/refine.h"
+#include "rgb/lod/request_steps.h"
 #include "rgb/mesh/operators.h"
 #include "rgb/values/loop_geometry.h"
 
@@ -16,11 +17,8 @@ namespace rgb {
 
 // Taken from the back (finest first), each is removable when its turn comes.
 std::vector<VertexId> LodDriver::detail_coarsest_first(const Mesh& mesh) {
-    std::vector<std::vector<VertexId>> by_level(kMaxLevel + 1);
-    for (VertexId v : mesh.vertices())
-        if (mesh.level(v) > 0) by_level[static_cast<std::size_t>(mesh.level(v))].push_back(v);
     std::vector<VertexId> detail;
-    for (const auto& level : by_level) detail.insert(detail.end(), level.begin(), level.end());
+    for (const std::vector<VertexId>& level : vertices_above_by_level(mesh, 0)) detail.insert(detail.end(), level.begin(), level.end());
     return detail;
 }
 
@@ -70,7 +68,20 @@ void LodDriver::grow_vertex_arrays(std::size_t size) {
 
 bool LodDriver::outranks(const Candidate& x, const Candidate& y) const {
     if (x.key != y.key) return x.key > y.key;  // the midpoints only for equal keys
-    return comes_before(x.key, midpoint(x.a, x.b), y.key, midpoint(y.a, y.b));
+    const glm::dvec3 mx = midpoint(x.a, x.b), my = midpoint(y.a, y.b);
+    if (mx != my) return comes_before(x.key, mx, y.key, my);
+    if ((x.a == y.a && x.b == y.b) || (x.a == y.b && x.b == y.a)) return false;  // one edge queued twice
+    return surroundings_come_before(surroundings(x), surroundings(y));
+}
+
+// Only for two edges with one midpoint (coincident vertices): rare, so computed from the addresses
+// when asked rather than stored.
+SplitSurroundings LodDriver::surroundings(const Candidate& c) const {
+    const BaseMesh& base = mesh_.base();
+    const PointStencil stencil = parent_stencil(base, rgb::midpoint(base, mesh_.address(c.a), mesh_.address(c.b)));
+    std::vector<glm::dvec3> opposite;
+    for (const SurfacePoint& p : stencil.opposite) opposite.push_back(base_space_position(base, p));
+    return split_surroundings(base_space_[c.a.idx], base_space_[c.b.idx], opposite);
 }
 
 std::uint64_t LodDriver::edge_key(VertexId a, VertexId b, int level) {

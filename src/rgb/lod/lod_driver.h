@@ -116,6 +116,7 @@ private:
     // The vertices above the base, coarsest first.
     static std::vector<VertexId> detail_coarsest_first(const Mesh& mesh);
     bool outranks(const Candidate& x, const Candidate& y) const;
+    SplitSurroundings surroundings(const Candidate& c) const;
     // An edge of the mesh, with its level (the finer end's).
     struct Edge {
         VertexId a, b;

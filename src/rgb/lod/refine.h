@@ -13,8 +13,9 @@ bool refine_edge(Mesh& mesh, HalfedgeId h);
 // The edge whose refinement moves face f one step towards a finer level: a green edge of f's level
 // for green and red faces, and for a blue face the coarse edge of the red beyond its red edge.
 HalfedgeId edge_refining_face(const Mesh& mesh, FaceId f);
-// Uniform refinement until every triangle is green of level `level` (the mesh becomes Σ_level,
-// assuming no vertex is finer than that).
+// Refines level by level until no face is coarser than `level`: the whole-surface refine request,
+// and the fast path of a whole-surface set after its coarsening. Finer vertices already there stay
+// (a refine removes nothing); without any, the mesh becomes Σ_level.
 void refine_uniform(Mesh& mesh, int level);
 // Removes v after removing, finest first, every vertex that cannot exist without it (its finer
 // neighbours, recursively). Returns the number of vertices removed.

@@ -4,12 +4,14 @@
 #include <array>
 #include <cmath>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 
 #include <glm/geometric.hpp>
 
 #include "rgb/lod/refine.h"
+#include "rgb/lod/request_steps.h"
 #include "rgb/mesh/base_face_index.h"
 #include "rgb/mesh/face_location.h"
 #include "rgb/mesh/mesh.h"
@@ -22,28 +24,8 @@ namespace rgb {
 
 namespace {
 
-// Counts splits and removals and hands the faces each operator creates to the request's work list.
-class RequestLog : public MeshObserver {
-public:
-    explicit RequestLog(Mesh& mesh) : mesh_(mesh) { mesh_.add_observer(this); }
-    ~RequestLog() override { mesh_.remove_observer(this); }
-    RequestLog(const RequestLog&) = delete;
-    RequestLog& operator=(const RequestLog&) = delete;
-
-    void vertex_added(const Mesh&, VertexId, VertexId, VertexId) override {
-        ++stats.splits;
-    }
-    void vertex_removed(const Mesh&, VertexId) override { ++stats.removals; }
-    void face_added(const Mesh&, FaceId f) override { added.push_back(f); }
-
-    std::vector<FaceId> added;
-    RequestStats stats;
-
-private:
-    Mesh& mesh_;
-};
-
-// Per-call visit marks over face or vertex slots that cost O(1) to reset.
+// Visit marks over face or vertex slots that cost O(1) to reset. Each function below that marks has
+// instances of its own, so that none resets the marks of another while they are in use.
 class Marks {
 public:
     void start(std::size_t capacity) {
@@ -203,11 +185,9 @@ std::vector<FaceId> seed_faces(const Mesh& mesh, std::span<const std::uint32_t> 
     return seeds;
 }
 
-thread_local Marks face_marks;
-thread_local Marks vertex_marks;
-
 // The live faces whose parent triangles meet the region: breadth over face adjacency from the seeds.
 std::vector<FaceId> region_faces(const Mesh& mesh, const RegionTest& test, std::vector<FaceId> stack) {
+    thread_local Marks face_marks;
     std::vector<FaceId> region;
     face_marks.start(mesh.face_capacity());
     while (!stack.empty()) {
@@ -302,7 +282,8 @@ std::size_t reserve_for(Mesh& mesh, const LevelRequest& request) {
 // is searched once; after that, each pass works off the faces still short of their level and the
 // faces the splits create.
 // `known` holds the region's faces (or more) if a search just found them.
-void refine_region(Mesh& mesh, const LevelRequest& request, RequestLog& log, std::optional<std::vector<FaceId>> known) {
+void refine_region(Mesh& mesh, const LevelRequest& request, OperatorLog& log, std::optional<std::vector<FaceId>> known) {
+    thread_local Marks face_marks, vertex_marks;
     const Bands bands(mesh, request, 0.0);
     int finest = request.level;
     for (const LevelBand& band : request.taper) finest = std::max(finest, band.level);
@@ -344,6 +325,10 @@ void refine_region(Mesh& mesh, const LevelRequest& request, RequestLog& log, std
             }
             const std::uint32_t b = base_face_of(mesh, f);
             const int target = bands.level(b, [&] { return parent_triangle(mesh, f, b); }, true);
+            // A face of level L is a triangle of ΣL or a red or blue piece of one, and a triangle of ΣL
+            // is in an RGB mesh only as one of the four its parent was split into (and so on up): every
+            // ancestor of f in Σj, j < L, is split into four, so a target <= L finds all the midpoints
+            // it asks for here present.
             if (target <= level) continue;  // kNone included
             log.added.clear();
             refine_edge(mesh, edge_refining_face(mesh, f));
@@ -358,7 +343,11 @@ void refine_region(Mesh& mesh, const LevelRequest& request, RequestLog& log, std
 }
 
 // Whether v lies on an edge of a triangle of level >= the level some band meeting that triangle asks
-// for: its parent triangles are the triangles of Σ(level(v)-1) with v on an edge.
+// for: its parent triangles are the triangles of Σ(level(v)-1) with v on an edge. Those two are all
+// that need testing: every triangle of a finer Σj with v on its boundary lies inside one of them
+// (around v the finer levels only subdivide its parent triangles), so if such a triangle meets a ball,
+// so does the parent holding it; and a parent is itself a triangle of Σj, j = level(v) - 1, with
+// j >= N exactly when level(v) > N.
 bool above_its_level(const Mesh& mesh, const Bands& bands, VertexId v) {
     const PointStencil s = parent_stencil(mesh.base(), mesh.address(v));
     for (const SurfacePoint& o : s.opposite) {
@@ -374,6 +363,7 @@ std::optional<std::vector<FaceId>> coarsen_region(Mesh& mesh, const LevelRequest
     // triangle's size of it.
     const Bands probe(mesh, request, 0.0);
     const Bands bands(mesh, request, std::ldexp(mesh.base().longest_edge(), -probe.coarsest()));
+    thread_local Marks vertex_marks;
     std::vector<VertexId> doomed;
     vertex_marks.start(mesh.vertex_capacity());
     std::vector<FaceId> searched = region_faces(mesh, bands.outer(), starting_faces(mesh, bands.outer(), request));
@@ -382,22 +372,13 @@ std::optional<std::vector<FaceId>> coarsen_region(Mesh& mesh, const LevelRequest
             if (mesh.level(v) > bands.coarsest() && vertex_marks.mark(v.idx) && above_its_level(mesh, probe, v))
                 doomed.push_back(v);
     if (doomed.empty()) return searched;
-    // Finest first; a vertex may already be gone as the dependent of another. Removals add no
-    // vertices, so a slot that is live again is the same vertex.
-    std::stable_sort(doomed.begin(), doomed.end(), [&](VertexId a, VertexId b) { return mesh.level(a) > mesh.level(b); });
-    for (VertexId v : doomed)
-        if (mesh.is_live(v)) remove_with_dependents(mesh, v);
+    remove_finest_first(mesh, std::move(doomed));
     return std::nullopt;
 }
 
 // Everything above level N goes, finest first: each is then removable. Returns the removals.
 std::size_t coarsen_everywhere(Mesh& mesh, int level) {
-    std::vector<std::vector<VertexId>> by_level;
-    for (VertexId v : mesh.vertices())
-        if (mesh.level(v) > level) {
-            by_level.resize(std::max<std::size_t>(by_level.size(), static_cast<std::size_t>(mesh.level(v)) + 1));
-            by_level[static_cast<std::size_t>(mesh.level(v))].push_back(v);
-        }
+    const std::vector<std::vector<VertexId>> by_level = vertices_above_by_level(mesh, level);
     std::size_t removed = 0;
     for (auto it = by_level.rbegin(); it != by_level.rend(); ++it)
         for (VertexId v : *it) {
@@ -419,10 +400,7 @@ void check(const LevelRequest& request) {
         if (!request.sphere || request.kind == RequestKind::Set || !(band.radius > 0.0 && std::isfinite(band.radius)))
             throw std::invalid_argument("a taper needs a refine or coarsen request with a sphere, and positive radii");
     }
-    if (request.sphere && !(request.sphere->radius > 0.0 && std::isfinite(request.sphere->radius) &&
-                            std::isfinite(request.sphere->centre.x) && std::isfinite(request.sphere->centre.y) &&
-                            std::isfinite(request.sphere->centre.z)))
-        throw std::invalid_argument("a request's sphere needs a finite centre and a positive radius");
+    check_sphere(request.sphere);
 }
 
 }  // namespace
@@ -438,11 +416,14 @@ RequestStats apply_request(Mesh& mesh, const LevelRequest& request) {
         stats.splits = mesh.num_vertices() - before;
         return stats;
     }
-    RequestLog log(mesh);
+    OperatorLog log(mesh);
     std::optional<std::vector<FaceId>> searched;
     if (request.kind != RequestKind::Refine) searched = coarsen_region(mesh, request);
     if (request.kind != RequestKind::Coarsen) refine_region(mesh, request, log, std::move(searched));
-    return log.stats;
+    RequestStats stats;
+    stats.splits = log.splits;
+    stats.removals = log.removals;
+    return stats;
 }
 
 std::vector<FaceId> faces_meeting(const Mesh& mesh, const Sphere& sphere) {
@@ -456,12 +437,6 @@ RequestStats set_level(Mesh& mesh, int level, std::optional<Sphere> sphere) {
     request.level = level;
     request.sphere = sphere;
     return apply_request(mesh, request);
-}
-
-RequestStats apply_requests(Mesh& mesh, std::span<const LevelRequest> requests) {
-    RequestStats total;
-    for (const LevelRequest& r : requests) total += apply_request(mesh, r);
-    return total;
 }
 
 double estimated_triangles(const Mesh& mesh, const LevelRequest& request) {

@@ -18,7 +18,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
-#include <span>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -71,7 +70,6 @@ RequestStats set_level(Mesh& mesh, int level, std::optional<Sphere> sphere = std
 // Throws std::invalid_argument for a level outside 0..kMaxLevel or a non-positive or non-finite
 // radius. Costs in proportion to the faces in and around the region, never to the mesh.
 RequestStats apply_request(Mesh& mesh, const LevelRequest& request);
-RequestStats apply_requests(Mesh& mesh, std::span<const LevelRequest> requests);
 
 // The live faces whose parent triangles (the triangles of Σl they are pieces of) meet the ball, found
 // the way requests find their region: in proportion to the faces in and around it.

@@ -7,11 +7,7 @@
 
 namespace rgbtest {
 
-namespace {
-
-// Distance from p to the triangle by a different route than the core's: the nearest point of the
-// plane if it falls inside, else the nearest point of the three edges.
-double distance_to(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+double oracle_distance_to_triangle(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
     const glm::dvec3 n = glm::cross(b - a, c - a);
     const double nn = glm::dot(n, n);
     if (nn > 0.0) {
@@ -27,8 +23,6 @@ double distance_to(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b
     };
     return std::min({segment(a, b), segment(b, c), segment(c, a)});
 }
-
-}  // namespace
 
 RequestOracle::RequestOracle(const UniformLoopOracle& oracle) : oracle_(oracle) {
     const std::size_t n = oracle.num_identities(oracle.levels());
@@ -60,7 +54,7 @@ std::set<Identity> RequestOracle::base() const {
 }
 
 bool RequestOracle::meets(const IdentityTriangle& t, const OracleBall& ball) const {
-    return distance_to(ball.centre, base_space_[t[0]], base_space_[t[1]], base_space_[t[2]]) <= ball.radius;
+    return oracle_distance_to_triangle(ball.centre, base_space_[t[0]], base_space_[t[1]], base_space_[t[2]]) <= ball.radius;
 }
 
 std::vector<IdentityTriangle> RequestOracle::parent_triangles(Identity v) const {

@@ -19,6 +19,10 @@ struct OracleBall {
     double radius;
 };
 
+// Distance from p to the triangle (a, b, c) by a different route than the core's: the nearest point
+// of the plane if it falls inside, else the nearest point of the three edges.
+double oracle_distance_to_triangle(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c);
+
 class RequestOracle {
 public:
     explicit RequestOracle(const UniformLoopOracle& oracle);

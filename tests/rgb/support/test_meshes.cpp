@@ -224,6 +224,22 @@ TestMesh with_shuffled_vertices(const TestMesh& m, std::uint32_t seed) {
     return r;
 }
 
+TestMesh torus(int around, int tube) {
+    TestMesh m{"torus" + std::to_string(around) + "x" + std::to_string(tube), {}, {}};
+    for (int i = 0; i < around; ++i)
+        for (int j = 0; j < tube; ++j) {
+            const double u = 2.0 * std::numbers::pi * i / around, v = 2.0 * std::numbers::pi * j / tube;
+            m.positions.push_back({(1.0 + 0.4 * std::cos(v)) * std::cos(u), (1.0 + 0.4 * std::cos(v)) * std::sin(u), 0.4 * std::sin(v)});
+        }
+    const auto at = [&](int i, int j) { return static_cast<std::uint32_t>((i % around) * tube + (j % tube)); };
+    for (int i = 0; i < around; ++i)
+        for (int j = 0; j < tube; ++j) {
+            m.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+            m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+        }
+    return m;
+}
+
 TestMesh single_triangle() { return {"triangle", {{0, 0, 0}, {1, 0, 0}, {0.3, 0.9, 0.1}}, {{0, 1, 2}}}; }
 
 TestMesh bunny() {

@@ -42,6 +42,9 @@ TestMesh perforated_slab(int nx, int ny, int every);
 TestMesh grid_with_holes(int nx, int ny, int every);
 // One triangle (0, 1, 2): every edge on the boundary.
 TestMesh single_triangle();
+// A plain ring torus (radii 1 and 0.4), `around` segments around its axis and `tube` around its tube,
+// not jittered: the smooth closed surface of genus 1 that users refine to a tolerance.
+TestMesh torus(int around, int tube);
 // assets/bunny.obj: 1839 vertices, 3674 triangles, closed.
 TestMesh bunny();
 
