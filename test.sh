@@ -24,6 +24,8 @@ build_and_test() {
     start=$SECONDS
     # shellcheck disable=SC2086 # ctest_args holds several words
     (cd "$dir" && ctest --output-on-failure --no-tests=error -j2 $ctest_args) || failed=1
+    # A skipped test fails the run unless it names missing hardware or a missing privilege.
+    tests/check_skips.sh "$dir" || failed=1
     echo "=== $dir: tested in $((SECONDS - start)) s"
   else
     echo "=== $dir: build failed" >&2
