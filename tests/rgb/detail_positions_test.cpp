@@ -14,6 +14,7 @@
 #include <set>
 #include <vector>
 
+#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
 #include "rgb/lod/requests.h"

@@ -7,6 +7,8 @@
 #include <numbers>
 #include <random>
 
+#include <glm/geometric.hpp>
+
 #include "rgb/mesh/mesh.h"
 #include "rgb/lod/requests.h"
 #include "rgb/values/loop_geometry.h"
