@@ -83,8 +83,10 @@ int run_lods(std::span<const std::string> args) {
     if (!criterion) throw UsageError("needs --levels L1,L2,..., --budgets T1,T2,... or --tolerances E1,E2,...");
     const std::optional<std::string> positions = arguments.value("--positions");
     if (positions) parse_positions(*positions);  // a bad value is a usage error before the load
-    const auto limit = static_cast<std::size_t>(
-        arguments.integer("--max-triangles", static_cast<long>(rgbio::default_triangle_limit()), 1, 4'000'000'000l));
+    // Every level's error is measured at the tolerance criterion's samples, whatever the criterion, so
+    // the default bounds memory as a tolerance request's (triangle_limit.h).
+    const auto limit = static_cast<std::size_t>(arguments.integer(
+        "--max-triangles", static_cast<long>(rgbio::default_triangle_limit(rgbio::MemoryUse::Tolerance)), 1, 4'000'000'000l));
     const std::string& input = arguments.positional()[0];
     const rgbio::OutputFormat format = rgbio::output_format(*output);
 
