@@ -6,7 +6,9 @@ RGBSUB_BUILD_PACKAGES=(
   libglfw3-dev libglm-dev libimgui-dev libstb-dev libtinyobjloader-dev libtinygltf-dev libosmesa6-dev libgl-dev
   libgtest-dev libbenchmark-dev libopenmesh-dev libeigen3-dev
   # src/io/formats reads FBX, COLLADA, 3DS, STL, OFF and the other formats Assimp has importers for.
-  libassimp-dev
+  # Debian 12's Assimp CMake package links /usr/lib/x86_64-linux-gnu/libz.so, which only zlib1g-dev
+  # installs, and libassimp-dev does not depend on it (found by tests/fresh_debian_check.sh).
+  libassimp-dev zlib1g-dev
 )
 # Only the test suite uses these: a virtual display for the editor window (xvfb-run needs xauth),
 # input injection, reference meshes, clang with its libFuzzer runtime for the loader's fuzz target,
