@@ -31,7 +31,12 @@ editor_pid=
 trap 'if [[ -n "$editor_pid" ]]; then kill "$editor_pid" 2>/dev/null || true; fi; rm -rf "$work"' EXIT
 cp "$bunny" "$work/mesh.obj"
 export XDG_STATE_HOME="$work/state"  # the recovery copy stays in here
-export XDG_CONFIG_HOME="$work/config"  # the settings too: a fresh start, the user's own untouched
+export XDG_CONFIG_HOME="$work/config"  # the settings too, the user's own untouched
+# The sections above File start folded, as a user's settings can keep them, so that rows added to
+# them do not move File's "..." button that step 4 clicks.
+mkdir -p "$XDG_CONFIG_HOME/rgbsub"
+printf 'panel.section.%s = false\n' Brush 'Whole mesh' 'Detail by size, accuracy, view' \
+  >"$XDG_CONFIG_HOME/rgbsub/settings.txt"
 
 "$rgbsub" edit "$work/mesh.obj" >"$work/editor.log" 2>&1 &
 editor_pid=$!
@@ -95,8 +100,9 @@ key ctrl+y
 save_as redone_with_y
 # The file browser, by a quick click on the panel's "..." with the pointer left resting there, shows
 # without further input, and a tapped Esc closes it (else it would keep Ctrl+Q from the editor).
-# The panel's rows do not move with the document's state, but a row added above moves the button.
-xdotool mousemove --window "$window" 1183 733 click 1
+# The panel's rows do not move with the document's state; only the crease rows, outside any section,
+# lie above the button.
+xdotool mousemove --window "$window" 1197 262 click 1
 sleep 1
 browser_shown=$(browser_area_dark)
 key Escape
