@@ -1,68 +1,26 @@
-// The dense mesh M: a double-precision BVH of ours for every answer (dense_surface.h says why and how).
+// The dense mesh M: a double-precision BVH of ours for every answer (dense_surface.h says why and how);
+// this file searches it, surface_tree.cpp builds it.
 #include "detail/dense_surface.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
 #include <glm/geometric.hpp>
 
+#include "detail/surface_tree.h"
 #include "rgb/support/parallel.h"
 
 namespace rgbdetail {
 
 namespace dense_surface_internal {
 
-constexpr std::uint32_t kLeafSize = 4;
 constexpr double kCoordinateLimit = 1e30;
 // A line counts as parallel to a triangle when |sin| of its angle with the plane is below this.
 constexpr double kParallelSine = 1e-14;
-
-// The BVH as built (binary, median splits): count > 0 is a leaf of triangles [first, first + count)
-// in the reordered arrays; else an inner node whose children are this index + 1 and `right`. Boxes
-// are padded (Engine::box_pad) so that a triangle's rounded intersection or closest point is never
-// outside them.
-struct BuildNode {
-    glm::dvec3 lo{0.0};
-    glm::dvec3 hi{0.0};
-    std::uint32_t right = 0;
-    std::uint32_t first = 0;
-    std::uint32_t count = 0;
-};
-
-// The BVH as searched: each node holds its two children's boxes, in float rounded outwards, and
-// what each child is (a node, a leaf of `count` triangles from slot `index`, or nothing), so that a
-// visit reads one cache line; on a million triangles the searches are bound by cache misses.
-enum ChildKind : std::uint8_t { kNoChild = 0, kInnerChild = 1, kLeafChild = 2 };
-struct alignas(64) Node {
-    float lo[2][3];
-    float hi[2][3];
-    std::uint32_t index[2];
-    std::uint8_t kind[2];
-    std::uint8_t count[2];
-
-    glm::dvec3 box_lo(int c) const { return {lo[c][0], lo[c][1], lo[c][2]}; }
-    glm::dvec3 box_hi(int c) const { return {hi[c][0], hi[c][1], hi[c][2]}; }
-};
-
-float round_down(double x) {
-    float f = static_cast<float>(x);
-    if (static_cast<double>(f) > x) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
-    return f;
-}
-float round_up(double x) {
-    float f = static_cast<float>(x);
-    if (static_cast<double>(f) < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
-    return f;
-}
-
-struct Corners {
-    glm::dvec3 p0, p1, p2;
-};
 
 bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
@@ -173,40 +131,10 @@ struct StackEntry {
     double key;
 };
 
-// The BVH build's progress in triangle visits: each node visits its triangles once (its box, then
-// nth_element), so the whole visits about n (1 + log2(n / kLeafSize)). Told every kVisitsPerReport
-// visits, a few milliseconds, so that a stop is heard at once on a million triangles too.
-class BuildProgress {
-public:
-    static constexpr std::uint64_t kVisitsPerReport = 65536;
-    // The recursion's share of the build; the compaction and the triangles' corners in the tree's
-    // order take the rest, a report before each.
-    static constexpr double kTreeShare = 0.9;
-
-    BuildProgress(const ProgressFunction& progress, std::uint32_t triangles) : progress_(progress) {
-        const double n = std::max(1.0, static_cast<double>(triangles));
-        total_ = n * (1.0 + std::max(0.0, std::ceil(std::log2(n / kLeafSize))));
-    }
-
-    void visited(std::uint32_t triangles) {
-        visits_ += triangles;
-        if (visits_ < next_) return;
-        next_ = visits_ + kVisitsPerReport;
-        report_share(progress_, kTreeShare * std::min(1.0, static_cast<double>(visits_) / total_));
-    }
-
-private:
-    const ProgressFunction& progress_;
-    double total_ = 1.0;
-    std::uint64_t visits_ = 0, next_ = kVisitsPerReport;
-};
-
 struct Engine {
     std::vector<glm::dvec3> positions;
     std::vector<rgb::Triangle> triangles;
-    std::vector<Node> nodes;
-    std::vector<Corners> corners;          // by slot (BVH order)
-    std::vector<std::uint32_t> original;   // slot -> triangle index
+    SurfaceTree tree;
     double box_pad = 0.0;
     double scale = 0.0;                    // largest coordinate magnitude of M (at least its extent / 2)
     glm::dvec3 lo{0.0}, hi{0.0};           // M's bounding box
@@ -216,120 +144,12 @@ struct Engine {
     Engine& operator=(const Engine&) = delete;
     ~Engine() = default;
 
-    void build_bvh(const ProgressFunction& progress);
-    std::uint32_t build_node(std::vector<BuildNode>& built, std::vector<std::uint32_t>& order,
-                             const std::vector<glm::dvec3>& centroids, std::uint32_t begin, std::uint32_t end,
-                             BuildProgress& progress) const;
-    std::uint32_t compact(const std::vector<BuildNode>& built, std::uint32_t i);
-
     void line_search(const glm::dvec3& o, const glm::dvec3& d, double bound, LineBest& best) const;
     bool line_box(const glm::dvec3& box_lo, const glm::dvec3& box_hi, const glm::dvec3& o, const glm::dvec3& inv,
                   const bool zero[3], double lim, double& key) const;
     std::optional<SurfaceHit> ray(const glm::dvec3& o, const glm::dvec3& d, double max_distance) const;
     SurfaceHit closest(const glm::dvec3& p) const;
 };
-
-void Engine::build_bvh(const ProgressFunction& progress) {
-    const auto n = static_cast<std::uint32_t>(triangles.size());
-    BuildProgress build_progress(progress, n);
-    std::vector<glm::dvec3> centroids(n);
-    for (std::uint32_t f = 0; f < n; ++f) {
-        const rgb::Triangle& t = triangles[f];
-        centroids[f] = (positions[t[0]] + positions[t[1]] + positions[t[2]]) / 3.0;
-    }
-    std::vector<std::uint32_t> order(n);
-    std::iota(order.begin(), order.end(), 0u);
-    std::vector<BuildNode> built;
-    built.reserve(2 * (n / kLeafSize + 1));
-    build_node(built, order, centroids, 0, n, build_progress);
-    nodes.reserve(built.size() / 2 + 1);
-    if (built[0].count > 0) {
-        // One leaf: a root whose only child it is.
-        Node root{};
-        for (int a = 0; a < 3; ++a) {
-            root.lo[0][a] = round_down(built[0].lo[a]);
-            root.hi[0][a] = round_up(built[0].hi[a]);
-        }
-        root.index[0] = built[0].first;
-        root.kind[0] = kLeafChild;
-        root.count[0] = static_cast<std::uint8_t>(built[0].count);
-        nodes.push_back(root);
-    } else {
-        report_share(progress, BuildProgress::kTreeShare);
-        compact(built, 0);
-    }
-    report_share(progress, 0.95);
-    corners.resize(n);
-    for (std::uint32_t s = 0; s < n; ++s) {
-        const rgb::Triangle& t = triangles[order[s]];
-        corners[s] = {positions[t[0]], positions[t[1]], positions[t[2]]};
-    }
-    original = std::move(order);
-}
-
-std::uint32_t Engine::compact(const std::vector<BuildNode>& built, std::uint32_t i) {
-    const auto index = static_cast<std::uint32_t>(nodes.size());
-    nodes.emplace_back();
-    const std::uint32_t children[2] = {i + 1, built[i].right};
-    for (int c = 0; c < 2; ++c) {
-        const BuildNode& child = built[children[c]];
-        Node& node = nodes[index];
-        for (int a = 0; a < 3; ++a) {
-            node.lo[c][a] = round_down(child.lo[a]);
-            node.hi[c][a] = round_up(child.hi[a]);
-        }
-        if (child.count > 0) {
-            node.index[c] = child.first;
-            node.kind[c] = kLeafChild;
-            node.count[c] = static_cast<std::uint8_t>(child.count);
-        } else {
-            node.kind[c] = kInnerChild;
-            const std::uint32_t inner = compact(built, children[c]);
-            nodes[index].index[c] = inner;
-        }
-    }
-    return index;
-}
-
-std::uint32_t Engine::build_node(std::vector<BuildNode>& built, std::vector<std::uint32_t>& order,
-                                 const std::vector<glm::dvec3>& centroids, std::uint32_t begin, std::uint32_t end,
-                                 BuildProgress& progress) const {
-    progress.visited(end - begin);
-    const auto index = static_cast<std::uint32_t>(built.size());
-    built.emplace_back();
-    glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
-    glm::dvec3 clo = lo, chi = hi;
-    for (std::uint32_t i = begin; i < end; ++i) {
-        const rgb::Triangle& t = triangles[order[i]];
-        for (std::uint32_t v : t) {
-            lo = glm::min(lo, positions[v]);
-            hi = glm::max(hi, positions[v]);
-        }
-        clo = glm::min(clo, centroids[order[i]]);
-        chi = glm::max(chi, centroids[order[i]]);
-    }
-    built[index].lo = lo - glm::dvec3(box_pad);
-    built[index].hi = hi + glm::dvec3(box_pad);
-    if (end - begin <= kLeafSize) {
-        built[index].first = begin;
-        built[index].count = end - begin;
-        return index;
-    }
-    const glm::dvec3 extent = chi - clo;
-    int axis = 0;
-    if (extent.y > extent[axis]) axis = 1;
-    if (extent.z > extent[axis]) axis = 2;
-    const std::uint32_t mid = begin + (end - begin) / 2;
-    std::nth_element(order.begin() + begin, order.begin() + mid, order.begin() + end,
-                     [&](std::uint32_t a, std::uint32_t b) {
-                         const double ca = centroids[a][axis], cb = centroids[b][axis];
-                         return ca != cb ? ca < cb : a < b;
-                     });
-    build_node(built, order, centroids, begin, mid, progress);
-    const std::uint32_t right = build_node(built, order, centroids, mid, end, progress);
-    built[index].right = right;
-    return index;
-}
 
 // The line's interval through the (padded) box, if it meets |t| <= lim; key is the smallest |t| in it.
 bool Engine::line_box(const glm::dvec3& box_lo, const glm::dvec3& box_hi, const glm::dvec3& o, const glm::dvec3& inv,
@@ -374,14 +194,14 @@ void Engine::line_search(const glm::dvec3& o, const glm::dvec3& d, double bound,
         if (entry.kind == kLeafChild) {
             for (std::uint32_t s = entry.index; s < entry.index + entry.count; ++s) {
                 double t, u, v;
-                if (!intersect_line(o, d, corners[s], t, u, v)) continue;
+                if (!intersect_line(o, d, tree.corners[s], t, u, v)) continue;
                 if (std::abs(t) > bound) continue;
-                const std::uint32_t tri = original[s];
+                const std::uint32_t tri = tree.original[s];
                 if (!best.found || line_before(t, tri, best.t, best.triangle)) best = {true, t, tri, s, u, v};
             }
             continue;
         }
-        const Node& node = nodes[entry.index];
+        const Node& node = tree.nodes[entry.index];
         lim = best.found ? std::abs(best.t) : bound;
         double keys[2];
         bool hit[2];
@@ -399,7 +219,7 @@ std::optional<SurfaceHit> Engine::ray(const glm::dvec3& o, const glm::dvec3& d, 
     LineBest best;
     line_search(o, d, max_distance, best);
     if (!best.found) return std::nullopt;
-    const Corners& c = corners[best.slot];
+    const Corners& c = tree.corners[best.slot];
     SurfaceHit hit;
     hit.point = c.p0 + best.u * (c.p1 - c.p0) + best.v * (c.p2 - c.p0);
     hit.triangle = best.triangle;
@@ -427,13 +247,13 @@ SurfaceHit Engine::closest(const glm::dvec3& p) const {
             for (std::uint32_t s = entry.index; s < entry.index + entry.count; ++s) {
                 // The triangle's own (padded) box first: most of a leaf's triangles are farther than
                 // the best.
-                const Corners& c = corners[s];
+                const Corners& c = tree.corners[s];
                 const glm::dvec3 q = glm::clamp(p, glm::min(glm::min(c.p0, c.p1), c.p2) - box_pad,
                                                 glm::max(glm::max(c.p0, c.p1), c.p2) + box_pad);
                 const glm::dvec3 r = p - q;
                 if (glm::dot(r, r) > best.d2 * (1.0 + 1e-12)) continue;
                 const PointOnTriangle candidate = closest_on_triangle(p, c);
-                const std::uint32_t tri = original[s];
+                const std::uint32_t tri = tree.original[s];
                 if (candidate.d2 < best.d2 || (candidate.d2 == best.d2 && tri < best_triangle)) {
                     best = candidate;
                     best_triangle = tri;
@@ -441,7 +261,7 @@ SurfaceHit Engine::closest(const glm::dvec3& p) const {
             }
             continue;
         }
-        const Node& node = nodes[entry.index];
+        const Node& node = tree.nodes[entry.index];
         double keys[2];
         for (int c = 0; c < 2; ++c)
             keys[c] = node.kind[c] == kNoChild ? std::numeric_limits<double>::infinity() : box_d2(node, c);
@@ -572,7 +392,7 @@ DenseSurface::DenseSurface(std::vector<glm::dvec3> positions, std::vector<rgb::T
                         std::abs(hi.z), glm::length(hi - lo)});
     // Rounding in a triangle's intersection or closest point is far below this.
     m.box_pad = 1e-10 * m.scale + std::numeric_limits<double>::denorm_min();
-    m.build_bvh(progress);
+    m.tree = dsi::build_surface_tree(m.positions, m.triangles, m.box_pad, progress);
     report_share(progress, 1.0);
 }
 
