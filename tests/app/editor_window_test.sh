@@ -43,10 +43,17 @@ editor_pid=$!
 window=$(timeout 30 xdotool search --sync --name '^mesh.obj - rgbsub$' | head -n 1)
 sleep 1
 
-# Save, then keep a copy: the editor saves over its own file.
+# Save, then keep a copy: the editor saves over its own file. A save asked for while a job (a stroke
+# or an undo) still runs is refused, so on a slow machine it is asked again until the file is
+# replaced (a save writes a new file and renames it over the old one: a new inode).
 save_as() {
-  xdotool key --clearmodifiers ctrl+s
-  sleep 1
+  local before
+  before=$(stat -c '%i %y' "$work/mesh.obj")
+  for _ in $(seq 30); do
+    xdotool key --clearmodifiers ctrl+s
+    sleep 1
+    [[ "$(stat -c '%i %y' "$work/mesh.obj")" != "$before" ]] && break
+  done
   cp "$work/mesh.obj" "$work/$1.obj"
 }
 key() {

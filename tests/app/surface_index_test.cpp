@@ -20,6 +20,15 @@
 namespace app {
 namespace {
 
+// Under the sanitizers (test code at -O0) the slot-by-slot picks were the largest part of the editor
+// tests; there a quarter of the rays are cast, after the same edits, which is what the sanitizers
+// watch. The Release build casts them all.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr int kRayDivisor = 4;
+#else
+constexpr int kRayDivisor = 1;
+#endif
+
 std::optional<SurfaceHit> pick_every_slot(const render::SurfaceGeometry& geometry, const Ray& ray) {
     std::optional<SurfaceHit> best;
     for (std::uint32_t slot = 0; slot < geometry.face_slots(); ++slot) {
@@ -36,6 +45,7 @@ void expect_same_picks(const rgb::Mesh& mesh, const render::SurfaceGeometry& geo
     const render::BoundingSphere bounds = geometry.bounds(mesh);
     std::normal_distribution<double> normal;
     int hits = 0;
+    rays /= kRayDivisor;
     for (int i = 0; i < rays; ++i) {
         const glm::dvec3 direction = glm::normalize(glm::dvec3(normal(rng), normal(rng), normal(rng)));
         const glm::dvec3 eye = glm::dvec3(bounds.centre) + 3.0 * static_cast<double>(bounds.radius) * direction;
