@@ -26,6 +26,7 @@
 #include "support/budget_run.h"
 #include "support/identity_tracker.h"
 #include "support/request_oracle.h"
+#include "support/same_mesh.h"
 #include "support/test_meshes.h"
 #include "support/triangle_keys.h"
 #include "support/uniform_loop_oracle.h"
@@ -208,15 +209,6 @@ TEST(BudgetMeaning, CoincidentVerticesLeaveNoTieToTheFaceOrder) {
 }
 
 // The vertex set as base-space points: storage free.
-std::set<std::tuple<double, double, double>> vertices_in_base_space(const rgb::Mesh& mesh) {
-    std::set<std::tuple<double, double, double>> points;
-    for (rgb::VertexId v : mesh.vertices()) {
-        const glm::dvec3 p = mesh.base_space_position(v);
-        points.insert({p.x, p.y, p.z});
-    }
-    return points;
-}
-
 // The triangles as sets of base-space corners, blind to orientation.
 std::multiset<std::array<std::tuple<double, double, double>, 3>> unoriented_triangles(const rgb::Mesh& mesh) {
     std::multiset<std::array<std::tuple<double, double, double>, 3>> triangles;
@@ -269,7 +261,7 @@ TEST(BudgetMeaning, ReversedOrientationKeepsTheVerticesNotAlwaysTheDiagonals) {
     for (rgb::Triangle& t : mirrored.triangles) std::swap(t[1], t[2]);
     std::size_t other_diagonals = 0;
     auto compare = [&](const rgb::Mesh& a, const rgb::Mesh& b, const std::string& what) {
-        EXPECT_EQ(vertices_in_base_space(a), vertices_in_base_space(b)) << what;
+        EXPECT_EQ(base_space_vertex_set(a), base_space_vertex_set(b)) << what;
         const auto ta = unoriented_triangles(a), tb = unoriented_triangles(b);
         EXPECT_TRUE(only_diagonals_differ(ta, tb)) << what;
         EXPECT_TRUE(rgb::check_normal_form(b).ok()) << what;

@@ -97,16 +97,6 @@ double mean_edge(const TestMesh& base) {
     return sum / static_cast<double>(base.triangles.size());
 }
 
-using BasePoint = std::tuple<double, double, double>;
-std::set<BasePoint> base_space_vertices(const rgb::Mesh& mesh) {
-    std::set<BasePoint> points;
-    for (rgb::VertexId v : mesh.vertices()) {
-        const glm::dvec3 p = mesh.base_space_position(v);
-        points.insert({p.x, p.y, p.z});
-    }
-    return points;
-}
-
 double unit_random(std::mt19937_64& random) { return static_cast<double>(random() >> 11) * 0x1.0p-53; }
 
 // A ball around a random point of a random base face, up to about an edge across, with a random
@@ -156,14 +146,14 @@ TEST_P(CommutingRequests, RequestsFarApartCommuteWhateverTheirKind) {
         rgb::Mesh ab = start, ba = start;
         // Each request changes vertices only on the faces of its reach.
         for (const AnyRequest* r : {&a, &b}) {
-            const std::set<BasePoint> before = base_space_vertices(ab);
+            const std::set<BaseSpacePoint> before = base_space_vertex_set(ab);
             apply_any(ab, *r);
-            const std::set<BasePoint> after = base_space_vertices(ab);
-            std::set<BasePoint> difference;
+            const std::set<BaseSpacePoint> after = base_space_vertex_set(ab);
+            std::set<BaseSpacePoint> difference;
             std::set_symmetric_difference(before.begin(), before.end(), after.begin(), after.end(),
                                           std::inserter(difference, difference.end()));
             changed += !difference.empty();
-            for (const BasePoint& p : difference)
+            for (const BaseSpacePoint& p : difference)
                 EXPECT_TRUE(on_faces(base, r == &a ? reach_a : reach_b, {std::get<0>(p), std::get<1>(p), std::get<2>(p)}));
         }
         apply_any(ba, b);

@@ -171,16 +171,6 @@ void converge(rgb::ViewLod& lod) {
     ASSERT_TRUE(lod.converged());
 }
 
-using Point = std::tuple<double, double, double>;
-std::set<Point> base_space_points(const rgb::Mesh& mesh) {
-    std::set<Point> s;
-    for (rgb::VertexId v : mesh.vertices()) {
-        const glm::dvec3 p = mesh.base_space_position(v);
-        s.insert({p.x, p.y, p.z});
-    }
-    return s;
-}
-
 // What a converged mesh promises for the view.
 void expect_settled(const rgb::Mesh& mesh, const rgb::ViewLod& lod) {
     std::size_t kept_for_others = 0;
@@ -211,7 +201,7 @@ void expect_holds_the_request(const rgb::Mesh& mesh, const TestMesh& base, const
     r.value = rgb::ScreenCriterion(request.shared_base(), view).edge_value();
     r.threshold = kPixels;
     rgb::apply_detail_request(request, r);
-    const std::set<Point> wanted = base_space_points(request), held = base_space_points(mesh);
+    const std::set<BaseSpacePoint> wanted = base_space_vertex_set(request), held = base_space_vertex_set(mesh);
     EXPECT_TRUE(std::includes(held.begin(), held.end(), wanted.begin(), wanted.end()));
     EXPECT_GT(request.num_faces(), base.triangles.size());
 }
