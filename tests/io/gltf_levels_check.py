@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
-"""Reads gltf_levels_example's refined meshes back by hand (the glTF with json/base64/struct, the OBJ
-line by line: no glTF or OBJ library) and checks that each glTF has the OBJ's triangles corner for
-corner: position, exact texture coordinate (v flipped to 1 - v) and vertex colour, as 32-bit floats,
-with one glTF vertex per distinct (v, vt) pair of the OBJ (vertices split along UV seams).
+"""Reads gltf_levels_example's refined meshes back by hand (the glTF with json/base64/struct: no glTF
+library) and checks that each glTF has the triangles of the mesh in memory corner for corner, as the
+example took them from the core (its .corners file, no writer of ours in between): position, exact
+texture coordinate (v flipped to 1 - v) and vertex colour, as 32-bit floats, with one glTF vertex per
+distinct (vertex, UV) pair of the mesh (vertices split along UV seams).
 
 usage: gltf_levels_check.py PATH/TO/gltf_levels_example
 """
@@ -22,35 +23,28 @@ def canonical(triangle):
     return tuple(triangle[(first + i) % 3] for i in range(3))
 
 
-def obj_triangles(path):
-    """The OBJ's triangles as corners (position, (u, 1 - v), colour or None), its number of v lines
-    and of distinct (v, vt) pairs."""
-    positions, colours, texcoords, triangles, pairs = [], [], [], [], set()
+def mesh_triangles(path):
+    """The mesh's triangles as corners (position, (u, 1 - v), colour), its number of vertices and of
+    distinct (vertex, UV) pairs."""
+    triangles, vertices, pairs, corners = [], set(), set(), []
     with open(path, encoding="utf-8") as f:
         for line in f:
             words = line.split()
-            if not words:
-                continue
-            if words[0] == "v":
-                assert len(words) in (4, 7), line
-                positions.append(tuple(f32(float(x)) for x in words[1:4]))
-                colours.append(tuple(f32(float(x)) for x in words[4:7]) if len(words) == 7 else None)
-            elif words[0] == "vt":
-                u, v = float(words[1]), float(words[2])
-                texcoords.append((f32(u), f32(1 - v)))
-            elif words[0] == "f":
-                assert len(words) == 4, line
-                corners = []
-                for corner in words[1:]:
-                    v, t = (int(i) - 1 for i in corner.split("/")[:2])
-                    pairs.add((v, t))
-                    corners.append((positions[v], texcoords[t], colours[v]))
+            assert len(words) == 9, line
+            slot, numbers = int(words[0]), [float(x) for x in words[1:]]
+            u, v = numbers[3], numbers[4]
+            vertices.add(slot)
+            pairs.add((slot, u, v))
+            corners.append((tuple(f32(x) for x in numbers[0:3]), (f32(u), f32(1 - v)), tuple(f32(x) for x in numbers[5:8])))
+            if len(corners) == 3:
                 triangles.append(canonical(corners))
-    return collections.Counter(triangles), len(positions), len(pairs)
+                corners = []
+    assert not corners, path
+    return collections.Counter(triangles), len(vertices), len(pairs)
 
 
 def gltf_triangles(doc, buffer, coloured):
-    """The glTF's triangles as obj_triangles gives them, and its number of vertices."""
+    """The glTF's triangles as mesh_triangles gives them, and its number of vertices."""
     primitive = doc["meshes"][0]["primitives"]
     attributes = primitive[0]["attributes"]
     expect("attributes", sorted(attributes), ["COLOR_0"] * coloured + ["NORMAL", "POSITION", "TEXCOORD_0"])
@@ -70,7 +64,7 @@ def gltf_triangles(doc, buffer, coloured):
 
 def same_triangles(name, got, wanted):
     if got != wanted:
-        raise AssertionError("%s: %d triangles differ from the OBJ's (e.g. %r)" %
+        raise AssertionError("%s: %d triangles differ from the mesh's (e.g. %r)" %
                              (name, sum((got - wanted).values()), next(iter(got - wanted), None)))
 
 
@@ -78,10 +72,10 @@ def main():
     with tempfile.TemporaryDirectory() as folder:
         subprocess.run([sys.argv[1], folder], check=True)
         for stem in ("adaptive", "limit"):
-            wanted, obj_vertices, pairs = obj_triangles(os.path.join(folder, stem + ".obj"))
+            wanted, vertices, pairs = mesh_triangles(os.path.join(folder, stem + ".corners"))
             # Refined past level 0 (the grid has 20 vertices and 24 triangles), with seams to split.
-            assert obj_vertices > 100 and sum(wanted.values()) > 24 * 4, (stem, obj_vertices)
-            assert pairs > obj_vertices, (stem, pairs, obj_vertices)
+            assert vertices > 100 and sum(wanted.values()) > 24 * 4, (stem, vertices)
+            assert pairs > vertices, (stem, pairs, vertices)
             for name, load in ((stem + ".gltf", load_gltf), (stem + ".glb", load_glb)):
                 got, gltf_vertices = gltf_triangles(*load(os.path.join(folder, name)), True)
                 expect(name + " vertices (one per (v, vt) pair)", gltf_vertices, pairs)

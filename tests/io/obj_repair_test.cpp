@@ -1,6 +1,7 @@
 // Non-manifold input is cut into a manifold the core accepts: bow-ties split into one vertex per
 // fan, non-manifold edges cut apart, by rules that look only at file order (manifold_repair.h).
 // Expected meshes are worked out by hand from those rules.
+#include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -59,6 +60,37 @@ TEST(ObjRepair, EdgeOfThreeFacesKeepsTheFirstOppositePairAndCutsTheThird) {
                                         "the other way, and the other faces got their own copies of the edge's vertices (2 "
                                         "vertices added)"}));
     expect_core_accepts(mesh);
+}
+
+// docs/requests.md: non-manifold repair goes by file order, so there the face order changes the base
+// mesh itself. The three faces of the test above, the last first: now the face with apex 4 (running
+// 2->1) is first and the face with apex 5 is the first later one running 1->2, so those two stay joined
+// and the face with apex 3 is cut off.
+TEST(ObjRepair, FaceOrderDecidesWhichFacesOfANonManifoldEdgeStayJoined) {
+    // Whether the faces with apexes (positions) p and q share an edge after the repair.
+    auto joined = [](const LoadedMesh& mesh, const glm::dvec3& p, const glm::dvec3& q) {
+        auto face_with = [&](const glm::dvec3& apex) {
+            for (const rgb::Triangle& t : mesh.triangles)
+                for (std::uint32_t v : t)
+                    if (mesh.positions[v] == apex) return t;
+            ADD_FAILURE() << "no face with that apex";
+            return rgb::Triangle{};
+        };
+        const rgb::Triangle a = face_with(p), b = face_with(q);
+        int shared = 0;
+        for (std::uint32_t v : a) shared += static_cast<int>(std::count(b.begin(), b.end(), v));
+        return shared == 2;
+    };
+    const glm::dvec3 apex3(0, 1, 0), apex4(0, -1, 0), apex5(0, 0, 1);
+    const std::string vertices = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\n";
+    const LoadedMesh first = read_obj_text(vertices + "f 1 2 3\nf 2 1 4\nf 1 2 5\n", "first.obj");
+    const LoadedMesh last = read_obj_text(vertices + "f 2 1 4\nf 1 2 5\nf 1 2 3\n", "last.obj");
+    EXPECT_TRUE(joined(first, apex3, apex4));
+    EXPECT_FALSE(joined(first, apex5, apex4));
+    EXPECT_TRUE(joined(last, apex5, apex4));
+    EXPECT_FALSE(joined(last, apex3, apex4));
+    expect_core_accepts(first);
+    expect_core_accepts(last);
 }
 
 TEST(ObjRepair, FinOnAClosedSurfaceIsCutOffAndTheSurfaceStaysClosed) {

@@ -8,9 +8,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <map>
 #include <random>
 #include <set>
+#include <string>
 #include <tuple>
 #include <vector>
 
@@ -19,10 +21,12 @@
 
 #include "rgb/lod/lod_driver.h"
 #include "rgb/lod/requests.h"
+#include "rgb/mesh/invariants.h"
 #include "rgb/mesh/mesh.h"
 #include "support/budget_run.h"
 #include "support/identity_tracker.h"
 #include "support/request_oracle.h"
+#include "support/same_mesh.h"
 #include "support/test_meshes.h"
 #include "support/triangle_keys.h"
 #include "support/uniform_loop_oracle.h"
@@ -205,15 +209,6 @@ TEST(BudgetMeaning, CoincidentVerticesLeaveNoTieToTheFaceOrder) {
 }
 
 // The vertex set as base-space points: storage free.
-std::set<std::tuple<double, double, double>> vertices_in_base_space(const rgb::Mesh& mesh) {
-    std::set<std::tuple<double, double, double>> points;
-    for (rgb::VertexId v : mesh.vertices()) {
-        const glm::dvec3 p = mesh.base_space_position(v);
-        points.insert({p.x, p.y, p.z});
-    }
-    return points;
-}
-
 // The triangles as sets of base-space corners, blind to orientation.
 std::multiset<std::array<std::tuple<double, double, double>, 3>> unoriented_triangles(const rgb::Mesh& mesh) {
     std::multiset<std::array<std::tuple<double, double, double>, 3>> triangles;
@@ -224,26 +219,65 @@ std::multiset<std::array<std::tuple<double, double, double>, 3>> unoriented_tria
     return triangles;
 }
 
+// Whether the two triangulations of one vertex set differ only by quadrilaterals cut by the other
+// diagonal: every triangle found in one alone pairs, across an edge, with another found there alone,
+// and the quadrilateral the two make is cut the other way in the other triangulation.
+testing::AssertionResult only_diagonals_differ(const std::multiset<std::array<std::tuple<double, double, double>, 3>>& a,
+                                               const std::multiset<std::array<std::tuple<double, double, double>, 3>>& b) {
+    using Corner = std::tuple<double, double, double>;
+    using Triangle = std::array<Corner, 3>;
+    std::set<Triangle> a_only, b_only, explained_a, explained_b;
+    std::set_difference(a.begin(), a.end(), b.begin(), b.end(), std::inserter(a_only, a_only.end()));
+    std::set_difference(b.begin(), b.end(), a.begin(), a.end(), std::inserter(b_only, b_only.end()));
+    auto sorted = [](Triangle t) {
+        std::sort(t.begin(), t.end());
+        return t;
+    };
+    for (const Triangle& t : a_only)
+        for (const Triangle& u : a_only)
+            for (int i = 0; i < 3; ++i) {
+                // t's edge (t[i], t[i+1]) shared with u, and the corners off that edge.
+                const Corner p = t[i], q = t[(i + 1) % 3], r = t[(i + 2) % 3];
+                if (&t == &u || std::count(u.begin(), u.end(), p) == 0 || std::count(u.begin(), u.end(), q) == 0) continue;
+                const Corner s = *std::find_if(u.begin(), u.end(), [&](const Corner& c) { return c != p && c != q; });
+                const Triangle x = sorted({r, s, p}), y = sorted({r, s, q});
+                if (b_only.count(x) && b_only.count(y)) {
+                    explained_a.insert({t, u});
+                    explained_b.insert({x, y});
+                }
+            }
+    if (explained_a != a_only || explained_b != b_only)
+        return testing::AssertionFailure() << a_only.size() - explained_a.size() << " and " << b_only.size() - explained_b.size()
+                                           << " triangles differ otherwise";
+    return testing::AssertionSuccess() << a_only.size() << " triangles in other diagonals";
+}
+
 // docs/requests.md: reversing every face's orientation keeps the vertices of level requests and
-// budgets, but the normal form's diagonal is chiral, so the triangulation can change (and does here).
+// budgets, but the normal form's diagonal is chiral, so the triangulation can change (and does here):
+// exactly by quadrilaterals cut by the other diagonal, the reversed result in the normal form too.
 TEST(BudgetMeaning, ReversedOrientationKeepsTheVerticesNotAlwaysTheDiagonals) {
     const TestMesh base = icosahedron();
     TestMesh mirrored = base;
     for (rgb::Triangle& t : mirrored.triangles) std::swap(t[1], t[2]);
     std::size_t other_diagonals = 0;
+    auto compare = [&](const rgb::Mesh& a, const rgb::Mesh& b, const std::string& what) {
+        EXPECT_EQ(base_space_vertex_set(a), base_space_vertex_set(b)) << what;
+        const auto ta = unoriented_triangles(a), tb = unoriented_triangles(b);
+        EXPECT_TRUE(only_diagonals_differ(ta, tb)) << what;
+        EXPECT_TRUE(rgb::check_normal_form(b).ok()) << what;
+        other_diagonals += ta != tb;
+    };
     for (std::size_t budget : {47, 130, 333, 700}) {
         rgb::Mesh a = make_rgb_mesh(base), b = make_rgb_mesh(mirrored);
         run_budget(a, budget, rgb::kMaxLevel);
         run_budget(b, budget, rgb::kMaxLevel);
-        EXPECT_EQ(vertices_in_base_space(a), vertices_in_base_space(b)) << "budget " << budget;
-        other_diagonals += unoriented_triangles(a) != unoriented_triangles(b);
+        compare(a, b, "budget " + std::to_string(budget));
     }
     for (double radius : {0.3, 0.8}) {
         rgb::Mesh a = make_rgb_mesh(base), b = make_rgb_mesh(mirrored);
         rgb::set_level(a, 3, rgb::Sphere{base.positions[2], radius});
         rgb::set_level(b, 3, rgb::Sphere{base.positions[2], radius});
-        EXPECT_EQ(vertices_in_base_space(a), vertices_in_base_space(b)) << "level 3 in a ball of radius " << radius;
-        other_diagonals += unoriented_triangles(a) != unoriented_triangles(b);
+        compare(a, b, "level 3 in a ball of radius " + std::to_string(radius));
     }
     EXPECT_GT(other_diagonals, 0u) << "the normal form is chiral: some mirrored result must pick other diagonals";
 }

@@ -1,9 +1,17 @@
 // Detail size (rgb/lod/lod_criteria.h with the edge length in the uniform mesh of each edge's level):
 // results against the meaning computed independently on the uniform Loop oracle's identities, over
 // the whole surface and in a ball, refine, coarsen and set; checked edge by edge; and the same mesh
-// whatever the input's storage.
+// whatever the input's storage. On random lengths, what the documentation says and what it must not:
+// green edges within L, diagonals of the displayed mesh beyond it.
+#include <algorithm>
+#include <limits>
+#include <map>
 #include <optional>
+#include <random>
 #include <set>
+#include <vector>
+
+#include <glm/geometric.hpp>
 
 #include <gtest/gtest.h>
 
@@ -11,6 +19,7 @@
 #include "rgb/lod/requests.h"
 #include "rgb/mesh/invariants.h"
 #include "rgb/mesh/mesh.h"
+#include "rgb/values/loop_geometry.h"
 #include "support/clear_threshold.h"
 #include "support/identity_tracker.h"
 #include "support/request_oracle.h"
@@ -67,6 +76,7 @@ public:
         return requests_.without(current, doomed);
     }
     std::set<Identity> base() const { return requests_.base(); }
+    void set_threshold(double threshold) { threshold_ = threshold; }
 
 private:
     const UniformLoopOracle& oracle_;
@@ -117,6 +127,76 @@ TEST_P(DetailSize, OverTheWholeSurfaceNoEdgeIsLongerThanAsked) {
                     EXPECT_LE(oracle_edge_length(oracle, x, y), length) << "edge " << x << "-" << y << " of level " << t.level;
                 }
         }
+}
+
+// What the documentation says of --max-edge L, pinned on random lengths: every edge of the result that
+// is an edge of the uniform mesh of its level is at most L in that mesh, and the mesh is the meaning's
+// (as coarse as that allows); "no edge longer than L" read on the displayed mesh would be false: the
+// diagonals of red and blue triangles (edges of no uniform mesh) can be longer. Edges are classified,
+// and the displayed positions modelled, from the oracle's identities alone (spec §4.6: a vertex shows
+// p^k, k the largest of its own level and the least level of its edges; a diagonal from a vertex of
+// level l+1 has level l), not from the core's edge types.
+TEST(DetailSizeMeaning, RandomLengthsBoundGreenEdgesButNotDiagonals) {
+    std::mt19937_64 random(31);
+    int longer_diagonals = 0;
+    for (const TestMesh& base : {icosahedron(), bipyramid(7), grid(4, 3)}) {
+        const UniformLoopOracle oracle(base.positions, base.triangles, kCap);
+        DetailMeaning meaning(oracle, 0.0);
+        std::set<std::pair<Identity, Identity>> uniform_edges;  // of every Σj, j <= kCap
+        double shortest = std::numeric_limits<double>::infinity(), longest = 0.0;
+        for (int j = 0; j <= kCap; ++j)
+            for (const IdentityTriangle& t : oracle.faces(j))
+                for (int i = 0; i < 3; ++i) {
+                    uniform_edges.insert(std::minmax(t[i], t[(i + 1) % 3]));
+                    if (j == kCap) continue;
+                    const double length = oracle_edge_length(oracle, t[i], t[(i + 1) % 3]);
+                    shortest = std::min(shortest, length);
+                    longest = std::max(longest, length);
+                }
+        for (int trial = 0; trial < 3; ++trial) {
+            const double unit = static_cast<double>(random() >> 11) * 0x1.0p-53;
+            const double length = shortest + unit * (longest - shortest);
+            SCOPED_TRACE(base.name + ", L = " + std::to_string(length));
+            rgb::Mesh mesh = make_rgb_mesh(base);
+            IdentityTracker ids(mesh, oracle);
+            apply_max_edge(mesh, rgb::RequestKind::Set, length, std::nullopt);
+            meaning.set_threshold(length);
+            EXPECT_EQ(ids.live_identities(), meaning.refined(meaning.base(), std::nullopt));
+            // Each edge once, with its level: an edge of Σj has an end of level j (both of level 0 in
+            // Σ0); a diagonal joins a vertex of level l+1 to the opposite corner and has level l.
+            struct Edge {
+                Identity x, y;
+                bool uniform;
+                int level;
+            };
+            std::vector<Edge> edges;
+            std::map<Identity, int> least_edge_level;
+            for (rgb::FaceId f : mesh.faces())
+                for (int i = 0; i < 3; ++i) {
+                    const rgb::HalfedgeId h = rgb::Mesh::halfedge(f, i);
+                    const Identity x = ids.identity(mesh.from_vertex(h)), y = ids.identity(mesh.to_vertex(h));
+                    const bool uniform = uniform_edges.count(std::minmax(x, y)) > 0;
+                    const int level = std::max(oracle.level(x), oracle.level(y)) - (uniform ? 0 : 1);
+                    for (Identity v : {x, y}) {
+                        const auto [it, fresh] = least_edge_level.emplace(v, level);
+                        if (!fresh) it->second = std::min(it->second, level);
+                    }
+                    if (mesh.is_boundary(h) || x < y) edges.push_back({x, y, uniform, level});
+                }
+            auto displayed = [&](Identity v) { return oracle.position(std::max(oracle.level(v), least_edge_level.at(v)), v); };
+            // The model is the mesh's display (so the diagonals below are the displayed ones).
+            for (rgb::VertexId v : mesh.vertices())
+                EXPECT_LE(glm::distance(displayed(ids.identity(v)), rgb::displayed_position(mesh, v)), 1e-12) << "vertex " << ids.identity(v);
+            for (const Edge& e : edges) {
+                if (e.uniform && e.level < kCap) {
+                    EXPECT_LE(oracle_edge_length(oracle, e.x, e.y), length) << "edge " << e.x << "-" << e.y;
+                }
+                if (!e.uniform && glm::distance(displayed(e.x), displayed(e.y)) > length) ++longer_diagonals;
+            }
+        }
+    }
+    // The same data refutes "no edge longer than L" on the displayed mesh.
+    EXPECT_GT(longer_diagonals, 0);
 }
 
 TEST_P(DetailSize, RequestsInABallFollowTheirMeaning) {

@@ -1,8 +1,8 @@
 #pragma once
 // Screen-space detail (docs/requests.md "Detail by size, accuracy and view"): the value of an edge of Σl for
 // one camera is its length in pixels in the uniform Loop mesh of its level, or 0 where it cannot be
-// seen: when a ball around its midpoint as wide as the edge lies outside the view frustum, or when
-// every base face it lies in faces away from the eye. It depends on the edge and the camera alone,
+// seen: when a ball around its midpoint with the edge's length as radius lies outside the view
+// frustum, or when every base face it lies in faces away from the eye (screen_detail.cpp's margin). It depends on the edge and the camera alone,
 // so `render --screen-lod` is a canonical request, and the editor's continuous mode (view_lod.h)
 // judges edges by the same numbers.
 #include <memory>

@@ -61,4 +61,13 @@ testing::AssertionResult same_mesh(const rgb::Mesh& a, const rgb::Mesh& b) {
     return testing::AssertionSuccess();
 }
 
+std::set<BaseSpacePoint> base_space_vertex_set(const rgb::Mesh& mesh) {
+    std::set<BaseSpacePoint> points;
+    for (rgb::VertexId v : mesh.vertices()) {
+        const glm::dvec3 p = mesh.base_space_position(v);
+        points.insert({p.x, p.y, p.z});
+    }
+    return points;
+}
+
 }  // namespace rgbtest
