@@ -8,10 +8,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
-#include <fstream>
 #include <iostream>
 #include <limits>
 #include <numbers>
@@ -70,7 +68,6 @@ Soup uv_sphere(int rings, int segments, double radius = 1.0) {
 glm::dvec3 torus_point(double u, double v, double big, double small) {
     return {(big + small * std::cos(v)) * std::cos(u), (big + small * std::cos(v)) * std::sin(u), small * std::sin(v)};
 }
-glm::dvec3 torus_normal(double u, double v) { return {std::cos(v) * std::cos(u), std::cos(v) * std::sin(u), std::sin(v)}; }
 
 Soup torus(int nu, int nv, double big = 1.0, double small = 0.35) {
     Soup s;
@@ -667,83 +664,6 @@ TEST(DenseSurface, RejectsBadInput) {
     ASSERT_TRUE(tiny && huge);
     EXPECT_TRUE(same(*tiny, *huge));
     EXPECT_EQ(tiny->distance, 1.0);
-}
-
-std::string processor_name() {
-    std::ifstream in("/proc/cpuinfo");
-    std::string line;
-    while (std::getline(in, line))
-        if (line.rfind("model name", 0) == 0) {
-            const std::size_t colon = line.find(':');
-            return colon == std::string::npos ? line : line.substr(colon + 2);
-        }
-    return "unknown processor";
-}
-
-// Throughput on a torus of 1M triangles with 1M queries each, on all cores (a log, not a bound),
-// with a few answers checked against the oracle.
-// Under AddressSanitizer (the RGBSUB_SANITIZE build, test code at -O0) a tenth of it, to stay well
-// inside the ctest timeout.
-#if defined(__SANITIZE_ADDRESS__)
-constexpr int kThroughputScale = 10;
-#else
-constexpr int kThroughputScale = 1;
-#endif
-
-TEST(DenseSurface, ThroughputOnAMillionTriangles) {
-    using clock = std::chrono::steady_clock;
-    auto seconds = [](clock::duration d) { return std::chrono::duration<double>(d).count(); };
-    const Soup m = kThroughputScale == 1 ? torus(1000, 500) : torus(1000 / kThroughputScale, 500);
-    ASSERT_EQ(m.triangles.size(), 1000000u / kThroughputScale);
-    const clock::time_point t0 = clock::now();
-    const DenseSurface surface = surface_of(m);
-    const double build = seconds(clock::now() - t0);
-
-    const std::size_t n = 1000000 / kThroughputScale;
-    std::mt19937_64 rng(99);
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
-    std::vector<glm::dvec3> origins(n), directions(n), points(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        const double u = 2 * std::numbers::pi * unit(rng), v = 2 * std::numbers::pi * unit(rng);
-        const glm::dvec3 normal = torus_normal(u, v);
-        // A limit point near M along a rough normal, as remeshing asks; every 10th is far off.
-        const double offset = (i % 10 == 0 ? 0.5 : 0.02) * (2 * unit(rng) - 1);
-        origins[i] = torus_point(u, v, 1.0, 0.35) + offset * normal;
-        directions[i] = glm::normalize(normal + 0.1 * random_unit(rng));
-        points[i] = torus_point(u, v, 1.0, 0.35) + 0.05 * (2 * unit(rng) - 1) * normal + 0.01 * random_unit(rng);
-    }
-    const double max_distance = 0.05;
-    const clock::time_point t1 = clock::now();
-    const std::vector<std::optional<SurfaceHit>> hits = surface.nearest_ray_hits(origins, directions, max_distance);
-    const double rays = seconds(clock::now() - t1);
-    const clock::time_point t2 = clock::now();
-    const std::vector<SurfaceHit> closest = surface.closest_points(points);
-    const double closest_time = seconds(clock::now() - t2);
-    const clock::time_point t3 = clock::now();
-    const std::vector<SurfaceHit> projected = surface.projections(origins, directions, max_distance);
-    const double project_time = seconds(clock::now() - t3);
-    const auto found = std::count_if(hits.begin(), hits.end(), [](const auto& h) { return h.has_value(); });
-
-    std::cout << "[ perf ] processor: " << processor_name() << ", " << std::thread::hardware_concurrency()
-              << " hardware threads\n"
-              << "[ perf ] build (double BVH) of " << m.triangles.size() << " triangles: " << build << " s\n"
-              << "[ perf ] nearest_ray_hits: " << n << " lines (" << found << " hit, search distance " << max_distance
-              << "): " << rays << " s, " << static_cast<double>(n) / rays << " rays/s\n"
-              << "[ perf ] closest_points: " << n << " points: " << closest_time << " s, "
-              << static_cast<double>(n) / closest_time << " points/s\n"
-              << "[ perf ] projections: " << n << " (ray else closest point): " << project_time << " s, "
-              << static_cast<double>(n) / project_time << " per s\n";
-    EXPECT_GT(found, static_cast<long>(n / 2));
-    // Spot checks against the oracle.
-    for (std::size_t i = 0; i < n; i += n / 40) {
-        const std::optional<OracleHit> want =
-            oracle_ray(m, origins[i], glm::normalize(directions[i]), max_distance, 0.0);
-        ASSERT_EQ(hits[i].has_value(), want.has_value()) << i;
-        if (want) {
-            EXPECT_LE(glm::length(hits[i]->point - want->point), 1e-9) << i;
-        }
-        EXPECT_NEAR(closest[i].distance, oracle_closest(m, points[i]).distance, 1e-12) << i;
-    }
 }
 
 }  // namespace dense_surface_test
