@@ -29,6 +29,17 @@ if [[ ! -x "$root/bin/bash" ]]; then
   time debootstrap --variant=minbase bookworm "$root" http://deb.debian.org/debian
 fi
 cp /etc/resolv.conf "$root/etc/resolv.conf"
+# A host behind a TLS-inspecting proxy trusts the proxy's certificate authority through its own
+# local certificates (/usr/local/share/ca-certificates); the root gets the same ones, which
+# ca-certificates adds to its bundle when ./test.sh installs it, and Node.js (npm, for the glTF
+# validator) is pointed at that bundle as the host's is. Without a proxy there is nothing to copy.
+local_cas=(/usr/local/share/ca-certificates/*.crt)
+node_ca_env=()
+if [[ -e "${local_cas[0]}" ]]; then
+  mkdir -p "$root/usr/local/share/ca-certificates"
+  cp "${local_cas[@]}" "$root/usr/local/share/ca-certificates/"
+  node_ca_env=(NODE_EXTRA_CA_CERTS=/etc/ssl/certs/ca-certificates.crt)
+fi
 
 mounted=()
 unmount_all() {
@@ -43,9 +54,14 @@ for dir in proc sys dev dev/pts; do
   fi
 done
 
+# A root made earlier already has ca-certificates: its bundle is made again with the copied ones.
+if [[ ${#node_ca_env[@]} -gt 0 && -x "$root/usr/sbin/update-ca-certificates" ]]; then
+  chroot "$root" /usr/sbin/update-ca-certificates >/dev/null
+fi
+
 rm -rf "$root/root/rgbsub"
 git clone --quiet --no-hardlinks "$repo" "$root/root/rgbsub"
 git -C "$root/root/rgbsub" checkout --quiet --detach "$commit"
 echo "=== ./test.sh in $root at $(git -C "$root/root/rgbsub" rev-parse --short HEAD)"
-time chroot "$root" /usr/bin/env -i HOME=/root PATH=/usr/sbin:/usr/bin:/sbin:/bin LANG=C.UTF-8 \
+time chroot "$root" /usr/bin/env -i HOME=/root PATH=/usr/sbin:/usr/bin:/sbin:/bin LANG=C.UTF-8 "${node_ca_env[@]}" \
   /bin/bash -c 'cd /root/rgbsub && ./test.sh'
