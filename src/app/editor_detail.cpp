@@ -38,9 +38,10 @@ void Editor::start_view_lod() {
     settings.pixels = detail_settings_.view_pixels;
     settings.max_triangles = rgbio::default_triangle_limit(rgbio::MemoryUse::ScreenLod);
     // The camera of the frame being drawn: the job asks for it every step. A step does no more than
-    // the display takes in one part, so that each frame shows the whole mesh as the step left it.
+    // a quarter of what the display takes in one part (a few milliseconds), so that each frame can
+    // show the whole mesh as the step left it within the frame's time.
     queue(std::make_unique<ViewLodJob>(document_.mesh(), settings, [this] { return render::screen_view(camera_.camera(), viewport_); },
-                                       kDisplayPartFaces));
+                                       kDisplayPartFaces / 4));
 }
 
 void Editor::freeze_view_lod() {

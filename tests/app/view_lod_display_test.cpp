@@ -110,7 +110,7 @@ TEST_F(ViewLodDisplay, EveryFrameOfAnOrbitShowsAWholeMesh) {
 TEST_F(ViewLodDisplay, SlowFramesShowAWholeMeshToo) {
     editor.detail_settings().view_pixels = 3.0;
     editor.start_view_lod();
-    orbit(8, {40.0f, 0.0f}, std::chrono::milliseconds(200));
+    orbit(20, {20.0f, 0.0f}, std::chrono::milliseconds(200));
     EXPECT_GT(editor.document().mesh().num_faces(), kDisplayPartFaces) << "the frames did more than one part of the catching up takes";
 }
 

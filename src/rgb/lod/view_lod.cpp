@@ -1,6 +1,7 @@
 #include "rgb/lod/view_lod.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "rgb/lod/refine.h"
 #include "rgb/mesh/operators.h"
@@ -28,12 +29,30 @@ void ViewLod::start_pass() {
     pass_current_ = true;
 }
 
-// A pass that has done what may be seen starts anew for the new camera: what came into view comes
-// first, instead of after the faces out of view the old camera left (seconds at millions of faces).
+namespace {
+
+// Whether the camera moved enough to see other faces: a camera that only jitters by rounding keeps its
+// pass, so that the faces out of view are reached too.
+bool moved(const ScreenView& a, const ScreenView& b) {
+    double largest = 0.0, change = 0.0;
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) {
+            largest = std::max(largest, std::abs(a.view_projection[c][r]));
+            change = std::max(change, std::abs(a.view_projection[c][r] - b.view_projection[c][r]));
+        }
+    return change > 1e-9 * largest || a.viewport != b.viewport;
+}
+
+}  // namespace
+
+// A pass that has done what may be seen starts anew for a camera that moved: what came into view
+// comes first, instead of after the faces out of view the old camera left (seconds at millions of
+// faces).
 void ViewLod::set_view(const ScreenView& view) {
+    const bool restart_pass = criterion_ && gathered_ == mesh_.face_capacity() && pass_.only_unseen_left() && moved(view, criterion_->view());
     criterion_ = std::make_unique<ScreenCriterion>(mesh_.shared_base(), view);
     restart();
-    if (gathered_ == mesh_.face_capacity() && pass_.only_unseen_left()) start_pass();
+    if (restart_pass) start_pass();
 }
 
 void ViewLod::set_settings(const ViewLodSettings& settings) {
