@@ -167,13 +167,6 @@ bool Document::catch_up_display(std::chrono::microseconds budget) {
     return true;
 }
 
-namespace {
-
-// Changed face slots a part takes (with the same share of the moved vertices): a few milliseconds.
-constexpr std::size_t kDisplayPartFaces = std::size_t(1) << 13;
-
-}  // namespace
-
 bool Document::display_behind() const {
     return changes_->everything() || changes_->changed_faces().size() - faces_caught_up_ > kDisplayPartFaces;
 }

@@ -3,6 +3,7 @@
 // its undo history, and the displayed triangle positions the brush picks on (kept current through the
 // core's observer). GL-free.
 #include <chrono>
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -18,6 +19,10 @@
 #include "rgb/mesh/mesh.h"
 
 namespace app {
+
+// Changed face slots (added or freed) a part of the display's catching up takes, with the same share
+// of the moved vertices: a few milliseconds.
+inline constexpr std::size_t kDisplayPartFaces = std::size_t(1) << 13;
 
 class Document {
 public:

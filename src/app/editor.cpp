@@ -183,7 +183,11 @@ void Editor::update(std::chrono::microseconds job_slice) {
     // The picking geometry and index catch up here rather than in the next pick, within what is
     // left of the slice (but a few milliseconds at least, so that they keep up with the work).
     const auto catch_up = std::chrono::steady_clock::now();
-    document_.catch_up_display(std::max(std::chrono::duration_cast<std::chrono::microseconds>(deadline - catch_up), kMinDisplaySlice));
+    // View-dependent LOD changes what is in view every frame: a display caught up in part would show
+    // holes and overlaps where faces already replaced meet faces not yet, so its frames catch up
+    // whole (its step stops at a quarter of a part's worth of changes, Editor::start_view_lod).
+    if (view_lod()) document_.geometry();
+    else document_.catch_up_display(std::max(std::chrono::duration_cast<std::chrono::microseconds>(deadline - catch_up), kMinDisplaySlice));
     timing_.geometry_ms = milliseconds_since(catch_up);
     keep_recovery_copy(false);
 }

@@ -37,8 +37,11 @@ void Editor::start_view_lod() {
     rgb::ViewLodSettings settings;
     settings.pixels = detail_settings_.view_pixels;
     settings.max_triangles = rgbio::default_triangle_limit(rgbio::MemoryUse::ScreenLod);
-    // The camera of the frame being drawn: the job asks for it every step.
-    queue(std::make_unique<ViewLodJob>(document_.mesh(), settings, [this] { return render::screen_view(camera_.camera(), viewport_); }));
+    // The camera of the frame being drawn: the job asks for it every step. A step does no more than
+    // a quarter of what the display takes in one part (a few milliseconds), so that each frame can
+    // show the whole mesh as the step left it within the frame's time.
+    queue(std::make_unique<ViewLodJob>(document_.mesh(), settings, [this] { return render::screen_view(camera_.camera(), viewport_); },
+                                       kDisplayPartFaces / 4));
 }
 
 void Editor::freeze_view_lod() {

@@ -12,8 +12,9 @@ bool same_view(const rgb::ScreenView& a, const rgb::ScreenView& b) {
 
 }  // namespace
 
-ViewLodJob::ViewLodJob(rgb::Mesh& mesh, const rgb::ViewLodSettings& settings, std::function<rgb::ScreenView()> current_view)
-    : current_view_(std::move(current_view)), view_(current_view_()), lod_(mesh, settings, view_) {}
+ViewLodJob::ViewLodJob(rgb::Mesh& mesh, const rgb::ViewLodSettings& settings, std::function<rgb::ScreenView()> current_view,
+                       std::size_t max_face_changes)
+    : current_view_(std::move(current_view)), view_(current_view_()), lod_(mesh, settings, view_), max_face_changes_(max_face_changes) {}
 
 ViewLodJob::~ViewLodJob() = default;
 
@@ -24,7 +25,7 @@ bool ViewLodJob::step(std::chrono::microseconds slice) {
         view_ = view;
         lod_.set_view(view_);
     }
-    lod_.update(slice);
+    lod_.update(slice, max_face_changes_);
     return true;
 }
 

@@ -4,6 +4,8 @@
 // work a time slice, so detail follows the camera while it orbits. Freezing it (cancel) ends the job
 // and leaves the current mesh as an ordinary editable state: one undoable step like any job.
 #include <chrono>
+#include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -21,8 +23,11 @@ namespace app {
 
 class ViewLodJob : public MeshJob {
 public:
-    // `current_view` is asked once per step for the camera the frame is drawn with.
-    ViewLodJob(rgb::Mesh& mesh, const rgb::ViewLodSettings& settings, std::function<rgb::ScreenView()> current_view);
+    // `current_view` is asked once per step for the camera the frame is drawn with. A step stops once
+    // its operations have added and removed `max_face_changes` faces, so that the display can take
+    // all of them in the same frame and never shows a mesh half changed (Editor::update).
+    ViewLodJob(rgb::Mesh& mesh, const rgb::ViewLodSettings& settings, std::function<rgb::ScreenView()> current_view,
+               std::size_t max_face_changes = SIZE_MAX);
     ~ViewLodJob() override;
     ViewLodJob(const ViewLodJob&) = delete;
     ViewLodJob& operator=(const ViewLodJob&) = delete;
@@ -48,6 +53,7 @@ private:
     std::function<rgb::ScreenView()> current_view_;
     rgb::ScreenView view_;
     rgb::ViewLod lod_;
+    std::size_t max_face_changes_;
     bool frozen_ = false;
 };
 

@@ -24,7 +24,7 @@ using test::kViewport;
 class EditorCreases : public ::testing::Test {
 protected:
     void SetUp() override {
-        ASSERT_TRUE(editor.open(std::string(RGBSUB_SOURCE_DIR) + "/assets/machined_part.obj")) << editor.message();
+        ASSERT_TRUE(editor.open(test::asset_path("machined_part.obj"))) << editor.message();
         editor.crease_tool().active = true;
     }
 

@@ -26,7 +26,7 @@ using test::kViewport;
 class EditorFailure : public ::testing::Test {
 protected:
     void SetUp() override {
-        ASSERT_TRUE(editor.open(std::string(RGBSUB_SOURCE_DIR) + "/assets/bunny.obj")) << editor.message();
+        ASSERT_TRUE(editor.open(test::asset_path("bunny.obj"))) << editor.message();
         editor.brush().target_level = 2;
         editor.brush().falloff = 0.0f;
     }

@@ -7,7 +7,9 @@
 
 namespace app::test {
 
-inline std::string asset_path(const std::string& name) { return std::string(RGBSUB_SOURCE_DIR) + "/assets/" + name; }
+// Built as a path, not by string concatenation: from a short source folder (/tmp/wt/h2) GCC 12 takes
+// the concatenation's inlined copy for an overflow of the short-string buffer (-Wstringop-overflow).
+inline std::string asset_path(const std::string& name) { return (std::filesystem::path(RGBSUB_SOURCE_DIR) / "assets" / name).string(); }
 
 inline std::string bunny_path() { return asset_path("bunny.obj"); }
 

@@ -24,6 +24,14 @@ glm::dvec4 clip_to_near(const glm::dvec4& p, const glm::dvec4& q) {
     return p + (dp / (dp - dq)) * (q - p);
 }
 
+// Whether the eye sees the triangle from behind by more than kFacingAwayCosine allows.
+bool turned_away(const glm::dvec3 (&corners)[3], const glm::dvec3& eye) {
+    const glm::dvec3 n = glm::cross(corners[1] - corners[0], corners[2] - corners[0]);
+    const glm::dvec3 to_face = (corners[0] + corners[1] + corners[2]) / 3.0 - eye;
+    const double scale = glm::length(n) * glm::length(to_face);
+    return scale > 0.0 && glm::dot(n, to_face) > kFacingAwayCosine * scale;
+}
+
 }  // namespace
 
 ScreenCriterion::ScreenCriterion(std::shared_ptr<const BaseMesh> base, const ScreenView& view) : base_(std::move(base)), view_(view) {
@@ -38,11 +46,7 @@ ScreenCriterion::ScreenCriterion(std::shared_ptr<const BaseMesh> base, const Scr
     facing_away_.resize(base_->num_faces());
     for (std::uint32_t f = 0; f < base_->num_faces(); ++f) {
         const Triangle& t = base_->face(f);
-        const glm::dvec3 a = base_->position(t[0]), b = base_->position(t[1]), c = base_->position(t[2]);
-        const glm::dvec3 n = glm::cross(b - a, c - a);
-        const glm::dvec3 to_face = (a + b + c) / 3.0 - view.eye;
-        const double scale = glm::length(n) * glm::length(to_face);
-        facing_away_[f] = scale > 0.0 && glm::dot(n, to_face) > kFacingAwayCosine * scale;
+        facing_away_[f] = turned_away({base_->position(t[0]), base_->position(t[1]), base_->position(t[2])}, view.eye);
     }
 }
 
@@ -55,6 +59,14 @@ bool ScreenCriterion::seen(const SurfacePoint& midpoint) const {
             return across != BaseMesh::kNone && !facing_away_[across / 3];
         }
     return false;
+}
+
+bool ScreenCriterion::may_see(const glm::dvec3 (&corners)[3]) const {
+    if (turned_away(corners, view_.eye)) return false;
+    for (const glm::dvec4& plane : planes_)
+        if (std::ranges::all_of(corners, [&](const glm::dvec3& p) { return glm::dot(glm::dvec3(plane), p) + plane.w < 0.0; }))
+            return false;
+    return true;
 }
 
 double ScreenCriterion::value(const glm::dvec3& a, const glm::dvec3& b, const SurfacePoint& midpoint) const {

@@ -35,6 +35,11 @@ public:
     // level, whose midpoint has address `midpoint`.
     double value(const glm::dvec3& a, const glm::dvec3& b, const SurfacePoint& midpoint) const;
     const ScreenView& view() const { return view_; }
+    // Whether a triangle with these corners (in base space, so in the plane of its base face) may be
+    // seen: some of it inside the frustum and not turned away from the eye by more than a base face
+    // counts as turned away. A cheap test for ordering work (view_priority.h), not the value: that
+    // judges each edge from its own points.
+    bool may_see(const glm::dvec3 (&corners)[3]) const;
 
     // The criterion for requests (the positions from the hierarchy evaluator).
     EdgeValue edge_value() const;
