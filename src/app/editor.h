@@ -318,7 +318,7 @@ private:
     glm::ivec2 viewport_;
     BrushSettings brush_;
     AutoLodSettings auto_lod_settings_;
-    std::size_t triangle_limit_ = rgbio::default_triangle_limit(rgbio::MemoryUse::Level);
+    std::size_t triangle_limit_ = rgbio::editor_triangle_limit(rgbio::MemoryUse::Level);
     rgbio::SaveOptions save_options_;
 
     glm::vec2 mouse_{0.0f};

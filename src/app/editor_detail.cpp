@@ -15,7 +15,7 @@ void Editor::start_detail_edit() {
     edit.criterion = detail_settings_.criterion;
     edit.amount = detail_settings_.amount;
     std::unique_ptr<DetailJob> job;
-    const std::size_t limit = rgbio::default_triangle_limit(rgbio::memory_use(edit.criterion));
+    const std::size_t limit = rgbio::editor_triangle_limit(rgbio::memory_use(edit.criterion));
     try {
         // A request that cannot fit (a tolerance of 1e-300) is refused before the job starts.
         rgbio::check_detail_size(document_.mesh(), rgbio::detail_request(document_.mesh(), edit, limit), limit);
@@ -36,7 +36,7 @@ void Editor::start_view_lod() {
     keep_recovery_copy(true);
     rgb::ViewLodSettings settings;
     settings.pixels = detail_settings_.view_pixels;
-    settings.max_triangles = rgbio::default_triangle_limit(rgbio::MemoryUse::ScreenLod);
+    settings.max_triangles = rgbio::editor_triangle_limit(rgbio::MemoryUse::ScreenLod);
     // The camera of the frame being drawn: the job asks for it every step. A step does no more than
     // a quarter of what the display takes in one part (a few milliseconds), so that each frame can
     // show the whole mesh as the step left it within the frame's time.
@@ -78,7 +78,7 @@ void Editor::detail_dab(const BaseSpaceHit& at, const glm::dvec3& hit_point) {
         edit.sphere = rgb::Sphere{image.centre, at.radius};
         stroke_->add_whole(
             [&mesh, edit] {
-                const rgbio::DetailOutcome outcome = rgbio::apply_detail_edit(mesh, edit, rgbio::default_triangle_limit(rgbio::memory_use(edit.criterion)));
+                const rgbio::DetailOutcome outcome = rgbio::apply_detail_edit(mesh, edit, rgbio::editor_triangle_limit(rgbio::memory_use(edit.criterion)));
                 return rgb::RequestStats{outcome.report.splits, outcome.report.removals, outcome.report.level_cap_bound};
             },
             rgbio::format_detail_line(edit) + "\n");

@@ -1,6 +1,7 @@
 #include "app/loaded_document.h"
 
 #include "io/base_uvs.h"
+#include "io/scale_check.h"
 #include "app/file_appearance.h"
 
 namespace app {
@@ -24,6 +25,9 @@ void reserve_room(rgb::Mesh& mesh, render::SurfaceGeometry& geometry, SurfaceInd
 LoadedDocument load_document(const std::string& path, render::PositionSource source, const rgb::ProgressSpan& progress) {
     LoadedDocument loaded{rgb::Mesh(), nullptr, render::SurfaceGeometry(source), SurfaceIndex(), {}, std::nullopt};
     rgbio::LoadedAsset asset = rgbio::load_asset(path, &loaded.warnings, {.progress = progress.part(0.0, kRead)});
+    // The editor works in doubles and draws in 32-bit floats: a mesh either cannot hold is refused with
+    // the reason rather than shown blank (issue 30 item 14).
+    rgbio::check_scale(asset.mesh.base().positions(), {rgbio::kDoubleScale, rgbio::kFloatScale}, path, "open");
     loaded.mesh = std::move(asset.mesh);
     loaded.attributes = std::move(asset.attributes);
     loaded.uvs = std::move(asset.uvs);

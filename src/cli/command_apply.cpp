@@ -83,6 +83,7 @@ int run_apply(std::span<const std::string> args) {
         arguments.integer("--max-triangles", static_cast<long>(rgbio::default_triangle_limit(dearest_use(script))), 1, 4'000'000'000l));
     check_output_first(*output);
     rgbio::LoadedAsset asset = load_input("apply", input, arguments);
+    check_gltf_output_first("apply", *output, asset);
     rgb::Mesh& mesh = asset.mesh;
     save.attributes = asset.attributes;
     save.uvs = input_uv_layout(arguments, asset);

@@ -1,11 +1,16 @@
 // rgbsub info FILE.obj: the loader's validation report and the mesh's statistics.
+#include <filesystem>
 #include <iostream>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
 #include "cli/mesh_io_support.h"
 #include "cli/mesh_summary.h"
+#include "io/base_attributes.h"
+#include "io/base_uvs.h"
 #include "io/mesh_file.h"
 #include "io/mesh_reader.h"
 #include "rgb/mesh/detail_positions.h"
@@ -14,11 +19,18 @@ namespace cli {
 
 namespace {
 
-// What rides on the mesh besides positions, one line each, only what the file has.
-void print_attributes(std::ostream& out, const rgbio::LoadedMesh& loaded) {
-    if (!loaded.triangle_texcoords.empty())
-        out << "texture coordinates: " << loaded.texcoords.size() << " (per corner)\n";
-    if (!loaded.colours.empty()) out << "vertex colours: yes\n";
+// What rides on the mesh besides positions, one line each, only what the file has; texture
+// coordinates and colours as the other commands keep them (`attributes`, `uvs`: what load_asset
+// makes), so that a file's UVs are not "there" here and dropped by refine.
+void print_attributes(std::ostream& out, const rgbio::LoadedMesh& loaded, const rgbio::BaseAttributes& attributes,
+                      const std::optional<rgb::UvChannel>& uvs) {
+    if (!loaded.triangle_texcoords.empty()) {
+        if (uvs)
+            out << "texture coordinates: " << loaded.texcoords.size() << " (per corner)\n";
+        else
+            out << "texture coordinates: " << loaded.texcoords.size() << " in the file, dropped (see the warnings)\n";
+    }
+    if (!loaded.colours.empty()) out << "vertex colours: " << (attributes.colours.empty() ? "in the file, ignored (see the warnings)" : "yes") << '\n';
     if (!loaded.face_materials.empty())
         out << "materials: " << loaded.face_materials.names.size() << " used, " << loaded.materials.size()
             << " defined in the material libraries\n";
@@ -80,10 +92,15 @@ int run_info(std::span<const std::string> args) {
     const std::optional<rgb::Mesh> copy =
         loaded.adaptive && !retag ? std::nullopt : std::optional<rgb::Mesh>(with_sharp_options(arguments, rgbio::build_mesh(loaded)));
     const rgb::Mesh& mesh = copy ? *copy : *loaded.adaptive;
-    std::cout << file << ": valid" << (loaded.warnings.empty() ? "" : " after fixes") << '\n';
-    for (const std::string& warning : loaded.warnings) std::cout << "warning: " << warning << '\n';
+    // The warnings the other commands print on reading this file (rgbio::load_asset's).
+    std::vector<std::string> warnings = loaded.warnings;
+    const rgbio::BaseAttributes attributes =
+        rgbio::base_attributes(loaded, mesh, std::filesystem::path(file).parent_path().string(), warnings);
+    const std::optional<rgb::UvChannel> uvs = rgbio::base_uv_channel(loaded, mesh, warnings);
+    std::cout << file << ": valid" << (warnings.empty() ? "" : " after fixes") << '\n';
+    for (const std::string& warning : warnings) std::cout << "warning: " << warning << '\n';
     std::cout << "adaptive state: " << (loaded.adaptive ? "restored from the file's #rgb lines" : "none (base mesh)") << '\n';
-    print_attributes(std::cout, loaded);
+    print_attributes(std::cout, loaded, attributes, uvs);
     print_sharp_features(std::cout, mesh.base());
     print_detail(std::cout, mesh.base());
     print_summary(std::cout, summarize(mesh));

@@ -90,7 +90,10 @@ int run_lods(std::span<const std::string> args) {
     const std::string& input = arguments.positional()[0];
     const rgbio::OutputFormat format = rgbio::output_format(*output);
 
+    // The folder, and the first file written (for glTF, the only one).
+    check_output_first(format == rgbio::OutputFormat::Gltf ? *output : rgbio::lod_file_name(*output, 0));
     rgbio::LoadedAsset asset = load_input("lods", input, arguments);
+    check_gltf_output_first("lods", *output, asset);
     std::vector<rgbio::ScriptLine> requests;
     try {
         requests = rgbio::lod_set_requests(*criterion, list, asset.mesh);
@@ -128,6 +131,8 @@ int run_lods(std::span<const std::string> args) {
             level.triangles = mesh.num_faces();
             if (format == rgbio::OutputFormat::Gltf) {
                 level.gltf = rgbio::gltf_mesh(mesh, save);
+                if (const std::optional<std::string> repair = rgbio::gltf_normal_repair(level.gltf))
+                    print_warnings("lods", *output, {"LOD" + std::to_string(i) + ": " + *repair});
                 level.positions = level.gltf.positions;
             } else {
                 rgbio::ExportMesh flat = rgbio::export_mesh(mesh, save);

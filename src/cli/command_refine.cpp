@@ -101,6 +101,7 @@ int run_refine(std::span<const std::string> args) {
 
     check_output_first(*output);
     rgbio::LoadedAsset asset = load_input("refine", input, arguments);
+    check_gltf_output_first("refine", *output, asset);
     rgb::Mesh& mesh = asset.mesh;
     save.attributes = asset.attributes;
     save.uvs = input_uv_layout(arguments, asset);

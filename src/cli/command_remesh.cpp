@@ -87,6 +87,7 @@ int run_remesh(std::span<const std::string> args) {
     }
     check_output_first(*output);
     const rgbio::LoadedAsset asset = load_input("remesh", input, arguments);
+    check_gltf_output_first("remesh", *output, asset);
     warn_dropped(input, asset);
     const PlainMesh dense = displayed_mesh(asset.mesh);
     // load_input has checked the angle's range. The cage is tagged, and fitted with the tags, inside

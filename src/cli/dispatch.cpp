@@ -57,10 +57,9 @@ int run_command(const Command& command, std::span<const std::string> args) {
     } catch (const rgbio::TooLarge& error) {
         return fail(exit_io_failure, std::string("refused: ") + error.what());
     } catch (const std::bad_alloc&) {
-        return fail(exit_io_failure, "out of memory: the request needs more memory than the system would give; nothing was saved");
+        return fail(exit_io_failure, out_of_memory_message(command.name, nullptr));
     } catch (const std::length_error& error) {
-        return fail(exit_io_failure, std::string("out of memory: a size beyond what this machine can hold (") + error.what() +
-                                         "); nothing was saved");
+        return fail(exit_io_failure, out_of_memory_message(command.name, &error));
     } catch (const std::system_error& error) {
         return fail(exit_io_failure, std::string("the system refused a resource: ") + error.what());
     } catch (const std::exception& error) {
@@ -76,6 +75,13 @@ bool names_a_mesh(const std::string& word) {
 }
 
 }  // namespace
+
+std::string out_of_memory_message(std::string_view command, const std::length_error* error) {
+    std::string message = error ? std::string("out of memory: a size beyond what this machine can hold (") + error->what() + ")"
+                                : "out of memory: the request needs more memory than the system would give";
+    // info writes nothing, so it has nothing to say about what was saved.
+    return command == "info" ? message : message + "; nothing was saved";
+}
 
 int dispatch(std::span<const std::string> args) {
     if (args.empty()) return run_command(commands[0], args);

@@ -28,8 +28,7 @@ rgbio::LoadedAsset load_input(const char* command, const std::string& file, cons
     std::vector<std::string> warnings;
     rgbio::LoadedAsset asset = rgbio::load_asset(file, &warnings, read_options(arguments));
     print_warnings(command, file, warnings);
-    if (const std::optional<std::string> problem = rgbio::scale_problem(asset.mesh.base().positions(), rgbio::kDoubleScale))
-        throw std::invalid_argument(file + ": cannot work on this mesh: " + *problem);
+    rgbio::check_scale(asset.mesh.base().positions(), {rgbio::kDoubleScale}, file, "work on");
     asset.mesh = with_sharp_options(arguments, std::move(asset.mesh));
     return asset;
 }
@@ -43,6 +42,14 @@ void check_output_first(const std::string& file) {
         throw rgbio::SaveError("cannot save " + file + ": its folder " + target.folder + " is not writable (" + std::strerror(errno) + ")");
 }
 
+void check_gltf_output_first(const char* command, const std::string& output, const rgbio::LoadedAsset& asset) {
+    if (!rgbio::is_gltf_path(output)) return;
+    // The subdivided surface lies in the hull of the base mesh: its positions answer for every level.
+    if (const std::optional<std::string> problem = rgbio::scale_problem(asset.mesh.base().positions(), rgbio::kFloatScale))
+        throw std::invalid_argument("cannot write " + output + " (glTF keeps 32-bit floats): " + *problem);
+    print_warnings(command, output, rgbio::gltf_material_repairs(asset.attributes->materials));
+}
+
 void save_output(const char* command, const rgb::Mesh& mesh, const std::string& file, const rgbio::SaveOptions& save) {
     // Both writers have the exact texture coordinates of every level from the UV layout.
     std::vector<std::string> warnings = rgbio::dropped_attributes(mesh, save.attributes.get(), save.uvs != nullptr);
@@ -50,10 +57,9 @@ void save_output(const char* command, const rgb::Mesh& mesh, const std::string& 
         warnings.push_back("the normals follow the smooth Loop rules (rgb/values/limit_normals.h): at vertices on tagged creases and "
                            "corners, whose tangent masks are not implemented yet, they are approximate");
     if (rgbio::is_gltf_path(file)) {
-        if (const std::optional<std::string> problem = rgbio::scale_problem(mesh.base().positions(), rgbio::kFloatScale))
-            throw std::invalid_argument("cannot write " + file + " (glTF keeps 32-bit floats): " + *problem);
+        // What the input's scale and materials say was checked before the work (check_gltf_output_first).
         const rgbio::GltfMesh gltf = rgbio::gltf_mesh(mesh, save);
-        for (std::string& repair : rgbio::gltf_repairs(gltf)) warnings.push_back(std::move(repair));
+        if (std::optional<std::string> repair = rgbio::gltf_normal_repair(gltf)) warnings.push_back(std::move(*repair));
         print_warnings(command, file, warnings);
         rgbio::save_gltf(gltf, file);
         return;

@@ -63,6 +63,11 @@ rgbio::LoadedAsset load_input(const char* command, const std::string& file, cons
 // rgbio::resolve_save_target refuses, and a folder that is not there or not writable.
 void check_output_first(const std::string& file);
 
+// For a glTF output, what the input alone says about it, before any work: positions that 32-bit floats
+// cannot hold are refused (std::invalid_argument, exit code 2); material names and colours that glTF
+// cannot hold are printed as warnings (the writer substitutes them). Nothing for other outputs.
+void check_gltf_output_first(const char* command, const std::string& output, const rgbio::LoadedAsset& asset);
+
 // Saves `mesh` with what rides on its base (save.attributes) to `file` in the format of its extension
 // (io/formats/mesh_format.h). First prints, as warnings, what the save leaves out (the adaptive state
 // in any format but OBJ, unless --plain asked for none).

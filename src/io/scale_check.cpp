@@ -7,6 +7,8 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "io/obj/obj_error.h"
+
 namespace rgbio {
 
 std::optional<std::string> scale_problem(std::span<const glm::dvec3> positions, const ScaleRange& range) {
@@ -30,6 +32,13 @@ std::optional<std::string> scale_problem(std::span<const glm::dvec3> positions, 
     else
         return std::nullopt;
     return reason.str() + "; scale it first";
+}
+
+void check_scale(std::span<const glm::dvec3> positions, std::initializer_list<ScaleRange> ranges, const std::string& file,
+                 const char* action) {
+    for (const ScaleRange& range : ranges)
+        if (const std::optional<std::string> problem = scale_problem(positions, range))
+            throw ObjError(ObjProblem::OutOfScale, file, 0, std::string("cannot ") + action + " this mesh: " + *problem);
 }
 
 }  // namespace rgbio

@@ -4,6 +4,7 @@
 // turn into zeros as 32-bit floats (a blank render, a glTF of zeros). Such a mesh is refused with
 // the reason rather than worked on silently wrong. The subdivided surface lies in the hull of the
 // base mesh, so the base mesh's positions answer for every level.
+#include <initializer_list>
 #include <optional>
 #include <span>
 #include <string>
@@ -24,5 +25,10 @@ inline constexpr ScaleRange kFloatScale{1e-30, 1e38, "32-bit floats"};
 
 // Why the positions do not fit the range, ending in what to do; nothing when they fit.
 std::optional<std::string> scale_problem(std::span<const glm::dvec3> positions, const ScaleRange& range);
+
+// Throws ObjError(OutOfScale) for `file`, "cannot ACTION this mesh: " and the first range's problem,
+// when the positions do not fit every range given.
+void check_scale(std::span<const glm::dvec3> positions, std::initializer_list<ScaleRange> ranges, const std::string& file,
+                 const char* action);
 
 }  // namespace rgbio

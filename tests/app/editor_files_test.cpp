@@ -362,6 +362,27 @@ TEST_F(DroppedAndRecentFiles, ADroppedFileThatDoesNotLoadLeavesTheMeshAlone) {
     EXPECT_EQ(editor.document().mesh().num_faces(), 192u);
 }
 
+// A valid mesh at a scale whose numbers cannot keep its shape is refused when the editor opens it, the
+// reason in its message, and the mesh on screen stays (issue 30 item 14): 1e-200 across, its squared
+// lengths underflow doubles; 1e-100 across, the 32-bit floats it is drawn with hold only zeros.
+// Before, the editor opened both and drew nothing.
+TEST_F(DroppedAndRecentFiles, AMeshTooSmallForItsNumbersIsNotOpened) {
+    ASSERT_TRUE(editor.open(mesh_copy("kept.obj")));
+    for (const auto& [scale, numbers] : {std::pair{"1e-200", "that doubles"}, std::pair{"1e-100", "that 32-bit floats allow"}}) {
+        const std::string s = scale, file = (folder_ / "tiny.obj").string();
+        // An octahedron, each face wound outwards.
+        std::ofstream(file) << "v " << s << " 0 0\nv -" << s << " 0 0\nv 0 " << s << " 0\nv 0 -" << s << " 0\nv 0 0 " << s
+                            << "\nv 0 0 -" << s << "\nf 1 3 5\nf 3 2 5\nf 2 4 5\nf 4 1 5\nf 3 1 6\nf 2 3 6\nf 4 2 6\nf 1 4 6\n";
+        editor.request_open(file);
+        editor.finish_work();
+        EXPECT_TRUE(editor.message_is_error()) << scale;
+        EXPECT_NE(editor.message().find(file + ": cannot open this mesh: the mesh is "), std::string::npos) << editor.message();
+        EXPECT_NE(editor.message().find(numbers), std::string::npos) << editor.message();
+        EXPECT_EQ(editor.document().path(), (folder_ / "kept.obj").string());
+        EXPECT_EQ(editor.document().mesh().num_faces(), 192u);
+    }
+}
+
 // Most recent first, each file once, only files that really opened or saved, and a short list.
 TEST_F(DroppedAndRecentFiles, RecentFilesListTheLastFilesUsedNewestFirst) {
     const std::string a = mesh_copy("a.obj"), b = mesh_copy("b.obj");

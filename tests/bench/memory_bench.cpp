@@ -170,6 +170,15 @@ int main(int argc, char** argv) {
              const Run r = run({"info", saved}, folder);
              return Sample{face_lines(saved), r.peak_kb};
          }},
+        {"open in the editor", rgbio::MemoryUse::Editor,
+         [&](int i) {
+             // One headless editor frame (OSMesa): the document, its display geometry, its picking
+             // index and the GL buffers, as the editor holds every triangle it shows.
+             const std::string saved = (folder / "saved.obj").string();
+             run({"refine", torus, "-o", saved, "--level", level(i)}, folder);
+             const Run r = run({"edit", saved, "--screenshot", (folder / "frame.png").string()}, folder);
+             return Sample{face_lines(saved), r.peak_kb};
+         }},
         {"remesh (per detail point)", rgbio::MemoryUse::Remesh,
          [&](int i) {
              const std::string dense = (folder / "dense.obj").string();

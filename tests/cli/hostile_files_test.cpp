@@ -3,10 +3,12 @@
 // every command that reads it, small or above the sizes at which files are mapped and parsed in
 // blocks; an oversized material library is a warning; an output's extension counts in any case
 // (OUT.GLB is binary glTF); a dab's view direction too short for a double is refused like zero.
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -167,6 +169,25 @@ TEST_F(HostileFiles, GltfExportIsValidWhateverTheMaterialsAndFacesSay) {
     }
 }
 
+// The material names and colours glTF cannot hold are found before the work (issue 30 item 9): a
+// request refused as too large (exit 3, nothing written) has already said so, in refine, apply and
+// lods. Before, only the save after the work looked at them (and lods never did).
+TEST_F(HostileFiles, GltfMaterialsAreCheckedBeforeTheWork) {
+    write("odd.mtl", "newmtl M\xff\nKd 2 0 0\n");
+    const std::string in = write_file("odd.obj", "mtllib odd.mtl\nusemtl M\xff\n" + rgbio::test::kOctahedron);
+    const std::string script = write_file("fine.txt", "level 12\n");
+    for (const std::vector<std::string>& command :
+         {std::vector<std::string>{"refine", in, "-o", path("out.glb"), "--level", "12", "--max-triangles", "1000"},
+          std::vector<std::string>{"apply", in, script, "-o", path("out.gltf"), "--max-triangles", "1000"},
+          std::vector<std::string>{"lods", in, "-o", path("out.glb"), "--levels", "12,0", "--max-triangles", "1000"}}) {
+        const Outcome run = run_rgbsub(command);
+        EXPECT_EQ(run.exit_code, cli::exit_io_failure) << command[0] << ": " << run.output;
+        EXPECT_NE(run.output.find("1 material names are not UTF-8"), std::string::npos) << command[0] << ": " << run.output;
+        EXPECT_NE(run.output.find("1 materials have a diffuse colour (Kd) outside 0..1"), std::string::npos) << command[0] << ": " << run.output;
+        EXPECT_FALSE(std::filesystem::exists(*std::next(std::find(command.begin(), command.end(), "-o")))) << command[0];
+    }
+}
+
 // A folder name with a line break or another control byte cannot reach an mtllib line (issue 30
 // item 10): the library's path is written where it has none, else the save is refused (exit 3, no
 // file). Before, "mtllib ../in<LF>side/lib.mtl" injected a line.
@@ -289,11 +310,17 @@ TEST_F(HostileFiles, UnreadableMaterialLibrariesAreOneWarning) {
 TEST_F(HostileFiles, TheOutputIsCheckedBeforeTheWork) {
     const std::string in = write_file("octahedron.obj", rgbio::test::kOctahedron);
     std::filesystem::create_directories(path("folder"));
-    for (const std::string& out : {path("missing/out.obj"), path("folder")}) {
-        const Outcome run = run_rgbsub({"refine", in, "-o", out, "--level", "20"});
-        EXPECT_EQ(run.exit_code, cli::exit_io_failure) << run.output;
-        EXPECT_NE(run.output.find("cannot save " + out), std::string::npos) << run.output;
-        EXPECT_EQ(run.output.find("would make about"), std::string::npos) << run.output;
+    // lods writes OUT_LOD0.obj, ... (one OUT.glb for glTF); it was not checked first before.
+    std::filesystem::create_directories(path("lods_LOD0.obj"));
+    for (const auto& [command, refused] :
+         {std::pair{std::vector<std::string>{"refine", in, "-o", path("missing/out.obj"), "--level", "20"}, path("missing/out.obj")},
+          std::pair{std::vector<std::string>{"refine", in, "-o", path("folder"), "--level", "20"}, path("folder")},
+          std::pair{std::vector<std::string>{"lods", in, "-o", path("missing/out.glb"), "--levels", "20,0"}, path("missing/out.glb")},
+          std::pair{std::vector<std::string>{"lods", in, "-o", path("lods.obj"), "--levels", "20,0"}, path("lods_LOD0.obj")}}) {
+        const Outcome run = run_rgbsub(command);
+        EXPECT_EQ(run.exit_code, cli::exit_io_failure) << command[0] << ": " << run.output;
+        EXPECT_NE(run.output.find("cannot save " + refused), std::string::npos) << command[0] << ": " << run.output;
+        EXPECT_EQ(run.output.find("would make about"), std::string::npos) << command[0] << ": " << run.output;
     }
 }
 

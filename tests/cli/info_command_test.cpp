@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/dispatch.h"
 #include "command_test_support.h"
 #include "io/mesh_file.h"
 #include "obj_test_support.h"
@@ -69,6 +70,23 @@ TEST_F(InfoCommand, FixesAreListedAsWarnings) {
         << run.out;
 }
 
+// Texture coordinates at some corners of a face only are dropped by every command: info says so as
+// refine does, with the same warning (issue 30, low items). Before, info listed "texture coordinates:
+// 3 (per corner)" without a warning while refine dropped them.
+TEST_F(InfoCommand, PartialTextureCoordinatesAreReportedAsRefineDropsThem) {
+    const std::string file = write("partial.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\nf 3 2/2 4\n");
+    const std::string dropped = "texture coordinates dropped: some faces have them at some corners only (f v/vt v v/vt), and "
+                                "subdividing them needs one at every corner of a textured face";
+    const test::CommandRun info = test::run_command({"info", file});
+    ASSERT_EQ(info.exit_code, 0) << info.err;
+    const std::string head = file + ": valid after fixes\nwarning: " + dropped +
+                             "\nadaptive state: none (base mesh)\ntexture coordinates: 3 in the file, dropped (see the warnings)\n";
+    EXPECT_EQ(info.out.substr(0, head.size()), head) << info.out;
+    const test::CommandRun refine = test::run_command({"refine", file, "-o", path("out.obj"), "--level", "1"});
+    ASSERT_EQ(refine.exit_code, 0) << refine.err;
+    EXPECT_NE(refine.err.find(file + ": warning: " + dropped), std::string::npos) << refine.err;
+}
+
 // A saved level-1 refinement: 4 * 8 green faces of level 1; V = 6 + 12 edge points, E = 3F/2. By Loop's
 // rules the corners move to 132/256 of themselves (valence 4: beta = 31/256, the neighbours sum to 0)
 // and the edge points are 3/8 (a + b) (the opposite vertices sum to 0): 8 equilateral middle triangles
@@ -113,6 +131,18 @@ TEST_F(InfoCommand, DetailIsReportedWithItsLevels) {
                        "detail points on the nearest point of the surface (no ray hit along the limit normal): 7\n"),
               std::string::npos)
         << out;
+}
+
+// info saves nothing, so running out of memory in it says nothing about saving (issue 30, low items);
+// the commands that save still say that nothing was saved.
+TEST(InfoOutOfMemory, SaysNothingAboutSaving) {
+    const std::length_error too_long("vector::reserve");
+    EXPECT_EQ(out_of_memory_message("info", nullptr), "out of memory: the request needs more memory than the system would give");
+    EXPECT_EQ(out_of_memory_message("info", &too_long), "out of memory: a size beyond what this machine can hold (vector::reserve)");
+    for (const char* command : {"refine", "apply", "lods", "remesh", "render"}) {
+        EXPECT_TRUE(out_of_memory_message(command, nullptr).ends_with("system would give; nothing was saved")) << command;
+        EXPECT_TRUE(out_of_memory_message(command, &too_long).ends_with("(vector::reserve); nothing was saved")) << command;
+    }
 }
 
 }  // namespace

@@ -2,12 +2,14 @@
 // parent not a folder) keep the old file byte for byte and leave no temporary behind; streamed
 // chunks arrive in order whatever their sizes; names up to the file system's limit save; saves to
 // one hard-linked file at the same time leave one of them whole.
+#include <algorithm>
 #include <csignal>
 #include <filesystem>
 #include <latch>
 #include <thread>
 
 #include <sys/resource.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <gtest/gtest.h>
@@ -146,20 +148,59 @@ TEST_F(AtomicFile, LongestNamesSave) {
     EXPECT_EQ(entries(), 0u);
 }
 
-// The temporary name is the file's name cut to 244 bytes plus ".tmp-XXXXXX"; a two-byte character
-// across the cut is dropped whole. Here "x" + 126 two-byte characters: the cut falls inside the
-// 122nd, so the name keeps "x" and 121 characters (243 bytes).
+// The temporary name is the file's name cut to 226 bytes plus ".tmp-rgbsub-PID-XXXXXX" (room for a
+// pid of 10 digits); a two-byte character across the cut is dropped whole. Here "x" + 126 two-byte
+// characters: byte 226 is the second byte of the 113th, so the name keeps "x" and 112 characters (225
+// bytes).
 TEST_F(AtomicFile, TemporaryNamesDoNotSplitCharacters) {
     std::string name = "x";
     for (int i = 0; i < 126; ++i) name += "\xc3\xa9";
     AtomicFileWriter writer(path(name));
     const std::string temporary = fs::directory_iterator(folder_)->path().filename().string();
-    EXPECT_EQ(temporary.size(), 243u + 11u);
-    EXPECT_EQ(temporary.substr(0, 243), name.substr(0, 243));
-    EXPECT_EQ(temporary.substr(243, 5), ".tmp-");
+    const std::string pid = std::to_string(::getpid());
+    EXPECT_EQ(temporary.size(), 225u + 12u + pid.size() + 7u);
+    EXPECT_EQ(temporary.substr(0, 225), name.substr(0, 225));
+    EXPECT_EQ(temporary.substr(225, 12 + pid.size() + 1), ".tmp-rgbsub-" + pid + "-");
     writer.commit();
     EXPECT_EQ(entries(), 1u);
     EXPECT_TRUE(fs::exists(path(name)));
+}
+
+// A save killed by a signal it cannot catch leaves its temporary file; the next save into the folder
+// removes it once its process is gone (issue 30, low items), and only it: not a live save's temporary
+// file, not a file of another program with a similar name. Before, such files stayed for good.
+TEST_F(AtomicFile, TheNextSaveRemovesWhatAKilledSaveLeft) {
+    write_file_atomically(path("mesh.obj"), "old content\n");
+    const pid_t killed = ::fork();
+    if (killed == 0) {
+        AtomicFileWriter writer(path("mesh.obj"));
+        writer.write("part of the new content");
+        ::kill(::getpid(), SIGKILL);
+    }
+    int status = 0;
+    ASSERT_EQ(::waitpid(killed, &status, 0), killed);
+    ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL);
+    const std::string left = "mesh.obj.tmp-rgbsub-" + std::to_string(killed) + "-";
+    auto names = [&] {
+        std::vector<std::string> found;
+        for (const auto& entry : fs::directory_iterator(folder_)) found.push_back(entry.path().filename().string());
+        std::sort(found.begin(), found.end());
+        return found;
+    };
+    const std::vector<std::string> before = names();
+    ASSERT_EQ(before.size(), 2u);
+    ASSERT_TRUE(before[1].starts_with(left)) << before[1];
+    write("other.obj.tmp-abc123", "another program's file");
+    write("notes.tmp-rgbsub-1-XYZ", "not of our form");
+    AtomicFileWriter live(path("other.obj"));  // a save under way in a live process
+    write_file_atomically(path("mesh.obj"), "new content\n");
+    EXPECT_EQ(read(path("mesh.obj")), "new content\n");
+    const std::vector<std::string> after = names();
+    ASSERT_EQ(after.size(), 4u);
+    EXPECT_EQ(after[0], "mesh.obj");
+    EXPECT_EQ(after[1], "notes.tmp-rgbsub-1-XYZ");
+    EXPECT_EQ(after[2], "other.obj.tmp-abc123");
+    EXPECT_TRUE(after[3].starts_with("other.obj.tmp-rgbsub-" + std::to_string(::getpid()) + "-")) << after[3];
 }
 
 TEST_F(AtomicFile, NewFilesGetTheUsualPermissions) {

@@ -60,6 +60,23 @@ TEST_F(MaterialLibrary, MissingPiecesAreWarnings) {
                             "1 materials used by faces are defined in no material library (the first 'B')"));
 }
 
+// A name defined twice in one library and again in another is one material, its first definition,
+// with a warning (issue 30, low items); before, info counted 4 materials "defined" beside a warning
+// about the 2 names used.
+TEST_F(MaterialLibrary, ANameDefinedAgainKeepsItsFirstDefinition) {
+    write("twice.mtl", "newmtl A\nKd 1 0 0\nnewmtl A\nKd 0 1 0\n");
+    write("other.mtl", "newmtl A\nKd 0 0 1\nnewmtl B\nKd 1 1 0\n");
+    write("model.obj", std::string("mtllib twice.mtl other.mtl\n") + kTriangle + "usemtl A\nf 1 2 3\n");
+    const LoadedMesh mesh = read_obj_file(path("model.obj"));
+    ASSERT_EQ(mesh.materials.size(), 2u);
+    EXPECT_EQ(mesh.materials[0].name, "A");
+    EXPECT_EQ(mesh.materials[0].diffuse, glm::dvec3(1, 0, 0));
+    EXPECT_EQ(mesh.materials[1].name, "B");
+    ASSERT_EQ(mesh.warnings.size(), 1u);
+    EXPECT_EQ(mesh.warnings[0], "2 material definitions repeat a name defined before, the first 'A' in '" + path("twice.mtl") +
+                                    "'; each name keeps its first definition");
+}
+
 TEST_F(MaterialLibrary, ALibraryThatIsNotAFileIsNotRead) {
     fs::create_directories(folder_ / "dir.mtl");
     write("model.obj", std::string("mtllib dir.mtl\n") + kTriangle + "f 1 2 3\n");

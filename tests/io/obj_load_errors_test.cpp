@@ -99,6 +99,24 @@ TEST(ObjLoadErrors, SyntaxErrorsInVertexAndFaceLines) {
     expect_error("v 0 0 0\nf\n", ObjProblem::Syntax, 2, "face has 0 vertices, needs at least 3");
 }
 
+// Lines a lenient reader would guess at are refused with their line (issue 30, low items): a corner
+// with an empty or non-integer part after a slash, a v line with 5 or 8 numbers. Before, each loaded
+// silently (the normal part was not looked at, the numbers after x y z ignored). The forms that are
+// OBJ still load: w, a colour with and without alpha, v//vn and v/vt/vn with negative indices.
+TEST(ObjLoadErrors, CornersAndVertexLinesOfNoFormAreRefused) {
+    const std::string triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvn 0 0 1\n";
+    for (const std::string corner : {"1//x", "1/1/", "1//", "1/", "1/1/1/1", "1/1/x"})
+        expect_error(triangle + "f " + corner + " 2 3\n", ObjProblem::Syntax, 6, "face corner '" + corner + "' is not v, v/vt, v//vn or v/vt/vn");
+    expect_error("v 0 0 0 1 1\n", ObjProblem::Syntax, 1, "vertex has 5 numbers; reads x y z, x y z w or x y z r g b [a]");
+    expect_error("v 0 0 0 1 1 1 1 1\n", ObjProblem::Syntax, 1, "vertex has 8 or more numbers");
+    const std::string faces = "f 1//1 2//-1 3\nf 3/1/1 2/-1/-1 4\n";
+    for (const std::string v : {"v 0 0 0 1\nv 1 0 0 1\nv 0 1 0 1\nv 1 1 0 1\n", "v 0 0 0 1 0 0\nv 1 0 0 1 0 0\nv 0 1 0 1 0 0 0.5\nv 1 1 0 0 1 0\n",
+                              "v 0 0 0 # a comment\nv 1 0 0\nv 0 1 0\nv 1 1 0\n"}) {
+        const LoadedMesh loaded = read_obj_text(v + "vt 0 0\nvn 0 0 1\n" + faces, "test.obj");
+        EXPECT_EQ(loaded.triangles.size(), 2u) << v;
+    }
+}
+
 TEST(ObjLoadErrors, DegenerateFaceRepeatsAVertex) {
     expect_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 2\n", ObjProblem::DegenerateFace, 6, "vertex 2 appears twice");
 }

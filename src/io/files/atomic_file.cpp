@@ -12,29 +12,15 @@
 
 #include "io/files/save_target.h"
 #include "io/files/temporary_cleanup.h"
+#include "io/files/temporary_names.h"
 #include "io/obj/obj_error.h"
 
 namespace rgbio {
 
 namespace {
 
-constexpr std::size_t kMaxNameBytes = 255;  // NAME_MAX of Linux file systems
-constexpr std::string_view kTemporarySuffix = ".tmp-XXXXXX";
-
 [[noreturn]] void fail(const std::string& named, const std::string& what, int error) {
     throw SaveError("cannot save " + named + ": " + what + ": " + std::strerror(error));
-}
-
-// The file's name with the suffix, shortened (at a UTF-8 character boundary) so the whole fits.
-std::string temporary_pattern(const SaveTarget& target) {
-    std::string name = target.name;
-    const std::size_t room = kMaxNameBytes - kTemporarySuffix.size();
-    if (name.size() > room) {
-        std::size_t cut = room;
-        while (cut > 0 && (static_cast<unsigned char>(name[cut]) & 0xC0) == 0x80) --cut;
-        name.resize(cut);
-    }
-    return target.folder + "/" + name + std::string(kTemporarySuffix);
 }
 
 mode_t current_umask() {
@@ -49,13 +35,17 @@ mode_t current_umask() {
 // place or kept as the only complete copy.
 struct AtomicFileWriter::Temporary {
     Temporary(SaveTarget resolved, const std::string& named)
-        : target(std::move(resolved)), path(temporary_pattern(target)) {
+        : target(std::move(resolved)), path(temporary_pattern(target.folder, target.name)) {
+        // What saves killed before they could clean up left here (temporary_names.h).
+        remove_stale_temporaries(target.folder);
         // A termination signal between creating the file and registering it would leave the file:
         // it waits until the registration is made.
         const DeferredTerminationSignals held;
         fd = ::mkostemp(path.data(), O_CLOEXEC);
         if (fd < 0) fail(named, "cannot create a temporary file in its folder", errno);
         registration = std::make_unique<TemporaryRegistration>(path.c_str());
+        // Held while this process lives: a save in another pid namespace sees the file in use.
+        ::flock(fd, LOCK_SH | LOCK_NB);
     }
     ~Temporary() {
         if (fd >= 0) ::close(fd);
@@ -167,6 +157,9 @@ void AtomicFileWriter::overwrite_in_place() {
         const int error = errno;
         temporary.kept = true;
         temporary.registration->release();
+        // Under a name no later save removes as a stale temporary.
+        if (const std::string kept = kept_temporary_name(temporary.path); ::rename(temporary.path.c_str(), kept.c_str()) == 0)
+            temporary.path = kept;
         fail(named_, std::string(what) + " (the file is now incomplete; the complete content is in " + temporary.path + ")", error);
     };
     buffer_.resize(std::size_t{1} << 20);

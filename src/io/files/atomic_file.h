@@ -10,7 +10,8 @@
 // folder is fsynced. Where the target is (symbolic links followed, non-regular and read-only targets
 // refused) is decided by save_target.h. SIGINT, SIGTERM and SIGHUP during a save remove the
 // temporary file (temporary_cleanup.h). The temporary name is the file's name (shortened to fit the
-// 255-byte limit on names) plus ".tmp-XXXXXX".
+// 255-byte limit on names) plus ".tmp-rgbsub-PID-XXXXXX", so that the next save into the folder can
+// remove one that a save killed by another signal left (temporary_names.h).
 //
 // Written in place instead, like `cp` would: an existing file with several hard links (a rename would
 // make the name a new inode and split it from its other links) and an existing file whose owner or
@@ -18,8 +19,8 @@
 // still prepared in the temporary file first; then space for it is reserved in the file (fallocate),
 // so a full disk or a size limit is reported before the file is touched; the file is overwritten,
 // truncated and fsynced with SIGINT, SIGTERM and SIGHUP held back. That phase is not atomic against
-// a crash or an I/O error: if a write fails there, the temporary file is kept and the error names it,
-// as it then holds the only complete copy. That phase holds an exclusive flock on the file, so two
+// a crash or an I/O error: if a write fails there, the temporary file is kept (renamed
+// NAME.new-rgbsub-PID-XXXXXX) and the error names it, as it then holds the only complete copy. That phase holds an exclusive flock on the file, so two
 // saves in place at the same time take turns and the file ends as one of them, whole.
 #include <cstddef>
 #include <memory>

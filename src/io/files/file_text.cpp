@@ -4,7 +4,9 @@
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <mutex>
+#include <string>
 #include <utility>
 
 #include <fcntl.h>
@@ -25,6 +27,25 @@ constexpr std::size_t kMapFrom = std::size_t(4) << 20;
 // Read (or brought in) in pieces of this size, so that the progress moves on a slow disk.
 constexpr std::size_t kPieceBytes = std::size_t(16) << 20;
 const char* const kShrank = "the file shrank while reading";
+// A file whose size the system does not say (stat gives 0 for /proc's files) is read to its end, up
+// to this much.
+constexpr std::size_t kMaxUnsizedBytes = std::size_t(64) << 20;
+
+// The bytes of `fd` up to its end; empty when it has none.
+std::string read_to_end(int fd, const std::function<ObjError(const std::string&)>& unreadable) {
+    std::string content;
+    char chunk[1 << 16];
+    for (;;) {
+        const ssize_t got = ::read(fd, chunk, sizeof chunk);
+        if (got < 0 && errno == EINTR) continue;
+        if (got < 0) throw unreadable(std::strerror(errno));
+        if (got == 0) return content;
+        if (content.size() + static_cast<std::size_t>(got) > kMaxUnsizedBytes)
+            throw unreadable("its size is not given (a /proc or other system file) and it holds more than " +
+                             std::to_string(kMaxUnsizedBytes >> 20) + " MiB");
+        content.append(chunk, static_cast<std::size_t>(got));
+    }
+}
 
 // The mapped files being read, for the SIGBUS handler, which may take no lock: a slot is free while
 // begin is 0, claimed (by compare-exchange) while it is 1, and in use once it is the first byte.
@@ -136,6 +157,22 @@ FileText read_file_text(const std::string& path, const rgb::ProgressSpan& progre
     }
     FileText text;
     text.path_ = path;
+    if (info.st_size == 0) {
+        // Empty, or a system file whose size stat does not give: reading tells which.
+        std::string content;
+        try {
+            content = read_to_end(fd, unreadable);
+        } catch (...) {
+            ::close(fd);
+            throw;
+        }
+        ::close(fd);
+        text.size_ = content.size();
+        text.bytes_.reset(new char[content.size()]);
+        std::memcpy(text.bytes_.get(), content.data(), content.size());
+        progress.done();
+        return text;
+    }
     text.size_ = static_cast<std::size_t>(info.st_size);
     rgb::ProgressCounter read(progress, text.size_);
     const std::size_t blocks = rgb::parallel_blocks(text.size_, 4 * kPieceBytes);

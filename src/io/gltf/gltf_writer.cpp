@@ -199,26 +199,29 @@ std::vector<std::uint32_t> material_indices(const FaceLabels& face_materials, co
     return result;
 }
 
-std::vector<std::string> gltf_repairs(const GltfMesh& mesh) {
+std::vector<std::string> gltf_material_repairs(std::span<const Material> materials) {
     std::vector<std::string> warnings;
-    std::size_t names = 0, colours = 0, normals = 0;
+    std::size_t names = 0, colours = 0;
     const Material* first_name = nullptr;
     const Material* first_colour = nullptr;
-    for (const Material& m : mesh.materials) {
+    for (const Material& m : materials) {
         if (!is_utf8(m.name) && names++ == 0) first_name = &m;
         const bool in_range = is_colour_factor(m.diffuse.r) && is_colour_factor(m.diffuse.g) && is_colour_factor(m.diffuse.b);
         if (m.diffuse_texture.empty() && !in_range && colours++ == 0) first_colour = &m;
     }
-    for (const glm::dvec3& n : mesh.normals) normals += !unit_normal(n);
     if (names > 0)
         warnings.push_back(std::to_string(names) + " material names are not UTF-8, which glTF needs; written with \\xNN for their other bytes, the first " +
                            quoted_file_text(first_name->name));
     if (colours > 0)
         warnings.push_back(std::to_string(colours) + " materials have a diffuse colour (Kd) outside 0..1, clamped for glTF's baseColorFactor, the first " +
                            quoted_file_text(first_colour->name));
-    if (normals > 0)
-        warnings.push_back(std::to_string(normals) + " vertices have no normal (only degenerate faces around them): written as +z");
     return warnings;
+}
+
+std::optional<std::string> gltf_normal_repair(const GltfMesh& mesh) {
+    const auto normals = static_cast<std::size_t>(std::count_if(mesh.normals.begin(), mesh.normals.end(), [](const glm::dvec3& n) { return !unit_normal(n); }));
+    if (normals == 0) return std::nullopt;
+    return std::to_string(normals) + " vertices have no normal (only degenerate faces around them): written as +z";
 }
 
 namespace {
@@ -235,7 +238,7 @@ tinygltf::Mesh add_mesh(ModelBuilder& builder, const GltfMesh& mesh) {
     if (!mesh.normals.empty()) {
         std::vector<glm::dvec3> normals;
         for (std::uint32_t v : vertices.position) {
-            // A degenerate face's point has no normal: +z stands in (gltf_repairs warns).
+            // A degenerate face's point has no normal: +z stands in (gltf_normal_repair warns).
             normals.push_back(unit_normal(mesh.normals[v]).value_or(glm::dvec3(0.0, 0.0, 1.0)));
         }
         base.attributes["NORMAL"] = builder.add_floats<3>(normals, TINYGLTF_TYPE_VEC3, false);

@@ -11,6 +11,7 @@
 // 32-bit floats (glTF allows no doubles for them).
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -41,10 +42,12 @@ enum class GltfContainer { Json, Binary };
 // with that name), or kNoIndex; empty when face_materials is.
 std::vector<std::uint32_t> material_indices(const FaceLabels& face_materials, const std::vector<Material>& materials);
 
-// What format_gltf changes so that the file is always valid glTF, one warning per kind: material names
-// that are not UTF-8 (their other bytes written as \xNN text), diffuse colours outside [0, 1] (clamped;
-// not a number: 1), vertices whose normal has no direction (written as +z).
-std::vector<std::string> gltf_repairs(const GltfMesh& mesh);
+// What format_gltf changes so that the file is always valid glTF, one warning per kind. Of the
+// materials, known from the input before any work: names that are not UTF-8 (their other bytes
+// written as \xNN text), diffuse colours outside [0, 1] (clamped; not a number: 1).
+std::vector<std::string> gltf_material_repairs(std::span<const Material> materials);
+// Of the subdivided mesh: vertices whose normal has no direction (written as +z).
+std::optional<std::string> gltf_normal_repair(const GltfMesh& mesh);
 
 // The file content; image paths are written relative to output_folder.
 std::string format_gltf(const GltfMesh& mesh, GltfContainer container, const std::string& output_folder);

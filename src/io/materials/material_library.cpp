@@ -54,12 +54,15 @@ std::size_t announced_materials(std::string_view text) {
 // beyond what they may cost.
 std::optional<std::string> read_library(const fs::path& path, LibraryCost& cost, std::vector<Material>& materials) {
     auto not_read = [](const std::string& why) { return std::optional<std::string>(why); };
+    const auto too_large = [&](std::uintmax_t bytes) {
+        return cost.bytes + bytes > kMaxMaterialLibraryBytes
+                   ? not_read("it is " + std::to_string(bytes) + " bytes, beyond the " + std::to_string(kMaxMaterialLibraryBytes >> 20) +
+                              " MiB that the material libraries of a mesh may take together")
+                   : std::nullopt;
+    };
     // Its size first, before any of it is read.
     std::error_code error;
-    const std::uintmax_t bytes = fs::file_size(path, error);
-    if (!error && cost.bytes + bytes > kMaxMaterialLibraryBytes)
-        return not_read("it is " + std::to_string(bytes) + " bytes, beyond the " + std::to_string(kMaxMaterialLibraryBytes >> 20) +
-                        " MiB that the material libraries of a mesh may take together");
+    if (const std::uintmax_t bytes = fs::file_size(path, error); !error && too_large(bytes)) return too_large(bytes);
     FileText text;
     try {
         text = read_file_text(path.string());
@@ -67,6 +70,8 @@ std::optional<std::string> read_library(const fs::path& path, LibraryCost& cost,
     } catch (const ObjError& e) {
         return not_read(e.reason());
     }
+    // Again as read: a system file gives no size beforehand (and a file may have grown).
+    if (const std::optional<std::string> why = too_large(text.view().size())) return why;
     const std::size_t defined = announced_materials(text.view());
     if (cost.materials + defined > kMaxLibraryMaterials)
         return not_read("it defines " + std::to_string(defined) + " materials, beyond the " + std::to_string(kMaxLibraryMaterials) +
@@ -116,6 +121,22 @@ void warn_about_undefined_materials(const std::vector<Material>& materials, cons
                            quoted_file_text(*first) + "); those faces keep the name only");
 }
 
+// A name defined again (in its library or a later one) would be counted twice and written twice to
+// glTF, while faces get its first definition (material_indices): later ones are dropped.
+void drop_redefined_materials(std::vector<Material>& materials, std::vector<std::string>& warnings) {
+    std::set<std::string, std::less<>> seen;
+    std::size_t again = 0;
+    std::string first;
+    std::erase_if(materials, [&](const Material& m) {
+        if (seen.insert(m.name).second) return false;
+        if (again++ == 0) first = quoted_file_text(m.name) + " in " + quoted_file_text(m.library, 200);
+        return true;
+    });
+    if (again > 0)
+        warnings.push_back(std::to_string(again) + " material definitions repeat a name defined before, the first " + first +
+                           "; each name keeps its first definition");
+}
+
 }  // namespace
 
 fs::path resolve_file_reference(const std::string& written, const fs::path& folder) {
@@ -147,6 +168,7 @@ std::vector<Material> read_material_libraries(const std::vector<std::string>& li
     if (unread > 1)
         warnings.push_back(std::to_string(unread) + " material libraries were not read, the first " + first_unread + " (" + first_why +
                            "); faces keep their material names");
+    drop_redefined_materials(materials, warnings);
     warn_about_missing_textures(materials, warnings);
     // An unread library was reported already; without any library, names are all a file has.
     if (unread == 0 && !libraries.empty()) warn_about_undefined_materials(materials, face_materials, warnings);

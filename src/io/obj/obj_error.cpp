@@ -31,6 +31,7 @@ const char* problem_name(ObjProblem p) {
         case ObjProblem::ComplexPolygon: return "polygon too complex";
         case ObjProblem::Truncated: return "truncated file";
         case ObjProblem::BadTag: return "bad tag line";
+        case ObjProblem::OutOfScale: return "mesh out of scale";
         case ObjProblem::Malformed: return "malformed file";
     }
     return "unknown problem";

@@ -28,6 +28,7 @@ enum class ObjProblem {
     ComplexPolygon,       // a polygon too tangled to triangulate within the work budget
     Truncated,            // a file rgbsub wrote (its header says so) that was cut short
     BadTag,               // an OpenSubdiv tag line (t crease/corner/...) is malformed or names no edge/vertex
+    OutOfScale,           // valid, but too small or too large for the numbers rgbsub works or draws in (io/scale_check.h)
     Malformed,            // a file of another format (glTF, PLY, Assimp's) that its reader refuses; the reason says why
 };
 

@@ -58,6 +58,12 @@ void check_encoding(std::string_view text, const std::string& file) {
 // OBJ whitespace within a line, tested directly rather than searched for in a set (this runs for every byte).
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
 
+// Digits after an optional minus sign (an OBJ index, relative when negative).
+bool is_integer(std::string_view s) {
+    if (s.starts_with('-')) s.remove_prefix(1);
+    return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
 std::string_view trim(std::string_view s) {
     std::size_t b = 0, e = s.size();
     while (b < e && is_blank(s[b])) ++b;
@@ -208,13 +214,20 @@ private:
             if (token.empty()) fail(ObjProblem::Syntax, "vertex has " + std::to_string(i) + " coordinates, needs 3");
             p[i] = parse_real(token, "vertex coordinate");
         }
-        // x y z w (rational curves' weight) is ignored; x y z r g b [a] carries a colour (MeshLab);
-        // anything else after x y z (a trailing comment, say) is ignored as before.
+        // x y z w (rational curves' weight) is ignored; x y z r g b [a] carries a colour (MeshLab, alpha
+        // ignored); words after x y z that are not numbers (a trailing comment, say) are ignored as
+        // before. Two more numbers, or five and more, fit no form: a guess would silently misread them.
         std::array<std::string_view, 3> colour_tokens;
-        for (std::string_view& token : colour_tokens) token = next_token(rest);
-        const bool has_colour = !colour_tokens[2].empty() &&
-                                std::all_of(colour_tokens.begin(), colour_tokens.end(),
-                                            [](std::string_view t) { return std::holds_alternative<double>(read_obj_real(t)); });
+        std::size_t numbers = 0;
+        for (std::string_view token = next_token(rest); !token.empty() && numbers < 5; token = next_token(rest)) {
+            if (!std::holds_alternative<double>(read_obj_real(token))) break;
+            if (numbers < colour_tokens.size()) colour_tokens[numbers] = token;
+            ++numbers;
+        }
+        if (numbers == 2 || numbers == 5)
+            fail(ObjProblem::Syntax, "vertex has " + std::string(numbers == 2 ? "5" : "8 or more") +
+                                         " numbers; reads x y z, x y z w or x y z r g b [a]");
+        const bool has_colour = numbers >= 3;
         if (has_colour && out_.colours.empty()) {
             out_.colours.resize(out_.positions.size(), glm::dvec3(0.0));
             out_.has_colour.resize(out_.positions.size(), 0);
@@ -285,9 +298,13 @@ private:
             corners_.push_back(parse_index(token.substr(0, slash), token, before_.positions + out_.positions.size(), "face index", "vertices"));
             if (slash == std::string_view::npos) continue;
             const std::string_view after = token.substr(slash + 1);
-            if (std::count(after.begin(), after.end(), '/') > 1)
-                fail(ObjProblem::Syntax, "face corner " + quoted_file_text(token) + " is not v, v/vt, v//vn or v/vt/vn");
-            const std::string_view texcoord = after.substr(0, after.find('/'));
+            const std::size_t second = after.find('/');
+            const std::string_view texcoord = after.substr(0, second);
+            // The normal index is not used, but a corner that is not one of the four forms with
+            // integers (1/, 1//, 1/1/, 1//x) is refused: it may be a misread or cut line.
+            const bool has_normal = second != std::string_view::npos;
+            if ((has_normal && !is_integer(after.substr(second + 1))) || (!has_normal && texcoord.empty()))
+                fail(ObjProblem::Syntax, "face corner " + quoted_file_text(token) + " is not v, v/vt, v//vn or v/vt/vn with integers");
             if (texcoord.empty()) continue;
             corner_texcoords_.resize(corners, kNoIndex);
             corner_texcoords_.push_back(

@@ -22,16 +22,28 @@ std::size_t bytes_per_triangle(MemoryUse use) {
         case MemoryUse::Budget: return 160;      // 122
         case MemoryUse::Load: return 245;        // 195, issue 30: 169
         case MemoryUse::Remesh: return 490;      // 391 per detail point
+        case MemoryUse::Editor: return 650;      // 515, opening saved files (edit --screenshot)
     }
     return bytes_per_triangle(MemoryUse::Tolerance);  // the dearest
 }
 
-std::size_t default_triangle_limit(MemoryUse use) {
+namespace {
+// Three quarters of the machine's physical memory over `cost` bytes a triangle.
+std::size_t triangles_in_memory(std::size_t cost) {
     const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGESIZE);
     const double memory = pages > 0 && page > 0 ? 0.75 * double(pages) * double(page) : 16e9;
+    return static_cast<std::size_t>(memory / double(cost));
+}
+}  // namespace
+
+std::size_t default_triangle_limit(MemoryUse use) {
     std::size_t cost = bytes_per_triangle(use);
     if (use != MemoryUse::ScreenLod) cost = std::max(cost, bytes_per_triangle(MemoryUse::Load));
-    return static_cast<std::size_t>(memory / double(cost));
+    return triangles_in_memory(cost);
+}
+
+std::size_t editor_triangle_limit(MemoryUse use) {
+    return triangles_in_memory(std::max(bytes_per_triangle(use), bytes_per_triangle(MemoryUse::Editor)));
 }
 
 namespace {

@@ -24,6 +24,7 @@ enum class MemoryUse {
     Budget,     // an apply budget line: the LOD driver from a uniform start
     Load,       // loading a saved file: the state's records and the mesh rebuilt from them
     Remesh,     // remesh, per point of the detail it samples
+    Editor,     // the editor: the document's mesh, its display geometry, picking index and GL copies
 };
 
 // Peak bytes per triangle on each path, measured as whole processes by tests/bench/memory_bench.cpp
@@ -34,6 +35,10 @@ std::size_t bytes_per_triangle(MemoryUse use);
 // a triangle costs there; for a path that saves a mesh, over what loading it back costs if that is
 // more, so that whatever a command saves under its default limit loads again on the same machine.
 std::size_t default_triangle_limit(MemoryUse use);
+
+// The editor's limit for work on a path: what a triangle costs the editor that holds it, or the
+// path's own cost if that is more.
+std::size_t editor_triangle_limit(MemoryUse use);
 
 class TooLarge : public std::runtime_error {
 public:
