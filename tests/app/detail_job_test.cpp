@@ -12,6 +12,7 @@
 #include "rgb/mesh/mesh.h"
 #include "support/same_mesh.h"
 #include "support/test_meshes.h"
+#include "support/set_level.h"
 
 namespace {
 
@@ -34,7 +35,7 @@ TEST(DetailJob, InSlicesItGivesTheCommandLinesResultAndItsScriptLineReplaysIt) {
                                                    std::tuple{rgbio::DetailCriterion::MaxEdge, 4.0, "max-edge 4%\n"}}) {
         SCOPED_TRACE(line);
         rgb::Mesh mesh = rgbtest::make_rgb_mesh(base);
-        rgb::set_level(mesh, 2);  // what the mesh held before does not matter
+        rgbtest::set_level(mesh, 2);  // what the mesh held before does not matter
         app::DetailJob job(mesh, edit_of(criterion, percent), 1'000'000);
         EXPECT_GT(run_in_slices(job), 1);
         EXPECT_EQ(job.progress(), 1.0f);

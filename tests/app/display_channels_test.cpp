@@ -16,6 +16,7 @@
 #include "app/document.h"
 #include "io/obj_reader.h"
 #include "rgb/lod/requests.h"
+#include "support/set_level.h"
 
 namespace app {
 namespace {
@@ -123,7 +124,7 @@ TEST_P(DisplayChannels, DisplayedColoursAndUvsAreTheSavedFilesAfterAdaptiveEdits
                                                            {2, rgb::Sphere{{3.5, 0.5, 0.0}, 1.0}}}};
     for (const auto& [level, sphere] : edits) {
         SCOPED_TRACE(testing::Message() << "after set_level " << level);
-        rgb::set_level(document.mesh(), level, sphere);
+        rgbtest::set_level(document.mesh(), level, sphere);
         rgbio::SaveOptions options;
         options.positions = saved_positions;
         document.save(out.string(), options);

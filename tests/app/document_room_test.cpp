@@ -8,6 +8,7 @@
 #include "render/surface_geometry.h"
 #include "rgb/lod/refine.h"
 #include "rgb/lod/requests.h"
+#include "support/set_level.h"
 
 namespace app {
 namespace {
@@ -36,7 +37,7 @@ LoadedDocument bunny_at_level_2() {
 void refine_around_first_corner(Document& document, double radius) {
     const glm::dvec3 centre = document.mesh().insertion_position(document.mesh().face_vertices(rgb::FaceId(0))[0]);
     document.begin_edit("refine");
-    const rgb::RequestStats stats = rgb::set_level(document.mesh(), 3, rgb::Sphere{centre, radius});
+    const rgb::RequestStats stats = rgbtest::set_level(document.mesh(), 3, rgb::Sphere{centre, radius});
     document.end_edit(stats.splits > 0);
 }
 
@@ -58,7 +59,7 @@ TEST(DocumentRoom, AnEditStartsWithRoomForAQuarterMoreThanThereAre) {
     document.adopt(bunny_at_level_2(), "bunny.obj");
     // Everything one level deeper: four times the triangles, past the room kept at adoption.
     document.begin_edit("set all");
-    rgb::set_level(document.mesh(), 3);
+    rgbtest::set_level(document.mesh(), 3);
     document.end_edit(true);
     const std::size_t faces = document.mesh().num_faces();
     ASSERT_EQ(faces, 235136u);
@@ -66,7 +67,7 @@ TEST(DocumentRoom, AnEditStartsWithRoomForAQuarterMoreThanThereAre) {
     document.begin_edit("refine");
     const ArrayStorage begun = storage_of(document);
     const glm::dvec3 centre = document.mesh().insertion_position(document.mesh().face_vertices(rgb::FaceId(0))[0]);
-    rgb::set_level(document.mesh(), 4, rgb::Sphere{centre, 0.25 * document.geometry().bounds(document.mesh()).radius});
+    rgbtest::set_level(document.mesh(), 4, rgb::Sphere{centre, 0.25 * document.geometry().bounds(document.mesh()).radius});
     document.end_edit(true);
     ASSERT_GT(document.mesh().num_faces(), faces + faces / 20);
     ASSERT_LE(document.mesh().num_faces(), faces + faces / 4);

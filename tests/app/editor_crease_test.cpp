@@ -15,6 +15,7 @@
 #include "rgb/mesh/sharp_angle.h"
 #include "rgb/values/loop_geometry.h"
 #include "support/same_mesh.h"
+#include "support/set_level.h"
 
 namespace app {
 namespace {
@@ -121,7 +122,7 @@ TEST_F(EditorCreases, DragTagsTheEdgesItPassesAndTheRefinedSurfaceFollows) {
     EXPECT_EQ(editor.document().mesh().num_faces(), refined.num_faces());
     EXPECT_EQ(editor.document().mesh().num_vertices(), refined.num_vertices());
     rgb::Mesh direct(std::make_shared<const rgb::BaseMesh>(base().positions(), base().faces(), base().sharp_features()));
-    rgb::set_level(direct, 2);
+    rgbtest::set_level(direct, 2);
     EXPECT_TRUE(rgbtest::same_mesh(editor.document().mesh(), direct));
 
     const std::filesystem::path saved = std::filesystem::path(::testing::TempDir()) / "editor_creases_saved.obj";
@@ -167,7 +168,7 @@ TEST_F(EditorCreases, EditsBeforeAndAfterARetagUndoAndRedoThroughIt) {
     ASSERT_EQ(editor.document().history().undo_steps(), 3u);
 
     rgb::Mesh direct(std::make_shared<const rgb::BaseMesh>(base().positions(), base().faces(), base().sharp_features()));
-    rgb::set_level(direct, 2);
+    rgbtest::set_level(direct, 2);
     EXPECT_TRUE(rgbtest::same_mesh(tagged_level2, direct));
 
     ASSERT_TRUE(editor.undo());

@@ -16,6 +16,7 @@
 #include "stroke_support.h"
 #include "support/same_mesh.h"
 #include "support/same_slots.h"
+#include "support/set_level.h"
 
 namespace app {
 namespace {
@@ -166,7 +167,7 @@ TEST_F(EditorScript, StrokeOffTheMeshLeavesNoUndoStep) {
 TEST_F(EditorScript, FloodFillRunsInSlicesAndUndoes) {
     const rgb::Mesh original = editor.document().mesh();
     rgb::Mesh whole = original;
-    rgb::set_level(whole, 2);
+    rgbtest::set_level(whole, 2);
     editor.start_flood_fill(2);
     ASSERT_NE(editor.job(), nullptr);
     int frames = 0;

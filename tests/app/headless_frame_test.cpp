@@ -26,6 +26,7 @@
 #include "test_meshes.h"
 #include "test_paths.h"
 #include "textured_quad.h"
+#include "support/set_level.h"
 
 namespace app {
 namespace {
@@ -210,7 +211,7 @@ TEST(HeadlessFrame, ADenseMeshShowsTheCageQuestionThenTheCageWithItsDetail) {
 TEST(HeadlessFrame, DistanceHeatMapOnACageWithDetailOnly) {
     const std::filesystem::path folder = test::fresh_folder("distance_frames");
     rgb::Mesh cage = render_test::bumpy_cage(1, 4);
-    rgb::set_level(cage, 3, rgb::Sphere{{0.0, 0.0, 1.0}, 0.7});
+    rgbtest::set_level(cage, 3, rgb::Sphere{{0.0, 0.0, 1.0}, 0.7});
     rgbio::save_mesh(cage, (folder / "cage.obj").string());
     HeadlessFrame frame;
     frame.size = {1280, 800};

@@ -12,6 +12,7 @@
 #include "support/random_operations.h"
 #include "support/same_mesh.h"
 #include "support/test_meshes.h"
+#include "support/set_level.h"
 
 namespace app {
 namespace {
@@ -61,10 +62,10 @@ TEST(RequestPieces, RefinePiecesGoCoarseToFine) {
 TEST(RequestPieces, SetAllInPiecesIsSetLevel) {
     for (int level : {2, 0, 3, 1}) {
         rgb::Mesh mesh = rgbtest::make_rgb_mesh(rgbtest::icosahedron());
-        rgb::set_level(mesh, 1, rgb::Sphere{glm::dvec3(0.0, 0.0, 1.0), 0.8});
-        rgb::set_level(mesh, 4, rgb::Sphere{glm::dvec3(1.0, 0.0, 0.0), 0.5});
+        rgbtest::set_level(mesh, 1, rgb::Sphere{glm::dvec3(0.0, 0.0, 1.0), 0.8});
+        rgbtest::set_level(mesh, 4, rgb::Sphere{glm::dvec3(1.0, 0.0, 0.0), 0.5});
         rgb::Mesh whole = mesh;
-        rgb::set_level(whole, level);
+        rgbtest::set_level(whole, level);
         const std::vector<rgb::LevelRequest> pieces = set_all_pieces(mesh, level, 16.0);
         EXPECT_GT(pieces.size(), 2u);
         apply_all(mesh, pieces);

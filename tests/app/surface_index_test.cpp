@@ -16,6 +16,7 @@
 #include "rgb/mesh/mesh.h"
 #include "support/random_operations.h"
 #include "support/test_meshes.h"
+#include "support/set_level.h"
 
 namespace app {
 namespace {
@@ -74,7 +75,7 @@ TEST(SurfaceIndex, PicksWhatTestingEverySlotPicksAndFollowsEdits) {
     std::mt19937 rng(11);
     // Levels 0 to 4 side by side, so the index holds triangles of many sizes.
     for (int i = 0; i < 6; ++i)
-        rgb::set_level(mesh, 1 + i % 4,
+        rgbtest::set_level(mesh, 1 + i % 4,
                        rgb::Sphere{mesh.base_space_position(rgbtest::random_live_vertex(mesh, rng)), 2.0 * mesh.base().longest_edge()});
     render::MeshChanges changes(mesh);
     render::SurfaceGeometry geometry;

@@ -22,6 +22,7 @@
 #include "support/same_mesh.h"
 #include "support/same_slots.h"
 #include "support/test_meshes.h"
+#include "support/set_level.h"
 
 namespace app {
 namespace {
@@ -73,7 +74,7 @@ TEST(UndoHistory, UndoAndRedoGiveBackEverySlotOverManyRandomStrokes) {
     // Half way back and a new edit: the redo side is gone.
     for (int i = 0; i < 6; ++i) ASSERT_TRUE(history.undo());
     history.begin_edit("branch");
-    rgb::set_level(mesh, 1);
+    rgbtest::set_level(mesh, 1);
     history.end_edit(true);
     EXPECT_FALSE(history.can_redo());
     ASSERT_TRUE(history.undo());
@@ -84,11 +85,11 @@ TEST(UndoHistory, AbandoningAnEditPutsTheMeshBack) {
     rgb::Mesh mesh = rgbtest::make_rgb_mesh(rgbtest::icosahedron());
     UndoHistory history(mesh);
     history.begin_edit("one");
-    rgb::set_level(mesh, 2);
+    rgbtest::set_level(mesh, 2);
     history.end_edit(true);
     const rgb::Mesh before = mesh;
     history.begin_edit("two");
-    rgb::set_level(mesh, 4);
+    rgbtest::set_level(mesh, 4);
     EXPECT_TRUE(history.abandon_edit());
     EXPECT_TRUE(rgbtest::same_slots(mesh, before));
     EXPECT_FALSE(history.editing());
@@ -104,7 +105,7 @@ TEST(UndoHistory, ACrossingStoppedOrAbandonedKeepsEveryMeshReachable) {
     UndoHistory history(mesh);
     const rgb::Mesh bare = mesh;
     history.begin_edit("set all");
-    rgb::set_level(mesh, 3);
+    rgbtest::set_level(mesh, 3);
     history.end_edit(true, "level 3\n");
     const rgb::Mesh refined = mesh;
 
@@ -148,7 +149,7 @@ TEST(UndoHistory, AnEditThatChangedNothingLeavesNoStep) {
     rgb::Mesh mesh = rgbtest::make_rgb_mesh(rgbtest::icosahedron());
     UndoHistory history(mesh);
     history.begin_edit("nothing");
-    rgb::set_level(mesh, 0);
+    rgbtest::set_level(mesh, 0);
     history.end_edit(true);
     EXPECT_FALSE(history.can_undo());
 }
@@ -273,10 +274,10 @@ TEST(UndoHistory, AChangeOutsideAnEditDropsTheHistory) {
     rgb::Mesh mesh = rgbtest::make_rgb_mesh(rgbtest::icosahedron());
     UndoHistory history(mesh);
     history.begin_edit("inside");
-    rgb::set_level(mesh, 2);
+    rgbtest::set_level(mesh, 2);
     history.end_edit(true);
     const rgb::Mesh after_outside = [&] {
-        rgb::set_level(mesh, 1);
+        rgbtest::set_level(mesh, 1);
         return mesh;
     }();
     EXPECT_FALSE(history.undo());

@@ -100,7 +100,7 @@ std::vector<UniformLevel> uniform_errors(const std::string& path, std::size_t ca
     std::vector<UniformLevel> levels;
     rgb::Mesh mesh = rgbio::load_mesh(path);
     for (int level = 0; level <= rgb::kMaxLevel; ++level) {
-        if (level > 0) rgb::set_level(mesh, level);
+        if (level > 0) rgb::refine_uniform(mesh, level);
         levels.push_back({level, mesh.num_faces(), rgb::displayed_surface_error(mesh).max_error});
         if (mesh.num_faces() * 4 > cap) break;
     }

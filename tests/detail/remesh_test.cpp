@@ -30,6 +30,7 @@
 #include "rgb/values/restore_state.h"
 #include "rgb/values/surface_error.h"
 #include "support/detail_sampling.h"
+#include "support/set_level.h"
 
 namespace remesh_test {
 
@@ -149,13 +150,13 @@ TEST_F(Remesh, EveryDisplayedVertexUpToTheSampledLevelLiesOnTheMesh) {
     rgb::Mesh level0(remeshed_->base);
     expect_on_dense(level0, *dense_, k, 200);
     rgb::Mesh uniform(remeshed_->base);
-    rgb::set_level(uniform, k);
+    rgbtest::set_level(uniform, k);
     expect_on_dense(uniform, *dense_, k, 300);
     std::mt19937 rng(5);
     rgb::Mesh spheres(remeshed_->base);
     for (int i = 0; i < 5; ++i) {
         const glm::dvec3 centre = dense_->positions[rng() % dense_->positions.size()];
-        rgb::set_level(spheres, 1 + static_cast<int>(rng() % static_cast<unsigned>(k)), rgb::Sphere{centre, 0.3});
+        rgbtest::set_level(spheres, 1 + static_cast<int>(rng() % static_cast<unsigned>(k)), rgb::Sphere{centre, 0.3});
     }
     expect_on_dense(spheres, *dense_, k, 300);
 }
@@ -183,7 +184,7 @@ TEST_F(Remesh, RequestsStayCanonicalAndSurviveARestore) {
     rgb::Mesh restored = rgb::restore_state(rgb::capture_state(forward));
     for (rgb::VertexId v : restored.vertices()) ASSERT_EQ(rgb::displayed_position(restored, v), rgb::displayed_position(forward, v));
     // Level 0 again: the cage, its vertices on M.
-    rgb::set_level(restored, 0);
+    rgbtest::set_level(restored, 0);
     EXPECT_EQ(restored.num_faces(), remeshed_->base->num_faces());
     expect_on_dense(restored, *dense_, 0, 200);
 }
@@ -228,7 +229,7 @@ TEST_F(Remesh, ToleranceMeasuresTheDenseMesh) {
 // triangle count of a uniform level, its largest error to M is below the uniform level's.
 TEST_F(Remesh, BudgetSpendsWhereTheSurfaceDepartsFromTheDenseMesh) {
     rgb::Mesh uniform(remeshed_->base);
-    rgb::set_level(uniform, 2);
+    rgbtest::set_level(uniform, 2);
     rgb::LodSettings settings;
     settings.value = rgb::on_mesh(rgb::detail_error_value(remeshed_->base));
     settings.max_triangles = uniform.num_faces();
@@ -386,7 +387,7 @@ TEST_F(UnevenRemesh, EverySampledVertexOfTheReloadedFileLiesOnTheMesh) {
     const int finest = base->detail()->finest_level();
     for (int level = 0; level <= finest; ++level) {
         rgb::Mesh uniform(base);
-        rgb::set_level(uniform, level);
+        rgbtest::set_level(uniform, level);
         const std::size_t checked = expect_sampled_on_dense(uniform, *dense_);
         if (level <= base->detail()->coarsest_level()) {
             EXPECT_EQ(checked, uniform.num_vertices()) << "level " << level;
@@ -398,7 +399,7 @@ TEST_F(UnevenRemesh, EverySampledVertexOfTheReloadedFileLiesOnTheMesh) {
     rgb::Mesh spheres(base);
     for (int i = 0; i < 6; ++i) {
         const glm::dvec3 centre = dense_->positions[rng() % dense_->positions.size()];
-        rgb::set_level(spheres, 1 + static_cast<int>(rng() % static_cast<unsigned>(finest + 1)), rgb::Sphere{centre, 0.4});
+        rgbtest::set_level(spheres, 1 + static_cast<int>(rng() % static_cast<unsigned>(finest + 1)), rgb::Sphere{centre, 0.4});
     }
     EXPECT_GT(expect_sampled_on_dense(spheres, *dense_), 0u);
     rgb::LodSettings settings;

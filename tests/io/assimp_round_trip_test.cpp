@@ -14,6 +14,7 @@
 #include "io/obj/obj_error.h"
 #include "io/obj_reader.h"
 #include "rgb/lod/requests.h"
+#include "support/set_level.h"
 
 namespace rgbio {
 namespace {
@@ -118,14 +119,14 @@ TEST(AssimpRoundTrip, LoadedFilesComeBackWithTheirLabelsAtLevelZero) {
         // Saved in another folder, the mtllib lines still lead to the input's libraries.
         EXPECT_EQ(described_materials(at_level0), described_materials(input));
 
-        rgb::set_level(asset.mesh, 2);
+        rgbtest::set_level(asset.mesh, 2);
         // Colours are written at every level; level-0 UVs without the UV layout are not.
         EXPECT_EQ(dropped_attributes(asset.mesh, asset.attributes.get()).empty(), input.triangle_texcoords.empty());
         save_mesh(asset.mesh, refined, options);
         LoadedAsset resumed = load_asset(refined);
         ASSERT_EQ(resumed.mesh.num_faces(), asset.mesh.num_faces()) << "the state was not used";
         EXPECT_EQ(resumed.attributes->labels, asset.attributes->labels);
-        rgb::set_level(resumed.mesh, 0);
+        rgbtest::set_level(resumed.mesh, 0);
         options.attributes = resumed.attributes;
         save_mesh(resumed.mesh, back, options);
         const LoadedMesh final = read_obj_file(back);

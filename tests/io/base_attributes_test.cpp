@@ -15,6 +15,7 @@
 #include "obj_test_support.h"
 #include "rgb/lod/requests.h"
 #include "scratch_folder.h"
+#include "support/set_level.h"
 
 namespace rgbio {
 namespace {
@@ -52,8 +53,8 @@ TEST_F(TexturedMesh, ALevelZeroSaveKeepsTextureCoordinatesAndColours) {
     write("in.obj", kTextured);
     LoadedAsset asset = load_asset(path("in.obj"));
     // Refined and back: the mesh is its base mesh again.
-    rgb::set_level(asset.mesh, 2);
-    rgb::set_level(asset.mesh, 0);
+    rgbtest::set_level(asset.mesh, 2);
+    rgbtest::set_level(asset.mesh, 0);
     EXPECT_TRUE(dropped_attributes(asset.mesh, asset.attributes.get()).empty());
     SaveOptions options;
     options.attributes = asset.attributes;
@@ -73,7 +74,7 @@ TEST_F(TexturedMesh, ALevelZeroSaveKeepsTextureCoordinatesAndColours) {
 TEST_F(TexturedMesh, ARefinedSaveWithoutTheUvLayoutLeavesTheUvsOutAndSaysWhy) {
     write("in.obj", kTextured);
     LoadedAsset asset = load_asset(path("in.obj"));
-    rgb::set_level(asset.mesh, 1);
+    rgbtest::set_level(asset.mesh, 1);
     const std::vector<std::string> dropped = dropped_attributes(asset.mesh, asset.attributes.get());
     ASSERT_EQ(dropped.size(), 1u);
     EXPECT_TRUE(test::has_warning(dropped, "the texture coordinates (vt) are not written: the mesh is refined"));
@@ -118,7 +119,7 @@ TEST_F(TexturedMesh, ARefinedSaveWritesEachVertexsColourByThePositionRules) {
 TEST_F(TexturedMesh, TextureCoordinatesOfARefinedFileWithoutABaseUvsSectionAreIgnoredWithAWarning) {
     write("in.obj", kTextured);
     LoadedAsset asset = load_asset(path("in.obj"));
-    rgb::set_level(asset.mesh, 1);
+    rgbtest::set_level(asset.mesh, 1);
     save_mesh(asset.mesh, path("refined.obj"));
     // Another program gave the refined faces texture coordinates, which have no base counterpart.
     std::string text = read(path("refined.obj"));

@@ -21,6 +21,7 @@
 #include "rgb/values/surface_error.h"
 #include "scratch_folder.h"
 #include "support/same_mesh.h"
+#include "support/set_level.h"
 
 namespace rgbio {
 namespace {
@@ -90,7 +91,7 @@ TEST_F(CliDetail, ToleranceIsReachedAndPrinted) {
 TEST_F(CliDetail, BallLinesTakeAKindAndTheFormatterRoundTrips) {
     const rgb::Sphere ball{{0.7, 0.2, 0.1}, 0.45};
     rgb::Mesh base = octahedron();
-    rgb::set_level(base, 3);
+    rgbtest::set_level(base, 3);
     for (const rgb::RequestKind kind : {rgb::RequestKind::Refine, rgb::RequestKind::Coarsen, rgb::RequestKind::Set}) {
         DetailEdit edit;
         edit.criterion = DetailCriterion::MaxEdge;

@@ -18,6 +18,7 @@
 #include "obj_test_support.h"
 #include "rgb/lod/requests.h"
 #include "scratch_folder.h"
+#include "support/set_level.h"
 
 namespace rgbio {
 namespace {
@@ -78,7 +79,7 @@ protected:
     std::string refined_save(SavedPositions positions) {
         write("in.obj", coloured_grid());
         asset_ = load_asset(path("in.obj"));
-        rgb::set_level(asset_.mesh, 3, rgb::Sphere{{2, 1.5, 0}, 1.2});
+        rgbtest::set_level(asset_.mesh, 3, rgb::Sphere{{2, 1.5, 0}, 1.2});
         rgb::LevelRequest everywhere;
         everywhere.kind = rgb::RequestKind::Refine;
         everywhere.level = 1;
@@ -112,7 +113,7 @@ TEST_F(ColourRoundTrip, ARefinedSaveResumesWithItsColoursAndLevelZeroGivesBackTh
         EXPECT_EQ(lines_starting(format_obj(resumed.mesh, options), "v "), lines_starting(text, "v "));
 
         // At level 0 the displayed colours are the base colours (limit ones would be averaged).
-        rgb::set_level(resumed.mesh, 0);
+        rgbtest::set_level(resumed.mesh, 0);
         options.state = false;
         options.positions = SavedPositions::Displayed;
         EXPECT_EQ(v_line_colours(format_obj(resumed.mesh, options)), input);

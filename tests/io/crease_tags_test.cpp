@@ -13,6 +13,7 @@
 #include "rgb/lod/requests.h"
 #include "rgb/values/restore_state.h"
 #include "support/same_mesh.h"
+#include "support/set_level.h"
 
 namespace rgbio {
 namespace {
@@ -95,7 +96,7 @@ rgb::Mesh tagged_octahedron(const std::string& tags) { return build_mesh(with_ta
 
 TEST(CreaseTags, SavedStateKeepsTheTagsAndRestoresTheSameMesh) {
     rgb::Mesh mesh = tagged_octahedron("t crease 2/1/0 0 2 10\nt crease 2/1/0 2 4 2\nt corner 1/1/0 5 1\n");
-    rgb::set_level(mesh, 3, rgb::Sphere{{0.7, 0.7, 0.0}, 0.5});
+    rgbtest::set_level(mesh, 3, rgb::Sphere{{0.7, 0.7, 0.0}, 0.5});
     const std::string text = format_obj(mesh, {});
     EXPECT_NE(text.find("#rgb state 4\n"), std::string::npos);
     EXPECT_NE(text.find("#rgb crease 0 2 10 2 4 2\n#rgb corner 5 1\n#rgb end\n"), std::string::npos);
@@ -139,7 +140,7 @@ TEST(CreaseTags, TheBodysTagLinesDescribeItsOwnEdgesAtTheirLevel) {
 
 TEST(CreaseTags, NewTagsKeepTheVertexSetAndMoveThePositions) {
     rgb::Mesh mesh = tagged_octahedron("");
-    rgb::set_level(mesh, 2, rgb::Sphere{{1.0, 0.0, 0.0}, 0.8});
+    rgbtest::set_level(mesh, 2, rgb::Sphere{{1.0, 0.0, 0.0}, 0.8});
     rgb::SharpFeatures features;
     features.edges = {{0, 2, rgb::kInfiniteSharpness}};
     const rgb::Mesh tagged = rgb::with_sharp_features(mesh, features);
@@ -148,7 +149,7 @@ TEST(CreaseTags, NewTagsKeepTheVertexSetAndMoveThePositions) {
     EXPECT_FALSE(rgbtest::same_mesh(tagged, mesh)) << "the crease moves the vertices near it";
     // Refining the tagged mesh from scratch gives the same mesh.
     rgb::Mesh direct = tagged_octahedron("t crease 2/1/0 0 2 10\n");
-    rgb::set_level(direct, 2, rgb::Sphere{{1.0, 0.0, 0.0}, 0.8});
+    rgbtest::set_level(direct, 2, rgb::Sphere{{1.0, 0.0, 0.0}, 0.8});
     EXPECT_TRUE(rgbtest::same_mesh(tagged, direct));
 }
 

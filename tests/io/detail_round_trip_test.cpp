@@ -21,6 +21,7 @@
 #include "rgb/lod/requests.h"
 #include "rgb/mesh/detail_positions.h"
 #include "rgb/values/loop_geometry.h"
+#include "support/set_level.h"
 
 namespace rgbio {
 namespace {
@@ -107,7 +108,7 @@ void expect_on_detail(const rgb::Mesh& mesh, const rgb::BaseMesh& reference) {
 TEST(DetailRoundTrip, ASavedCageResumesWithItsDetail) {
     const auto base = cage_with_detail();
     rgb::Mesh mesh(base);
-    rgb::set_level(mesh, 3, rgb::Sphere{{1, 0, 0}, 0.8});
+    rgbtest::set_level(mesh, 3, rgb::Sphere{{1, 0, 0}, 0.8});
     const std::string text = format_obj(mesh, {});
     EXPECT_NE(text.find("#rgb state 5\n"), std::string::npos);
     EXPECT_NE(text.find("#rgb detail-origin 12345 7 scan with spaces.obj\n"), std::string::npos);
@@ -123,9 +124,9 @@ TEST(DetailRoundTrip, ASavedCageResumesWithItsDetail) {
     for (rgb::VertexId v : loaded.adaptive->vertices()) ASSERT_EQ(loaded.positions[i++], rgb::displayed_position(*loaded.adaptive, v));
     // Refined further and brought back to level 0 from the reloaded file alone.
     rgb::Mesh resumed = *loaded.adaptive;
-    rgb::set_level(resumed, 4, rgb::Sphere{{0, 0, 1}, 0.5});
+    rgbtest::set_level(resumed, 4, rgb::Sphere{{0, 0, 1}, 0.5});
     expect_on_detail(resumed, *base);
-    rgb::set_level(resumed, 0);
+    rgbtest::set_level(resumed, 0);
     expect_on_detail(resumed, *base);
     EXPECT_EQ(resumed.num_vertices(), 6u);
     // Saved again: the same bytes as the detail saved first, at the same mesh.
@@ -135,7 +136,7 @@ TEST(DetailRoundTrip, ASavedCageResumesWithItsDetail) {
 
 TEST(DetailRoundTrip, EditsAreCaught) {
     rgb::Mesh mesh(cage_with_detail());
-    rgb::set_level(mesh, 2);
+    rgbtest::set_level(mesh, 2);
     const std::string text = format_obj(mesh, {});
     // A changed detail value no longer gives the v lines: loaded as a plain mesh, with the reason.
     std::string changed = text;
@@ -160,7 +161,7 @@ TEST(DetailRoundTrip, EditsAreCaught) {
 TEST(DetailRoundTrip, LevelsPerFaceResumeExactly) {
     const auto base = cage_with_detail(kMixedLevels);
     rgb::Mesh mesh(base);
-    rgb::set_level(mesh, 4, rgb::Sphere{{1, 0, 0}, 0.9});
+    rgbtest::set_level(mesh, 4, rgb::Sphere{{1, 0, 0}, 0.9});
     const std::string text = format_obj(mesh, {});
     EXPECT_NE(text.find("#rgb state 6\n"), std::string::npos);
     EXPECT_NE(text.find("#rgb detail-face-levels 1 3 2 2 1 3 2 1\n"), std::string::npos);
@@ -171,9 +172,9 @@ TEST(DetailRoundTrip, LevelsPerFaceResumeExactly) {
     EXPECT_TRUE(std::equal(detail.face_levels().begin(), detail.face_levels().end(), kMixedLevels.begin(), kMixedLevels.end()));
     expect_on_detail(*loaded.adaptive, *base);
     rgb::Mesh resumed = *loaded.adaptive;
-    rgb::set_level(resumed, 5);
+    rgbtest::set_level(resumed, 5);
     expect_on_detail(resumed, *base);
-    rgb::set_level(resumed, 0);
+    rgbtest::set_level(resumed, 0);
     expect_on_detail(resumed, *base);
     rgb::Mesh again = *loaded.adaptive;
     EXPECT_EQ(format_obj(again, {}), text);
@@ -183,7 +184,7 @@ TEST(DetailRoundTrip, LevelsPerFaceResumeExactly) {
 // longer fit the positions drop the state with a warning naming the section's line.
 TEST(DetailRoundTrip, TamperedLevelsAreCaught) {
     rgb::Mesh mesh(cage_with_detail(kMixedLevels));
-    rgb::set_level(mesh, 2);
+    rgbtest::set_level(mesh, 2);
     const std::string text = format_obj(mesh, {});
     const std::string levels = "#rgb detail-face-levels 1 3 2 2 1 3 2 1\n";
     const std::size_t levels_line = line_of(text, levels);
@@ -231,7 +232,7 @@ TEST(DetailRoundTrip, AFileOfFormat5LoadsExactly) {
     EXPECT_EQ(format_obj(again, {}), kFormat5Cage);
     // Refined, every vertex of level up to 2 is at its stored point: the uniform grid's values as read.
     rgb::Mesh refined = *loaded.adaptive;
-    rgb::set_level(refined, 3);
+    rgbtest::set_level(refined, 3);
     const rgb::BaseMesh& base = refined.base();
     const std::vector<rgb::SurfacePoint> points = rgb::DetailPositions::grid_points(base, 2);
     const std::vector<glm::dvec3> samples = detail.samples(base);

@@ -20,6 +20,7 @@
 #include "rgb/lod/requests.h"
 #include "scratch_folder.h"
 #include "support/same_mesh.h"
+#include "support/set_level.h"
 
 namespace rgbio {
 namespace {
@@ -101,8 +102,8 @@ protected:
 
 TEST_F(LabelledMesh, RefinedFacesInheritTheirBaseFacesLabelsAndTheFileGroupsThem) {
     LoadedAsset asset = load_grid();
-    rgb::set_level(asset.mesh, 3, rgb::Sphere{{1.2, 1.7, 0.0}, 1.1});
-    rgb::set_level(asset.mesh, 1, rgb::Sphere{{3.5, 3.5, 0.0}, 0.8});
+    rgbtest::set_level(asset.mesh, 3, rgb::Sphere{{1.2, 1.7, 0.0}, 1.1});
+    rgbtest::set_level(asset.mesh, 1, rgb::Sphere{{3.5, 3.5, 0.0}, 0.8});
     ASSERT_GT(asset.mesh.num_faces(), 400u);
     SaveOptions options;
     options.attributes = asset.attributes;
@@ -172,14 +173,14 @@ TEST_F(LabelledMesh, RefineSaveLoadLevelZeroGivesBackTheInputLabels) {
     std::vector<std::string> warnings;
     LoadedAsset asset = load_asset(path("in.obj"), &warnings);
     EXPECT_TRUE(test::has_warning(warnings, "bow-tie") || test::has_warning(warnings, "fans")) << warnings.size();
-    rgb::set_level(asset.mesh, 4, rgb::Sphere{{1.0, 1.0, 0.0}, 0.6});
+    rgbtest::set_level(asset.mesh, 4, rgb::Sphere{{1.0, 1.0, 0.0}, 0.6});
     SaveOptions options;
     options.attributes = asset.attributes;
     save_mesh(asset.mesh, path("refined.obj"), options);
 
     LoadedAsset resumed = load_asset(path("refined.obj"));
     EXPECT_EQ(resumed.attributes->labels, asset.attributes->labels);
-    rgb::set_level(resumed.mesh, 0);
+    rgbtest::set_level(resumed.mesh, 0);
     options.attributes = resumed.attributes;
     save_mesh(resumed.mesh, path("back.obj"), options);
 
@@ -197,7 +198,7 @@ TEST_F(LabelledMesh, RefineSaveLoadLevelZeroGivesBackTheInputLabels) {
 // those are not in slot order, and the records must name the lines they are on.
 TEST_F(LabelledMesh, ALightlyRefinedMeshTakesItsBaseFacesFromTheGroupedFaceLines) {
     LoadedAsset asset = load_grid();
-    rgb::set_level(asset.mesh, 1, rgb::Sphere{{0.5, 0.5, 0.0}, 0.3});
+    rgbtest::set_level(asset.mesh, 1, rgb::Sphere{{0.5, 0.5, 0.0}, 0.3});
     SaveOptions options;
     options.attributes = asset.attributes;
     const std::string text = format_obj(asset.mesh, options);
@@ -214,7 +215,7 @@ TEST_F(LabelledMesh, ALightlyRefinedMeshTakesItsBaseFacesFromTheGroupedFaceLines
 TEST_F(LabelledMesh, LabelsAddedElsewhereToAStateWithoutThemBecomeTheBaseFacesLabels) {
     write("grid.obj", labelled_grid());
     rgb::Mesh mesh = load_mesh(path("grid.obj"));
-    rgb::set_level(mesh, 1);
+    rgbtest::set_level(mesh, 1);
     std::istringstream saved(format_obj(mesh, {}));
     std::string alike, differing;
     std::size_t face = 0;
@@ -237,7 +238,7 @@ TEST_F(LabelledMesh, LabelsAddedElsewhereToAStateWithoutThemBecomeTheBaseFacesLa
 TEST_F(LabelledMesh, AMeshWithoutLabelsHasNoLabelLinesOrSection) {
     write("plain.obj", test::kOctahedron);
     LoadedAsset asset = load_asset(path("plain.obj"));
-    rgb::set_level(asset.mesh, 2);
+    rgbtest::set_level(asset.mesh, 2);
     SaveOptions options;
     options.attributes = asset.attributes;
     const std::string text = format_obj(asset.mesh, options);
@@ -246,7 +247,7 @@ TEST_F(LabelledMesh, AMeshWithoutLabelsHasNoLabelLinesOrSection) {
 
 TEST_F(LabelledMesh, LabelsEditedInAnotherProgramWinOverTheState) {
     LoadedAsset asset = load_grid();
-    rgb::set_level(asset.mesh, 1);
+    rgbtest::set_level(asset.mesh, 1);
     SaveOptions options;
     options.attributes = asset.attributes;
     std::string text = format_obj(asset.mesh, options);

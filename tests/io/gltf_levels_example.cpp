@@ -26,6 +26,7 @@
 #include "rgb/values/uv_evaluator.h"
 #include "rgb/values/vertex_channel.h"
 #include "textured_grid.h"
+#include "support/set_level.h"
 
 namespace {
 
@@ -75,14 +76,14 @@ int main(int argc, char** argv) {
         options.uvs = rgbio::uv_layout(asset.uvs, asset.mesh, std::nullopt);
         options.state = false;
         rgb::Mesh adaptive = asset.mesh;
-        rgb::set_level(adaptive, 3, rgb::Sphere{{2, 1.5, 0}, 1.2});
+        rgbtest::set_level(adaptive, 3, rgb::Sphere{{2, 1.5, 0}, 1.2});
         rgb::LevelRequest everywhere;
         everywhere.kind = rgb::RequestKind::Refine;
         everywhere.level = 1;
         rgb::apply_request(adaptive, everywhere);
         write_all(adaptive, options, folder / "adaptive");
         rgb::Mesh uniform = asset.mesh;
-        rgb::set_level(uniform, 2);
+        rgbtest::set_level(uniform, 2);
         options.positions = rgbio::SavedPositions::Limit;
         write_all(uniform, options, folder / "limit");
     } catch (const std::exception& e) {

@@ -29,6 +29,7 @@
 #include "rgb/values/restore_state.h"
 #include "support/oracle_limit.h"
 #include "support/same_mesh.h"
+#include "support/set_level.h"
 
 namespace rgbio {
 namespace {
@@ -122,7 +123,7 @@ std::string restore_problem(const rgb::MeshState& state) {
 // parallel blocks of vertices (2^15 or more each) and of faces (2^16) at least.
 rgb::MeshState large_grid_state() {
     rgb::Mesh mesh = build_mesh(read_obj_text(grid_obj(64), "grid.obj"));
-    rgb::set_level(mesh, 2);
+    rgbtest::set_level(mesh, 2);
     return rgb::capture_state(mesh);
 }
 
@@ -213,8 +214,8 @@ TEST(MeshFile, CoarseningAfterLoadingMatchesCoarseningWithoutSaving) {
 // whole. Level 8 of the octahedron (524,288 triangles) with normals is several buffers long.
 TEST(MeshFile, StreamedFileIsExactlyTheFormattedText) {
     rgb::Mesh mesh = octahedron();
-    rgb::set_level(mesh, 8);
-    rgb::set_level(mesh, 3, rgb::Sphere{{1, 0, 0}, 0.5});
+    rgbtest::set_level(mesh, 8);
+    rgbtest::set_level(mesh, 3, rgb::Sphere{{1, 0, 0}, 0.5});
     const SaveOptions options{.normals = true};
     const std::string expected = format_obj(mesh, options);
     ASSERT_GT(expected.size(), 3 * AtomicFileWriter::kBufferBytes);

@@ -19,7 +19,10 @@ using test::load_error;
 // A saved adaptive octahedron: header, v and f lines, then the #rgb state.
 std::string saved_file() {
     rgb::Mesh mesh = build_mesh(read_obj_text(test::kOctahedron, "octahedron.obj"));
-    rgb::set_level(mesh, 2, rgb::Sphere{{1, 0, 0}, 0.5});
+    rgb::LevelRequest request;
+    request.level = 2;
+    request.sphere = rgb::Sphere{{1, 0, 0}, 0.5};
+    rgb::apply_request(mesh, request);
     return format_obj(mesh, {});
 }
 

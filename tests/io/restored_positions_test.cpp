@@ -12,14 +12,15 @@
 #include "rgb/lod/requests.h"
 #include "rgb/values/loop_geometry.h"
 #include "rgb/values/restore_state.h"
+#include "support/set_level.h"
 
 namespace rgbio {
 namespace {
 
 rgb::Mesh mesh_with_dead_slots() {
     rgb::Mesh mesh = build_mesh(read_obj_text(test::kOctahedron, "octahedron.obj"));
-    rgb::set_level(mesh, 7);  // 131,072 faces: the positions' pass runs in several blocks
-    rgb::set_level(mesh, 2, rgb::Sphere{{1, 0, 0}, 0.6});
+    rgbtest::set_level(mesh, 7);  // 131,072 faces: the positions' pass runs in several blocks
+    rgbtest::set_level(mesh, 2, rgb::Sphere{{1, 0, 0}, 0.6});
     return mesh;
 }
 

@@ -19,6 +19,7 @@
 #include "obj_test_support.h"
 #include "rgb/lod/requests.h"
 #include "support/same_mesh.h"
+#include "support/set_level.h"
 
 namespace rgbio {
 namespace {
@@ -27,9 +28,9 @@ namespace {
 // once (the two faces touching both get two split edges: blue ones), and a small ball to level 3.
 rgb::Mesh adaptive_octahedron() {
     rgb::Mesh mesh = build_mesh(read_obj_text(test::kOctahedron, "octahedron.obj"));
-    rgb::set_level(mesh, 1, rgb::Sphere{{1, 0, 0}, 0.05});
-    rgb::set_level(mesh, 1, rgb::Sphere{{0, 1, 0}, 0.05});
-    rgb::set_level(mesh, 3, rgb::Sphere{{0.5, 0.3, 0.2}, 0.1});
+    rgbtest::set_level(mesh, 1, rgb::Sphere{{1, 0, 0}, 0.05});
+    rgbtest::set_level(mesh, 1, rgb::Sphere{{0, 1, 0}, 0.05});
+    rgbtest::set_level(mesh, 3, rgb::Sphere{{0.5, 0.3, 0.2}, 0.1});
     return mesh;
 }
 

@@ -18,6 +18,7 @@
 #include "obj_test_support.h"
 #include "rgb/lod/requests.h"
 #include "support/same_mesh.h"
+#include "support/set_level.h"
 
 namespace rgbio {
 namespace {
@@ -48,7 +49,7 @@ rgb::Mesh torus() { return build_mesh(read_obj_text(torus_obj(24, 16), "torus.ob
 // The torus refined to level 3 in a small ball: most base vertices and faces untouched.
 rgb::Mesh refined_torus() {
     rgb::Mesh mesh = torus();
-    rgb::set_level(mesh, 3, rgb::Sphere{{1.35, 0, 0}, 0.2});
+    rgbtest::set_level(mesh, 3, rgb::Sphere{{1.35, 0, 0}, 0.2});
     return mesh;
 }
 
@@ -115,9 +116,9 @@ std::string as_version_2(const std::string& text) {
 
 TEST(StateFormat, TheFileIsAtMostHalfAgainItsVAndFLines) {
     rgb::Mesh unrefined = torus(), in_a_ball = torus(), everywhere = torus(), deep_in_a_ball = torus();
-    rgb::set_level(in_a_ball, 2, rgb::Sphere{{1.35, 0, 0}, 0.2});
-    rgb::set_level(everywhere, 2);
-    rgb::set_level(deep_in_a_ball, 6, rgb::Sphere{{0, 1.35, 0}, 0.05});
+    rgbtest::set_level(in_a_ball, 2, rgb::Sphere{{1.35, 0, 0}, 0.2});
+    rgbtest::set_level(everywhere, 2);
+    rgbtest::set_level(deep_in_a_ball, 6, rgb::Sphere{{0, 1.35, 0}, 0.05});
     for (const rgb::Mesh* mesh : {&unrefined, &in_a_ball, &everywhere, &deep_in_a_ball})
         EXPECT_LE(size_over_body(format_obj(*mesh, {})), 1.5) << mesh->num_faces() << " faces";
     // Where the base mesh is in the body, the state hardly adds to it.
@@ -231,7 +232,7 @@ TEST(StateFormat, ARunLongerThanItsSectionIsAnError) {
 // problem is still reported at its own line, and of two, the first in the file.
 TEST(StateFormat, TheFirstBrokenAddressLineIsNamedInALongSection) {
     rgb::Mesh mesh = torus();
-    rgb::set_level(mesh, 4);  // 768 * 4^4 faces, half as many vertices: over 10,000 address lines
+    rgbtest::set_level(mesh, 4);  // 768 * 4^4 faces, half as many vertices: over 10,000 address lines
     const std::string text = format_obj(mesh, {});
     std::vector<std::size_t> address_starts;  // offsets of the "#rgb a " lines
     for (std::size_t at = text.find("\n#rgb a "); at != std::string::npos; at = text.find("\n#rgb a ", at + 1))

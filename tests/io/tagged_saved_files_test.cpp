@@ -12,6 +12,7 @@
 #include "obj_test_support.h"
 #include "rgb/lod/requests.h"
 #include "scratch_folder.h"
+#include "support/set_level.h"
 
 namespace rgbio {
 namespace {
@@ -24,7 +25,7 @@ protected:
     std::string save_tagged(const std::string& name, int level, const SaveOptions& options = {}) const {
         const std::string tags = "t crease 2/1/0 0 2 10\nt crease 2/1/0 2 4 10\nt corner 1/1/0 5 10\n";
         rgb::Mesh mesh = build_mesh(read_obj_text(test::kOctahedron + tags, "tagged.obj"));
-        rgb::set_level(mesh, level);
+        rgbtest::set_level(mesh, level);
         save_mesh(mesh, path(name), options);
         return path(name);
     }

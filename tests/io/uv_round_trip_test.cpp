@@ -21,6 +21,7 @@
 #include "rgb/values/mesh_uvs.h"
 #include "rgb/values/uv_evaluator.h"
 #include "textured_grid.h"
+#include "support/set_level.h"
 
 namespace rgbio {
 namespace {
@@ -69,7 +70,7 @@ TEST(UvRoundTrip, RefinedSaveResumesAndLevelZeroGivesBackTheInputUvsBitForBit) {
     const std::string input = textured_grid();
     MeshWithUvs original = load(input);
     ASSERT_NE(original.uvs, nullptr);
-    rgb::set_level(original.mesh, 3, rgb::Sphere{{2, 1.5, 0}, 1.2});
+    rgbtest::set_level(original.mesh, 3, rgb::Sphere{{2, 1.5, 0}, 1.2});
     rgb::LevelRequest everywhere;
     everywhere.kind = rgb::RequestKind::Refine;
     everywhere.level = 1;
@@ -89,7 +90,7 @@ TEST(UvRoundTrip, RefinedSaveResumesAndLevelZeroGivesBackTheInputUvsBitForBit) {
         ++line;
     }
 
-    rgb::set_level(resumed.mesh, 0);
+    rgbtest::set_level(resumed.mesh, 0);
     EXPECT_TRUE(shows_the_input_uvs(resumed, read_obj_text(input, "test.obj")));
 }
 
@@ -104,16 +105,16 @@ TEST(UvRoundTrip, TheAssimpTexturedModelsComeBackFromRefinementWithTheirUvs) {
         MeshWithUvs m{input, std::move(mesh), nullptr};
         m.uvs = uv_layout(base_uv_channel(input, m.mesh, warnings), m.mesh, std::nullopt);
         ASSERT_NE(m.uvs, nullptr) << name;
-        rgb::set_level(m.mesh, 2);
+        rgbtest::set_level(m.mesh, 2);
         MeshWithUvs resumed = load(saved(m));
-        rgb::set_level(resumed.mesh, 0);
+        rgbtest::set_level(resumed.mesh, 0);
         EXPECT_TRUE(shows_the_input_uvs(resumed, input)) << name;
     }
 }
 
 TEST(UvRoundTrip, LimitPositionsComeWithLimitUvs) {
     MeshWithUvs m = load(textured_grid());
-    rgb::set_level(m.mesh, 2, rgb::Sphere{{2, 1, 0}, 1.0});
+    rgbtest::set_level(m.mesh, 2, rgb::Sphere{{2, 1, 0}, 1.0});
     SaveOptions options;
     options.uvs = m.uvs;
     options.positions = SavedPositions::Limit;
@@ -133,7 +134,7 @@ TEST(UvRoundTrip, LimitPositionsComeWithLimitUvs) {
 
 TEST(UvRoundTrip, TheSavedInterpolationResumesAndAnExplicitOneWins) {
     MeshWithUvs m = load(textured_grid(), rgb::UvInterpolation::Boundaries);
-    rgb::set_level(m.mesh, 1);
+    rgbtest::set_level(m.mesh, 1);
     const std::string text = saved(m);
     EXPECT_NE(text.find("#rgb uv-interpolation boundaries\n"), std::string::npos);
     EXPECT_EQ(load(text).uvs->interpolation(), rgb::UvInterpolation::Boundaries);
@@ -142,13 +143,13 @@ TEST(UvRoundTrip, TheSavedInterpolationResumesAndAnExplicitOneWins) {
 
 TEST(UvRoundTrip, AMeshWithoutUvsKeepsTheStateWithoutTheSection) {
     rgb::Mesh mesh = build_mesh(read_obj_text(test::kOctahedron, "test.obj"));
-    rgb::set_level(mesh, 1);
+    rgbtest::set_level(mesh, 1);
     EXPECT_EQ(format_obj(mesh, {}).find("base-uvs"), std::string::npos);
 }
 
 TEST(UvRoundTrip, ABadBaseUvsSectionIsRefusedNamingTheLine) {
     MeshWithUvs m = load(textured_grid());
-    rgb::set_level(m.mesh, 1);
+    rgbtest::set_level(m.mesh, 1);
     const std::string text = saved(m);
     auto replaced = [&](const std::string& from, const std::string& to) {
         std::string t = text;
@@ -170,7 +171,7 @@ TEST(UvRoundTrip, FacesWithoutVtStayWithoutAndAFaceWithSomeDropsTheUvs) {
     MeshWithUvs m = load(square + "f 2 4 3\n");
     ASSERT_NE(m.uvs, nullptr);
     EXPECT_EQ(m.uvs->channel().faces_without_uvs, std::vector<std::uint32_t>{1});
-    rgb::set_level(m.mesh, 2);
+    rgbtest::set_level(m.mesh, 2);
     const LoadedMesh resumed = read_obj_text(saved(m), "test.obj");
     ASSERT_TRUE(resumed.adaptive);
     EXPECT_EQ(*resumed.base_uvs, m.uvs->channel());

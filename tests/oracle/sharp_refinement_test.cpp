@@ -23,6 +23,7 @@
 #include "support/oracle_checks.h"
 #include "support/same_mesh.h"
 #include "vertex_neighbourhood.h"
+#include "support/set_level.h"
 
 namespace osdoracle {
 namespace {
@@ -82,7 +83,7 @@ TEST_P(SharpRefinement, EveryVertexOfRandomAdaptiveMeshesEqualsFarsVertexOfItsLe
             ASSERT_TRUE(agrees_with_far(mesh, ids, far, &worst_adaptive)) << "trial " << trial;
         }
         // Reversible: level 0 gives the base mesh back, bit for bit.
-        rgb::set_level(mesh, 0);
+        rgbtest::set_level(mesh, 0);
         ASSERT_EQ(mesh.num_vertices(), input.positions.size());
         for (rgb::VertexId v : mesh.vertices())
             ASSERT_EQ(rgb::displayed_position(mesh, v), input.positions[v.idx]) << "trial " << trial;
@@ -136,7 +137,7 @@ TEST(SharpRefinementDeep, SmallRegionsAtTaggedVerticesEqualFarToLevelSix) {
         rgbtest::IdentityTracker ids(mesh, far.oracle());
         const glm::dvec3 a = c.input.positions[c.input.creases.front().a], b = c.input.positions[c.input.creases.front().b];
         for (const glm::dvec3& centre : {a, b, 0.5 * (a + b)}) {
-            rgb::set_level(mesh, deep, rgb::Sphere{centre, 0.05 * glm::distance(a, b)});
+            rgbtest::set_level(mesh, deep, rgb::Sphere{centre, 0.05 * glm::distance(a, b)});
             ASSERT_TRUE(rgbtest::invariants_hold(mesh)) << c.name;
             ASSERT_TRUE(agrees_with_far(mesh, ids, far, &worst_adaptive)) << c.name;
         }

@@ -25,6 +25,7 @@
 #include "rgb/values/uv_evaluator.h"
 #include "support/same_mesh.h"
 #include "uv_meshes.h"
+#include "support/set_level.h"
 
 namespace osdoracle {
 namespace {
@@ -163,7 +164,7 @@ TEST_P(UvRefinement, EveryCornerOfRandomAdaptiveMeshesEqualsFarsUvOfItsDisplayLe
             rgb::apply_request(mesh, r);
             ASSERT_TRUE(agrees_with_far_uv(mesh, ids, worst_adaptive)) << "trial " << trial;
         }
-        rgb::set_level(mesh, 0);
+        rgbtest::set_level(mesh, 0);
         ASSERT_TRUE(shows_input_uvs(mesh)) << "trial " << trial;
     }
 }
@@ -260,7 +261,7 @@ TEST(UvRefinementDeep, SmallRegionsOnSeamsEqualFarToLevelSix) {
             // Around the vertices where seams meet or end: grid (2, 1) and (2, 2), two of the equator's.
             const bool grid = c.name != "equator_seam_on_crease";
             for (int v : grid ? std::vector<int>{7, 12} : std::vector<int>{0, 3}) {
-                rgb::set_level(mesh, deep, rgb::Sphere{in.positions[static_cast<std::size_t>(v)], 0.15});
+                rgbtest::set_level(mesh, deep, rgb::Sphere{in.positions[static_cast<std::size_t>(v)], 0.15});
                 for (rgb::FaceId f : mesh.faces())
                     for (int k = 0; k < 3; ++k) {
                         const rgb::VertexId x = mesh.face_vertices(f)[static_cast<std::size_t>(k)];

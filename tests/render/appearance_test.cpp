@@ -16,6 +16,7 @@
 #include "rgb/lod/requests.h"
 #include "rgb/mesh/mesh.h"
 #include "test_meshes.h"
+#include "support/set_level.h"
 
 namespace {
 
@@ -96,7 +97,7 @@ TEST(Appearance, CornersCarryTheirBaseFacesMaterialAndTheExactChannels) {
 
     for (int target : {3, 1, 4}) {
         SCOPED_TRACE(testing::Message() << "after set_level " << target);
-        rgb::set_level(mesh, target, rgb::Sphere{{-0.3, 0.0, 0.2}, 0.7});
+        rgbtest::set_level(mesh, target, rgb::Sphere{{-0.3, 0.0, 0.2}, 0.7});
         geometry.update(mesh, changes);
         changes.clear();
         expect_appearance_of_base_space(mesh, geometry);
@@ -166,7 +167,7 @@ TEST(Appearance, CheckerShowsTheTextureCellsRefinedOrNot) {
     EXPECT_EQ(class_at(first_cell), render_test::PixelClass::Neutral);
     EXPECT_EQ(class_at(second_cell), render_test::PixelClass::Blue);
 
-    rgb::set_level(mesh, 3, rgb::Sphere{{0.2, 0.0, -0.1}, 0.6});
+    rgbtest::set_level(mesh, 3, rgb::Sphere{{0.2, 0.0, -0.1}, 0.6});
     const render::Image refined = render::render_headless(mesh, options, view, look);
     std::size_t changed = 0;
     for (int y = 0; y < view.size.y; ++y)

@@ -20,6 +20,7 @@
 #include "rgb/mesh/sharp_angle.h"
 #include "rgb/mesh/sharp_edges.h"
 #include "support/obj_reader.h"
+#include "support/set_level.h"
 
 namespace {
 
@@ -61,7 +62,7 @@ TEST(CreaseNormals, IncrementalUpdatesOfATaggedMeshEqualARebuild) {
     render::SurfaceGeometry geometry;
     geometry.rebuild(mesh);
     for (int level : {2, 3, 1, 0}) {
-        rgb::set_level(mesh, level, rgb::Sphere{{4.0, 0.0, 2.0}, 1.5});
+        rgbtest::set_level(mesh, level, rgb::Sphere{{4.0, 0.0, 2.0}, 1.5});
         geometry.update(mesh, changes);
         changes.clear();
         render::SurfaceGeometry fresh;
@@ -83,7 +84,7 @@ TEST(CreaseNormals, SharpEdgeLinesFollowedSlotBySlotEqualALookAtEverySlot) {
     render::SharpEdgeLines followed;
     followed.rebuild(mesh);
     for (int level : {2, 3, 1, 0}) {
-        rgb::set_level(mesh, level, rgb::Sphere{{4.0, 0.0, 2.0}, 1.5});
+        rgbtest::set_level(mesh, level, rgb::Sphere{{4.0, 0.0, 2.0}, 1.5});
         followed.update(mesh, geometry.update(mesh, changes));
         changes.clear();
         render::SharpEdgeLines fresh;

@@ -20,6 +20,7 @@
 #include "rgb/mesh/mesh.h"
 #include "rgb/values/surface_error.h"
 #include "test_meshes.h"
+#include "support/set_level.h"
 
 namespace {
 
@@ -41,7 +42,7 @@ double lit(float colour, int plain_red) { return colour * plain_red / render::kP
 
 TEST(DistanceHeatMap, EachFaceShowsTheColourOfItsDistancesBand) {
     rgb::Mesh mesh = render_test::bumpy_cage(0, 4);
-    rgb::set_level(mesh, 3, rgb::Sphere{{0.2, -0.1, 1.0}, 0.8});
+    rgbtest::set_level(mesh, 3, rgb::Sphere{{0.2, -0.1, 1.0}, 0.8});
     const HeadlessView view{{480, 480}, 0.0f, 0.0f};  // seen from +z
     const Image heat = render::render_headless(mesh, flat(Colouring::DetailDistance), view);
     const Image plain = render::render_headless(mesh, flat(Colouring::Plain), view);

@@ -3,6 +3,7 @@
 #include "rgb/lod/refine.h"
 #include "rgb/lod/requests.h"
 #include "test_meshes.h"
+#include "support/set_level.h"
 
 namespace render_test {
 
@@ -40,7 +41,7 @@ render::RenderOptions limit_with_cage_and_brush() {
 
 rgb::Mesh locally_refined_sphere() {
     rgb::Mesh mesh = icosphere(1);
-    rgb::set_level(mesh, 3, rgb::Sphere{{0.3, 0.3, 0.9}, 0.6});
+    rgbtest::set_level(mesh, 3, rgb::Sphere{{0.3, 0.3, 0.9}, 0.6});
     return mesh;
 }
 

@@ -17,6 +17,7 @@
 #include "rgb/mesh/mesh.h"
 #include "rgb/values/loop_geometry.h"
 #include "test_meshes.h"
+#include "support/set_level.h"
 
 namespace {
 
@@ -43,7 +44,7 @@ render::OrbitCamera camera_for(const rgb::Mesh& mesh, const HeadlessView& view) 
 
 TEST(Screenshot, SameInputGivesTheSameBytes) {
     rgb::Mesh mesh = render_test::icosphere(2);
-    rgb::set_level(mesh, 2, rgb::Sphere{{0.0, 0.0, 1.0}, 0.5});
+    rgbtest::set_level(mesh, 2, rgb::Sphere{{0.0, 0.0, 1.0}, 0.5});
     const HeadlessView view{{160, 120}, 30.0f, 20.0f};
     const Image first = render::render_headless(mesh, rgb_options(true), view);
     const Image second = render::render_headless(mesh, rgb_options(true), view);
@@ -69,7 +70,7 @@ TEST(Screenshot, BaseMeshInRgbModeIsAllGreen) {
 // (sqrt(2)/2) of it, a band of area at most sqrt(2) * outline length.
 TEST(Screenshot, ColourAreasMatchTheProjectedTriangles) {
     rgb::Mesh mesh = render_test::grid(4);
-    rgb::set_level(mesh, 3, rgb::Sphere{{-1.0, 0.0, -1.0}, 1.0});
+    rgbtest::set_level(mesh, 3, rgb::Sphere{{-1.0, 0.0, -1.0}, 1.0});
     const HeadlessView view{{400, 400}, 0.0f, 90.0f};
     const render_test::PixelCounts counts = count_pixels(render::render_headless(mesh, rgb_options(false), view));
 
@@ -131,7 +132,7 @@ TEST(Screenshot, SphereSilhouetteCoversItsProjectedArea) {
 // The icosphere refined to `level` around its +z pole, in the level colouring, seen from +z.
 Image level_picture(int level) {
     rgb::Mesh mesh = render_test::icosphere(1);
-    rgb::set_level(mesh, level, rgb::Sphere{{0.0, 0.0, 1.0}, 0.7});
+    rgbtest::set_level(mesh, level, rgb::Sphere{{0.0, 0.0, 1.0}, 0.7});
     int max_level = 0;
     for (rgb::FaceId f : mesh.faces()) max_level = std::max(max_level, mesh.level(f));
     EXPECT_EQ(max_level, level);

@@ -16,6 +16,7 @@
 #include "rgb/mesh/mesh.h"
 #include "rgb/values/surface_error.h"
 #include "test_meshes.h"
+#include "support/set_level.h"
 
 namespace {
 
@@ -48,7 +49,7 @@ TEST_P(SurfaceGeometryTest, IncrementalUpdatesEqualARebuildThroughRefineAndCoars
 
     const rgb::Sphere cap{{0.0, 0.0, 1.0}, 0.6};
     for (int target : {1, 3, 2, 0}) {
-        rgb::set_level(mesh, target, cap);
+        rgbtest::set_level(mesh, target, cap);
         geometry.update(mesh, changes);
         changes.clear();
         SCOPED_TRACE(testing::Message() << "after set_level " << target);
@@ -61,7 +62,7 @@ TEST_P(SurfaceGeometryTest, ColourCountsFollowTheMesh) {
     MeshChanges changes(mesh);
     SurfaceGeometry geometry(GetParam());
     geometry.rebuild(mesh);
-    rgb::set_level(mesh, 2, rgb::Sphere{{1.0, 0.0, 0.0}, 0.5});
+    rgbtest::set_level(mesh, 2, rgb::Sphere{{1.0, 0.0, 0.0}, 0.5});
     geometry.update(mesh, changes);
 
     std::size_t counts[3] = {0, 0, 0};
@@ -90,7 +91,7 @@ TEST_P(SurfaceGeometryTest, LevelAndColourCountsKeptIncrementallyEqualARecountAf
     std::uniform_int_distribution<int> level(0, 4);
     int deepest = 0;
     for (int edit = 0; edit < 12; ++edit) {
-        rgb::set_level(mesh, level(random), rgb::Sphere{{coordinate(random), coordinate(random), coordinate(random)}, radius(random)});
+        rgbtest::set_level(mesh, level(random), rgb::Sphere{{coordinate(random), coordinate(random), coordinate(random)}, radius(random)});
         const std::span<const rgb::FaceId> faces = changes.changed_faces();
         const std::size_t half = faces.size() / 2;
         geometry.update_part(mesh, faces.first(half), {});
@@ -167,7 +168,7 @@ TEST(SurfaceGeometry, DetailDistanceBandsAreEachFacesDistanceToTheDenseSurface) 
     expect_bands();
     for (int target : {2, 4, 3, 1}) {
         SCOPED_TRACE(testing::Message() << "after set_level " << target);
-        rgb::set_level(mesh, target, rgb::Sphere{{0.3, 0.2, 0.9}, 0.8});
+        rgbtest::set_level(mesh, target, rgb::Sphere{{0.3, 0.2, 0.9}, 0.8});
         geometry.update(mesh, changes);
         changes.clear();
         expect_bands();

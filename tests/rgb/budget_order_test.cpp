@@ -30,6 +30,7 @@
 #include "support/test_meshes.h"
 #include "support/triangle_keys.h"
 #include "support/uniform_loop_oracle.h"
+#include "support/set_level.h"
 
 namespace rgbtest {
 namespace {
@@ -275,8 +276,8 @@ TEST(BudgetMeaning, ReversedOrientationKeepsTheVerticesNotAlwaysTheDiagonals) {
     }
     for (double radius : {0.3, 0.8}) {
         rgb::Mesh a = make_rgb_mesh(base), b = make_rgb_mesh(mirrored);
-        rgb::set_level(a, 3, rgb::Sphere{base.positions[2], radius});
-        rgb::set_level(b, 3, rgb::Sphere{base.positions[2], radius});
+        rgbtest::set_level(a, 3, rgb::Sphere{base.positions[2], radius});
+        rgbtest::set_level(b, 3, rgb::Sphere{base.positions[2], radius});
         compare(a, b, "level 3 in a ball of radius " + std::to_string(radius));
     }
     EXPECT_GT(other_diagonals, 0u) << "the normal form is chiral: some mirrored result must pick other diagonals";

@@ -19,6 +19,7 @@
 #include "support/request_oracle.h"
 #include "support/same_mesh.h"
 #include "support/test_meshes.h"
+#include "support/set_level.h"
 
 namespace rgbtest {
 namespace {
@@ -103,7 +104,7 @@ TEST_P(CanonicalRequests, CoarseningRemovesExactlyWhatTheMeaningRemoves) {
     std::mt19937 rng(12);
     for (int trial = 0; trial < 4; ++trial) {
         Tracked t(base, oracle);
-        rgb::set_level(t.mesh, 3);
+        rgbtest::set_level(t.mesh, 3);
         std::set<Identity> expected = t.ids.live_identities();
         for (const Request& r : random_requests(base, rng, 3, rgb::RequestKind::Coarsen, -1)) {
             rgb::apply_request(t.mesh, as_request(r));
@@ -120,7 +121,7 @@ TEST_P(CanonicalRequests, SettingGivesExactlyWhatTheMeaningGives) {
     std::mt19937 rng(16);
     for (int trial = 0; trial < 4; ++trial) {
         Tracked t(base, oracle);
-        if (trial % 2 == 1) rgb::set_level(t.mesh, 3);
+        if (trial % 2 == 1) rgbtest::set_level(t.mesh, 3);
         std::set<Identity> expected = t.ids.live_identities();
         for (const Request& r : random_requests(base, rng, 3, rgb::RequestKind::Set, -1)) {
             rgb::apply_request(t.mesh, as_request(r));
@@ -146,7 +147,7 @@ TEST_P(CanonicalRequests, EveryOrderOfOverlappingRequestsGivesTheIdenticalMesh) 
             std::vector<std::size_t> order(requests.size());
             std::iota(order.begin(), order.end(), 0);
             rgb::Mesh first = make_rgb_mesh(base);
-            if (c.start_refined) rgb::set_level(first, 3);
+            if (c.start_refined) rgbtest::set_level(first, 3);
             const rgb::Mesh start = first;
             apply_all(first, requests, order);
             EXPECT_TRUE(rgb::check_normal_form(first).ok());
@@ -170,8 +171,8 @@ TEST_P(CanonicalRequests, DisjointRequestsOfAnyKindCommute) {
     const Request a{rgb::RequestKind::Set, 3, {extreme(true), 0.15 * diagonal}};
     const Request b{rgb::RequestKind::Set, 1, {extreme(false), 0.15 * diagonal}};
     rgb::Mesh ab = make_rgb_mesh(base), ba = make_rgb_mesh(base);
-    rgb::set_level(ab, 2);
-    rgb::set_level(ba, 2);
+    rgbtest::set_level(ab, 2);
+    rgbtest::set_level(ba, 2);
     apply_all(ab, {a, b}, {0, 1});
     apply_all(ba, {a, b}, {1, 0});
     EXPECT_TRUE(same_mesh(ab, ba));
@@ -199,7 +200,7 @@ TEST_P(CanonicalRequests, HistoryDoesNotMatter) {
     // X; level 0; X
     rgb::Mesh twice = make_rgb_mesh(base);
     apply_all(twice, x, order);
-    rgb::set_level(twice, 0);
+    rgbtest::set_level(twice, 0);
     EXPECT_TRUE(same_mesh(twice, make_rgb_mesh(base)));
     apply_all(twice, x, order);
     EXPECT_TRUE(same_mesh(once, twice));
@@ -226,7 +227,7 @@ TEST(SmallRegions, ReachTheirLevel) {
         for (int level : {5, 8}) {
             rgb::Mesh mesh = make_rgb_mesh(base);
             const rgb::Sphere ball{centre, 1e-3 * edge};
-            rgb::set_level(mesh, level, ball);
+            rgbtest::set_level(mesh, level, ball);
             std::size_t meeting = 0;
             for (rgb::FaceId f : mesh.faces()) {
                 std::array<glm::dvec3, 3> corners;

@@ -25,6 +25,7 @@
 #include "rgb/values/restore_state.h"
 #include "support/detail_sampling.h"
 #include "support/test_meshes.h"
+#include "support/set_level.h"
 
 namespace {
 
@@ -165,8 +166,8 @@ TEST_P(DetailOnMeshes, DisplayedVerticesAreTheirAddressesSamples) {
         requests.push_back({1 + static_cast<int>(rng() % 5), rgb::Sphere{centre, diagonal * (0.1 + 0.05 * (rng() % 5))}});
     }
     rgb::Mesh forward(base), backward(base);
-    for (const auto& [level, sphere] : requests) rgb::set_level(forward, level, sphere);
-    for (auto it = requests.rbegin(); it != requests.rend(); ++it) rgb::set_level(backward, it->first, it->second);
+    for (const auto& [level, sphere] : requests) rgbtest::set_level(forward, level, sphere);
+    for (auto it = requests.rbegin(); it != requests.rend(); ++it) rgbtest::set_level(backward, it->first, it->second);
     for (const rgb::Mesh* mesh : {&forward, &backward})
         for (rgb::VertexId v : mesh->vertices()) {
             const glm::dvec3 shown = rgb::displayed_position(*mesh, v);

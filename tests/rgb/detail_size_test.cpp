@@ -25,6 +25,7 @@
 #include "support/request_oracle.h"
 #include "support/same_mesh.h"
 #include "support/test_meshes.h"
+#include "support/set_level.h"
 
 namespace rgbtest {
 namespace {
@@ -110,7 +111,7 @@ TEST_P(DetailSize, OverTheWholeSurfaceNoEdgeIsLongerThanAsked) {
             const DetailMeaning meaning(oracle, length);
             rgb::Mesh mesh = make_rgb_mesh(base);
             IdentityTracker ids(mesh, oracle);
-            rgb::set_level(mesh, 1, rgb::Sphere{base.positions[1], 0.3 * bounding_box_diagonal(base.positions)});
+            rgbtest::set_level(mesh, 1, rgb::Sphere{base.positions[1], 0.3 * bounding_box_diagonal(base.positions)});
             const rgb::LodReport report = apply_max_edge(mesh, rgb::RequestKind::Set, length, std::nullopt, from_mesh);
             EXPECT_FALSE(report.budget_bound);
             EXPECT_EQ(ids.live_identities(), meaning.refined(meaning.base(), std::nullopt)) << "share " << share;
@@ -212,8 +213,8 @@ TEST_P(DetailSize, RequestsInABallFollowTheirMeaning) {
         rgb::Mesh mesh = make_rgb_mesh(base);
         IdentityTracker ids(mesh, oracle);
         // Some detail to start from, partly in the ball.
-        rgb::set_level(mesh, 3, rgb::Sphere{base.positions[0], 0.3 * diagonal});
-        rgb::set_level(mesh, 1, rgb::Sphere{base.positions[3], 0.3 * diagonal});
+        rgbtest::set_level(mesh, 3, rgb::Sphere{base.positions[0], 0.3 * diagonal});
+        rgbtest::set_level(mesh, 1, rgb::Sphere{base.positions[3], 0.3 * diagonal});
         const std::set<Identity> before = ids.live_identities();
         apply_max_edge(mesh, kind, length, ball);
         std::set<Identity> expected = before;
@@ -245,7 +246,7 @@ TEST_P(DetailSize, TheResultIgnoresStorageAndHowTheRequestIsPut) {
     rgb::Mesh whole = make_rgb_mesh(base);
     apply_max_edge(whole, rgb::RequestKind::Set, length, std::nullopt);
     rgb::Mesh in_ball = make_rgb_mesh(base);
-    rgb::set_level(in_ball, 2);
+    rgbtest::set_level(in_ball, 2);
     apply_max_edge(in_ball, rgb::RequestKind::Set, length, rgb::Sphere{base.positions[0], 3.0 * diagonal});
     EXPECT_TRUE(same_mesh(whole, in_ball));
 }

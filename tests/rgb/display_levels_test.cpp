@@ -12,6 +12,7 @@
 #include "rgb/values/hierarchy_evaluator.h"
 #include "rgb/values/loop_geometry.h"
 #include "support/test_meshes.h"
+#include "support/set_level.h"
 
 namespace rgbtest {
 namespace {
@@ -22,7 +23,7 @@ TEST_P(DisplayLevels, AreEachVertexsDisplayLevelDuringBudgetRuns) {
     const TestMesh& base = GetParam();
     rgb::Mesh mesh = make_rgb_mesh(base);
     // Detail to remove first, so that the run frees slots.
-    rgb::set_level(mesh, 2);
+    rgbtest::set_level(mesh, 2);
     rgb::LodSettings settings;
     settings.max_triangles = 30 * base.triangles.size();
     rgb::LodDriver driver(mesh, settings);

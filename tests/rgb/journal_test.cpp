@@ -17,6 +17,7 @@
 #include "support/same_mesh.h"
 #include "support/same_slots.h"
 #include "support/test_meshes.h"
+#include "support/set_level.h"
 
 namespace {
 
@@ -158,7 +159,7 @@ TEST(Journal, RecordFollowsTheEditNotTheMesh) {
     rgb::Mesh small = rgbtest::make_rgb_mesh(grid);
     rgb::Mesh large = rgbtest::make_rgb_mesh(grid);
     // Refine the far corner of `large` deeply: (0,0) is a corner, the edit is at the opposite one.
-    rgb::set_level(large, 5, rgb::Sphere{grid.positions.front(), 0.3 * rgbtest::bounding_box_diagonal(grid.positions)});
+    rgbtest::set_level(large, 5, rgb::Sphere{grid.positions.front(), 0.3 * rgbtest::bounding_box_diagonal(grid.positions)});
     ASSERT_GT(large.num_faces(), 20 * small.num_faces());
     rgb::LevelRequest request;
     request.kind = rgb::RequestKind::Refine;
@@ -205,7 +206,7 @@ class JournalFailure : public ::testing::TestWithParam<FailingObserver::When> {}
 TEST_P(JournalFailure, AFailedRequestIsRevertedToTheMeshBeforeIt) {
     for (const bool journal_first : {true, false}) {
         rgb::Mesh mesh = rgbtest::make_rgb_mesh(rgbtest::icosahedron());
-        rgb::set_level(mesh, 1);
+        rgbtest::set_level(mesh, 1);
         const rgb::Mesh before = mesh;
         // In the middle of some replacement (the 81st event: not the first face of one, since
         // splits replace two faces or more).
@@ -215,7 +216,7 @@ TEST_P(JournalFailure, AFailedRequestIsRevertedToTheMeshBeforeIt) {
         mesh.add_observer(&failing);
         if (!journal_first) journal.emplace(mesh);
         journal->start();
-        EXPECT_THROW(rgb::set_level(mesh, 3), std::runtime_error);
+        EXPECT_THROW(rgbtest::set_level(mesh, 3), std::runtime_error);
         mesh.remove_observer(&failing);
         const rgb::JournalRecord record = journal->stop();
         EXPECT_GT(record.steps(), 10u);
@@ -234,12 +235,12 @@ TEST(Journal, ReportsAChangeMadeWhileNotRecording) {
     rgb::Journal journal(mesh);
     EXPECT_FALSE(journal.take_unrecorded_change());
     journal.start();
-    rgb::set_level(mesh, 1);
+    rgbtest::set_level(mesh, 1);
     const rgb::JournalRecord record = journal.stop();
     EXPECT_FALSE(journal.take_unrecorded_change());
     journal.revert(record);
     EXPECT_FALSE(journal.take_unrecorded_change());
-    rgb::set_level(mesh, 1);
+    rgbtest::set_level(mesh, 1);
     EXPECT_TRUE(journal.take_unrecorded_change());
     EXPECT_FALSE(journal.take_unrecorded_change());
 }

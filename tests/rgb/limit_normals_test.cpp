@@ -21,6 +21,7 @@
 #include "rgb/values/loop_geometry.h"
 #include "support/test_meshes.h"
 #include "support/uniform_loop_oracle.h"
+#include "support/set_level.h"
 
 namespace {
 
@@ -154,7 +155,7 @@ TEST(LimitNormals, AFlatMeshHasThePlanesNormalEverywhere) {
         SCOPED_TRACE(m.name);
         for (glm::dvec3& p : m.positions) p.z = 0.0;
         rgb::Mesh mesh = rgbtest::make_rgb_mesh(m);
-        rgb::set_level(mesh, 3, rgb::Sphere{m.positions[0], 0.7});
+        rgbtest::set_level(mesh, 3, rgb::Sphere{m.positions[0], 0.7});
         const std::vector<glm::dvec3> normals = rgb::limit_normals(mesh);
         for (rgb::VertexId v : mesh.vertices()) {
             EXPECT_NEAR(normals[v.idx].z, 1.0, 1e-14) << v.idx;
@@ -171,7 +172,7 @@ TEST(LimitNormals, SymmetryAxesOfTheRegularOctahedron) {
     const std::vector<glm::dvec3> positions{{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
     const std::vector<rgb::Triangle> triangles{{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
     rgb::Mesh mesh(positions, triangles);
-    rgb::set_level(mesh, 2);
+    rgbtest::set_level(mesh, 2);
     const std::vector<glm::dvec3> normals = rgb::limit_normals(mesh);
     for (std::uint32_t v = 0; v < 6; ++v) EXPECT_LT(angle_between(normals[v], positions[v]), 1e-14) << v;
     std::size_t checked = 0;
@@ -198,8 +199,8 @@ TEST(LimitNormals, AdaptiveVerticesGetWhatTheEvaluatorGivesTheirAddresses) {
     for (const TestMesh& m : {rgbtest::bipyramid(7), rgbtest::grid(3, 2), boundary_fan(5), rgbtest::bunny()}) {
         SCOPED_TRACE(m.name);
         rgb::Mesh mesh = rgbtest::make_rgb_mesh(m);
-        rgb::set_level(mesh, 4, rgb::Sphere{m.positions[0], 0.3 * rgbtest::bounding_box_diagonal(m.positions)});
-        rgb::set_level(mesh, 2, rgb::Sphere{m.positions[1], 0.2 * rgbtest::bounding_box_diagonal(m.positions)});
+        rgbtest::set_level(mesh, 4, rgb::Sphere{m.positions[0], 0.3 * rgbtest::bounding_box_diagonal(m.positions)});
+        rgbtest::set_level(mesh, 2, rgb::Sphere{m.positions[1], 0.2 * rgbtest::bounding_box_diagonal(m.positions)});
         const std::vector<glm::dvec3> normals = rgb::limit_normals(mesh);
         rgb::HierarchyEvaluator evaluator(mesh.base());
         for (rgb::VertexId v : mesh.vertices())

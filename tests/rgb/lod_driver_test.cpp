@@ -21,6 +21,7 @@
 #include "support/request_oracle.h"
 #include "support/same_mesh.h"
 #include "support/test_meshes.h"
+#include "support/set_level.h"
 
 namespace rgbtest {
 namespace {
@@ -95,7 +96,7 @@ TEST_P(LodDriverMeaning, BudgetResultsIgnoreHistoryAndStorage) {
     rgb::Mesh fresh = make_rgb_mesh(base);
     run_budget(fresh, 700);
     rgb::Mesh refined = make_rgb_mesh(base);
-    rgb::set_level(refined, 3, rgb::Sphere{base.positions[0], 0.7 * bounding_box_diagonal(base.positions)});
+    rgbtest::set_level(refined, 3, rgb::Sphere{base.positions[0], 0.7 * bounding_box_diagonal(base.positions)});
     run_budget(refined, 700);
     EXPECT_TRUE(same_mesh(fresh, refined));
     rgb::Mesh coarser = make_rgb_mesh(base);

@@ -17,6 +17,7 @@
 #include "support/oracle_surface.h"
 #include "support/same_mesh.h"
 #include "support/test_meshes.h"
+#include "support/set_level.h"
 
 namespace rgbtest {
 namespace {
@@ -91,12 +92,12 @@ TEST_P(Tolerance, TheResultIgnoresStorageHistoryAndHowTheRequestIsPut) {
         EXPECT_TRUE(same_mesh(fresh, other)) << stored.name;
     }
     rgb::Mesh refined = make_rgb_mesh(base);
-    rgb::set_level(refined, 2, rgb::Sphere{base.positions[0], 0.5 * bounding_box_diagonal(base.positions)});
+    rgbtest::set_level(refined, 2, rgb::Sphere{base.positions[0], 0.5 * bounding_box_diagonal(base.positions)});
     apply_tolerance(refined, tolerance);
     EXPECT_TRUE(same_mesh(fresh, refined)) << "after refining part of the mesh first";
     // A Set in a ball holding the whole surface is the Set over the whole surface.
     rgb::Mesh in_ball = make_rgb_mesh(base);
-    rgb::set_level(in_ball, 1);
+    rgbtest::set_level(in_ball, 1);
     apply_tolerance(in_ball, tolerance, rgb::Sphere{base.positions[0], 3.0 * bounding_box_diagonal(base.positions)});
     EXPECT_TRUE(same_mesh(fresh, in_ball)) << "as a request in a ball around everything";
 }

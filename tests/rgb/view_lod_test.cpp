@@ -29,6 +29,7 @@
 #include "support/request_oracle.h"
 #include "support/same_mesh.h"
 #include "support/test_meshes.h"
+#include "support/set_level.h"
 
 namespace rgbtest {
 namespace {
@@ -307,7 +308,7 @@ TEST(ScreenDetail, TheRequestIgnoresStorageAndHistory) {
     const rgb::ScreenView view = camera({1.0, 0.8, 2.0});
     auto run = [&](const TestMesh& m, int start_level) {
         rgb::Mesh mesh = make_rgb_mesh(m);
-        rgb::set_level(mesh, start_level);
+        rgbtest::set_level(mesh, start_level);
         rgb::DetailRequest r;
         r.value = rgb::ScreenCriterion(mesh.shared_base(), view).edge_value();
         r.threshold = kPixels;

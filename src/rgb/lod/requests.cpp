@@ -432,13 +432,6 @@ std::vector<FaceId> faces_meeting(const Mesh& mesh, const Sphere& sphere) {
     return region_faces(mesh, test, seed_faces(mesh, test.base_faces_meeting(), sphere));
 }
 
-RequestStats set_level(Mesh& mesh, int level, std::optional<Sphere> sphere) {
-    LevelRequest request;
-    request.level = level;
-    request.sphere = sphere;
-    return apply_request(mesh, request);
-}
-
 double estimated_triangles(const Mesh& mesh, const LevelRequest& request) {
     check(request);
     if (request.kind == RequestKind::Coarsen) return static_cast<double>(mesh.num_faces());

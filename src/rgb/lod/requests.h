@@ -64,9 +64,6 @@ struct RequestStats {
     }
 };
 
-// A Set request: every face meeting the ball (the whole surface without one) gets level `level`.
-RequestStats set_level(Mesh& mesh, int level, std::optional<Sphere> sphere = std::nullopt);
-
 // Throws std::invalid_argument for a level outside 0..kMaxLevel or a non-positive or non-finite
 // radius. Costs in proportion to the faces in and around the region, never to the mesh.
 RequestStats apply_request(Mesh& mesh, const LevelRequest& request);
