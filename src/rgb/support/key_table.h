@@ -28,11 +28,18 @@ public:
         if (place(key, value)) ++size_;
     }
     std::size_t size() const { return size_; }
-    // Empties the table, keeping its memory for the next use (no fresh pages to fault in).
+    // Empties the table, keeping its memory for the next use (no fresh pages to fault in) up to
+    // kKeptSlots: a table grown larger (one base face of a very fine mesh) is let go, so that emptying
+    // it does not cost every later use of a small one its whole size.
     void clear() {
-        std::fill(slots_.begin(), slots_.end(), Slot{});
+        if (slots_.size() > kKeptSlots) {
+            slots_ = {};
+        } else {
+            std::fill(slots_.begin(), slots_.end(), Slot{});
+        }
         size_ = 0;
     }
+    static constexpr std::size_t kKeptSlots = std::size_t(1) << 17;
 
 private:
     struct Slot {
