@@ -119,14 +119,13 @@ int run_lods(std::span<const std::string> args) {
 
     const double size = rgb::bounding_box_diagonal(asset.mesh.base());
     std::vector<WrittenLevel> levels;
-    std::vector<double> errors;
-    std::vector<bool> nested;
-    std::vector<glm::dvec3> finer;
+    std::vector<rgb::Mesh> meshes;  // kept for the errors, measured for all levels at once
+    meshes.reserve(requests.size());
     {
         Progress progress("making the levels");
         for (std::size_t i = 0; i < requests.size(); ++i) {
             progress.update(i, requests.size(), "LOD" + std::to_string(i));
-            const rgb::Mesh mesh = rgbio::lod_set_level(asset.mesh, requests[i], limit);
+            const rgb::Mesh& mesh = meshes.emplace_back(rgbio::lod_set_level(asset.mesh, requests[i], limit));
             WrittenLevel level;
             level.triangles = mesh.num_faces();
             if (format == rgbio::OutputFormat::Gltf) {
@@ -144,11 +143,21 @@ int run_lods(std::span<const std::string> args) {
                     rgbio::save_export_mesh(flat, file, format);
                 }
             }
-            errors.push_back(rgb::surface_error_at(mesh, by_slot(mesh, level.positions)).max_error);
-            nested.push_back(i > 0 && rgbio::positions_nested(level.positions, finer));
-            finer = std::move(level.positions);
             levels.push_back(std::move(level));
         }
+    }
+    std::vector<bool> nested(levels.size(), false);
+    for (std::size_t i = 1; i < levels.size(); ++i) nested[i] = rgbio::positions_nested(levels[i].positions, levels[i - 1].positions);
+    std::vector<double> errors;
+    {
+        Progress progress("measuring the levels' errors");
+        std::vector<const rgb::Mesh*> measured;
+        std::vector<std::vector<glm::dvec3>> corners;
+        for (std::size_t i = 0; i < levels.size(); ++i) {
+            measured.push_back(&meshes[i]);
+            corners.push_back(by_slot(meshes[i], levels[i].positions));
+        }
+        for (const rgb::SurfaceError& error : rgb::surface_errors_at(measured, corners)) errors.push_back(error.max_error);
     }
     const std::vector<double> coverage = rgbio::switch_coverage(errors, size);
     if (format == rgbio::OutputFormat::Gltf) {

@@ -21,7 +21,7 @@ double HierarchyEvaluator::gamma(const SurfacePoint& p) const {
 glm::dvec3 HierarchyEvaluator::insertion_position(const SurfacePoint& p) {
     if (const auto v = base_vertex(base_, p)) return base_.position(*v);
     const Key k = key(p);
-    if (const auto it = insertion_.find(k); it != insertion_.end()) return it->second;
+    if (const glm::dvec3* known = insertion_.find(k)) return *known;
     const PointStencil s = parent_stencil(base_, p);
     const int l = p.level - 1;
     const glm::dvec3 a = control_point(s.ends[0], l), b = control_point(s.ends[1], l);
@@ -29,13 +29,13 @@ glm::dvec3 HierarchyEvaluator::insertion_position(const SurfacePoint& p) {
     const glm::dvec3 value = midpoint
                                  ? boundary_edge_point(a, b)
                                  : interior_edge_point(a, b, control_point(s.opposite[0], l), control_point(s.opposite[1], l));
-    insertion_.emplace(k, value);
+    insertion_.insert(k, value);
     return value;
 }
 
 glm::dvec3 HierarchyEvaluator::limit_position(const SurfacePoint& p) {
     const Key k = key(p);
-    if (const auto it = limit_.find(k); it != limit_.end()) return it->second;
+    if (const glm::dvec3* known = limit_.find(k)) return *known;
     const glm::dvec3 centre = insertion_position(p);
     glm::dvec3 value;
     if (!follows_untagged_rules(base_, p)) {
@@ -63,7 +63,7 @@ glm::dvec3 HierarchyEvaluator::limit_position(const SurfacePoint& p) {
             value = interior_limit(centre, points);
         }
     }
-    limit_.emplace(k, value);
+    limit_.insert(k, value);
     return value;
 }
 
@@ -85,10 +85,10 @@ glm::dvec3 HierarchyEvaluator::regime_start_value(const SurfacePoint& p, const R
     if (i == 0) return insertion_position(p);
     Key k = key(p);
     k.regime = regimes[i].start;
-    if (const auto it = regime_start_.find(k); it != regime_start_.end()) return it->second;
+    if (const glm::dvec3* known = regime_start_.find(k)) return *known;
     // docs/loop-creases.md §5: a regime starts where the previous one's closed form has brought p.
     const glm::dvec3 value = regime_value(p, regimes[i - 1], regime_start_value(p, regimes, i - 1), regimes[i].start);
-    regime_start_.emplace(k, value);
+    regime_start_.insert(k, value);
     return value;
 }
 
@@ -107,7 +107,7 @@ glm::dvec3 HierarchyEvaluator::regime_limit(const SurfacePoint& p, const Regime&
     if (r.rule == VertexRule::Corner) return start;
     Key k = key(p);
     k.regime = r.start;
-    if (const auto it = regime_limit_.find(k); it != regime_limit_.end()) return it->second;
+    if (const glm::dvec3* known = regime_limit_.find(k)) return *known;
     glm::dvec3 value;
     if (r.rule == VertexRule::Crease) {
         // A crease vertex behaves like a boundary vertex along its crease (docs/loop-creases.md §4.2):
@@ -120,7 +120,7 @@ glm::dvec3 HierarchyEvaluator::regime_limit(const SurfacePoint& p, const Regime&
                     ? apply_dart_mask(dart_limit_mask(static_cast<int>(ring.size())), start, ring, r.sharp[0])
                     : interior_limit(start, ring);
     }
-    regime_limit_.emplace(k, value);
+    regime_limit_.insert(k, value);
     return value;
 }
 

@@ -12,12 +12,12 @@
 // values here, from the closed form of each rule regime (docs/loop-creases.md §4-§5): the mesh asks
 // this evaluator for them rather than computing them from its own neighbourhood.
 #include <cstdint>
-#include <unordered_map>
 
 #include <glm/vec3.hpp>
 
 #include "rgb/mesh/surface_point.h"
 #include "rgb/mesh/vertex_rules.h"
+#include "rgb/support/key_table.h"
 
 namespace rgb {
 
@@ -35,6 +35,14 @@ public:
     glm::dvec3 control_point(const SurfacePoint& p, int k);
     // Values kept from earlier calls.
     std::size_t cached_values() const { return insertion_.size() + limit_.size(); }
+    // Forgets every value, keeping the caches' memory: a caller that moves on to another part of the
+    // mesh, whose values would no longer be looked up, keeps the caches small and in the processor's.
+    void clear() {
+        insertion_.clear();
+        limit_.clear();
+        regime_start_.clear();
+        regime_limit_.clear();
+    }
 
 private:
     struct Key {
@@ -46,11 +54,13 @@ private:
         friend bool operator==(const Key&, const Key&) = default;
     };
     struct KeyHash {
+        // Every field reaches the low bits, which pick the slot (key_table.h): a splitmix64 finish.
         std::size_t operator()(const Key& k) const noexcept {
-            std::uint64_t h = (std::uint64_t(k.face) << 32) ^ (std::uint64_t(k.a0) * 0x9e3779b97f4a7c15ull) ^
-                              (std::uint64_t(k.a1) << 17) ^ static_cast<std::uint64_t>(k.level) ^
-                              (static_cast<std::uint64_t>(k.regime + 1) << 8);
-            return static_cast<std::size_t>(h ^ (h >> 29));
+            std::uint64_t h = (std::uint64_t(k.face) << 32 | k.a0) * 0x9e3779b97f4a7c15ull ^
+                              (std::uint64_t(k.a1) << 16 | std::uint64_t(k.level & 0xff) << 8 | (std::uint64_t(k.regime + 1) & 0xff));
+            h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ull;
+            h = (h ^ (h >> 27)) * 0x94d049bb133111ebull;
+            return static_cast<std::size_t>(h ^ (h >> 31));
         }
     };
     Key key(const SurfacePoint& p) const;
@@ -68,10 +78,10 @@ private:
     double regime_gamma(const SurfacePoint& p, VertexRule rule) const;
 
     const BaseMesh& base_;
-    std::unordered_map<Key, glm::dvec3, KeyHash> insertion_, limit_;
+    KeyTable<Key, KeyHash, glm::dvec3> insertion_, limit_;
     // Per regime of a tagged vertex (Key.regime holds the regime's start level): its start value and
     // its limit.
-    std::unordered_map<Key, glm::dvec3, KeyHash> regime_start_, regime_limit_;
+    KeyTable<Key, KeyHash, glm::dvec3> regime_start_, regime_limit_;
 };
 
 }  // namespace rgb

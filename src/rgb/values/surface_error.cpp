@@ -79,31 +79,95 @@ SurfaceError face_surface_error(const Mesh& mesh, HierarchyEvaluator& evaluator,
     return face_error_shown(mesh, evaluator, f, [&](VertexId v) { return displayed_position(mesh, v); });
 }
 
-SurfaceError surface_error_at(const Mesh& mesh, const std::vector<glm::dvec3>& corner_positions) {
-    // Per block of face slots its own evaluator (it caches), the blocks joined in slot order.
-    std::vector<SurfaceError> blocks(parallel_blocks(mesh.face_capacity(), 1 << 12));
-    parallel_blocks_for(mesh.face_capacity(), blocks.size(), [&](std::size_t b, std::size_t begin, std::size_t end) {
-        HierarchyEvaluator evaluator(mesh.base());
-        for (std::size_t i = begin; i < end; ++i) {
-            const FaceId f(static_cast<std::uint32_t>(i));
-            if (!mesh.is_live(f)) continue;
-            const SurfaceError face = face_error_shown(mesh, evaluator, f, [&](VertexId v) { return corner_positions[v.idx]; });
-            blocks[b].samples += face.samples;
-            if (face.max_error > blocks[b].max_error) {
-                blocks[b].max_error = face.max_error;
-                blocks[b].where = face.where;
+namespace {
+
+// LOD0 faces per chunk of base faces that surface_errors_at measures with one evaluator: small enough
+// that its caches stay in the processor's caches, large enough that the values a chunk shares with
+// its neighbours (points on the base edges between them, and their coarser ancestors) are few.
+constexpr std::size_t kFacesPerChunk = 512;
+
+// Each mesh's live faces by base face: the faces of base face g are faces[start[g]..start[g + 1]),
+// in slot order.
+struct FacesByBaseFace {
+    std::vector<std::uint32_t> start, faces;
+};
+
+FacesByBaseFace faces_by_base_face(const Mesh& mesh) {
+    FacesByBaseFace out;
+    const std::size_t n = mesh.base().num_faces();
+    std::vector<std::uint32_t> base_of(mesh.face_capacity());
+    out.start.assign(n + 1, 0);
+    parallel_for(mesh.face_capacity(), 1 << 14, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i)
+            if (mesh.is_live(FaceId(static_cast<std::uint32_t>(i)))) base_of[i] = base_face_of(mesh, FaceId(static_cast<std::uint32_t>(i)));
+    });
+    for (FaceId f : mesh.faces()) ++out.start[base_of[f.idx] + 1];
+    for (std::size_t g = 0; g < n; ++g) out.start[g + 1] += out.start[g];
+    out.faces.resize(out.start[n]);
+    std::vector<std::uint32_t> next(out.start.begin(), out.start.end() - 1);
+    for (FaceId f : mesh.faces()) out.faces[next[base_of[f.idx]]++] = f.idx;
+    return out;
+}
+
+// The larger error, the first face in slot order where tied.
+struct FaceError {
+    SurfaceError error;
+    std::uint32_t face = 0;
+};
+
+void take(FaceError& into, const SurfaceError& error, std::uint32_t face) {
+    into.error.samples += error.samples;
+    if (error.max_error > into.error.max_error || (error.max_error == into.error.max_error && error.max_error > 0.0 && face < into.face)) {
+        into.error.max_error = error.max_error;
+        into.error.where = error.where;
+        into.face = face;
+    }
+}
+
+}  // namespace
+
+std::vector<SurfaceError> surface_errors_at(std::span<const Mesh* const> meshes, std::span<const std::vector<glm::dvec3>> corner_positions) {
+    if (meshes.empty()) return {};
+    const BaseMesh& base = meshes[0]->base();
+    std::vector<FacesByBaseFace> groups;
+    for (const Mesh* mesh : meshes) groups.push_back(faces_by_base_face(*mesh));
+    // Chunks of consecutive base faces with about kFacesPerChunk faces of the first (finest) mesh.
+    std::vector<std::uint32_t> chunk_start{0};
+    for (std::uint32_t g = 0; g < base.num_faces(); ++g)
+        if (groups[0].start[g + 1] - groups[0].start[chunk_start.back()] >= kFacesPerChunk) chunk_start.push_back(g + 1);
+    if (chunk_start.back() != base.num_faces()) chunk_start.push_back(static_cast<std::uint32_t>(base.num_faces()));
+    const std::size_t chunks = chunk_start.size() - 1;
+    // Per block of chunks (one per thread) one evaluator, emptied between chunks; within a chunk every
+    // mesh in turn, finest first, so that a coarser mesh's samples that a finer one has are looked up.
+    const std::size_t blocks = parallel_blocks(chunks, 1);
+    std::vector<std::vector<FaceError>> found(blocks, std::vector<FaceError>(meshes.size()));
+    parallel_blocks_for(chunks, blocks, [&](std::size_t b, std::size_t begin, std::size_t end) {
+        HierarchyEvaluator evaluator(base);
+        for (std::size_t c = begin; c < end; ++c) {
+            evaluator.clear();
+            for (std::size_t m = 0; m < meshes.size(); ++m) {
+                const Mesh& mesh = *meshes[m];
+                const std::vector<glm::dvec3>& shown = corner_positions[m];
+                const FacesByBaseFace& group = groups[m];
+                for (std::uint32_t k = group.start[chunk_start[c]]; k < group.start[chunk_start[c + 1]]; ++k) {
+                    const FaceId f(group.faces[k]);
+                    take(found[b][m], face_error_shown(mesh, evaluator, f, [&](VertexId v) { return shown[v.idx]; }), f.idx);
+                }
             }
         }
     });
-    SurfaceError out;
-    for (const SurfaceError& block : blocks) {
-        out.samples += block.samples;
-        if (block.max_error > out.max_error) {
-            out.max_error = block.max_error;
-            out.where = block.where;
-        }
+    std::vector<SurfaceError> out;
+    for (std::size_t m = 0; m < meshes.size(); ++m) {
+        FaceError total;
+        for (const std::vector<FaceError>& block : found) take(total, block[m].error, block[m].face);
+        out.push_back(total.error);
     }
     return out;
+}
+
+SurfaceError surface_error_at(const Mesh& mesh, const std::vector<glm::dvec3>& corner_positions) {
+    const Mesh* const meshes[] = {&mesh};
+    return surface_errors_at(meshes, std::span(&corner_positions, 1))[0];
 }
 
 SurfaceError displayed_surface_error(const Mesh& mesh) {

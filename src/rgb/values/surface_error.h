@@ -6,6 +6,7 @@
 // displayed positions (spec §4.6). This is the measure the tolerance criterion (limit_error.h)
 // bounds.
 #include <cstddef>
+#include <span>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -41,6 +42,14 @@ SurfaceError displayed_surface_error(const Mesh& mesh);
 // the limit positions a file is written with: rgbsub lods), on all cores; the first face in slot order
 // where tied, as above.
 SurfaceError surface_error_at(const Mesh& mesh, const std::vector<glm::dvec3>& corner_positions);
+
+// The same for several meshes on one base mesh (the levels of an LOD set, finest first), each with
+// its corner positions by slot. The samples and their target points are those above, mesh by mesh;
+// the work is shared: the faces are taken a few thousand of the finest mesh's at a time, by base face,
+// each mesh in turn with one cache of target points, so that where the meshes nest (a coarser face's
+// samples are among the finer faces' samples that cover it) a coarser mesh's samples are looked up
+// rather than evaluated again.
+std::vector<SurfaceError> surface_errors_at(std::span<const Mesh* const> meshes, std::span<const std::vector<glm::dvec3>> corner_positions);
 
 // The length that percentages of the mesh's size are of (tolerances and automatic LOD in the editor,
 // the distance heat map's scale): the diagonal of the base mesh's bounding box, so that it does not

@@ -91,7 +91,7 @@ IdentityTriangle OracleSurface::parent_triangle(const IdentityTriangle& face, in
     throw std::logic_error("oracle_surface: a face is no piece of a triangle of its level");
 }
 
-OracleError OracleSurface::displayed_error(const rgb::Mesh& mesh, const IdentityTracker& ids, int depth) {
+OracleError OracleSurface::displayed_error(const rgb::Mesh& mesh, const IdentityTracker& ids, int depth, Corners at) {
     OracleError out;
     const std::int64_t n = std::int64_t(1) << depth;
     for (rgb::FaceId f : mesh.faces()) {
@@ -124,7 +124,7 @@ OracleError OracleSurface::displayed_error(const rgb::Mesh& mesh, const Identity
             for (const auto& [b, id] : points)
                 if (id == face[c]) corners[c] = b;
             const rgb::VertexId v = mesh.face_vertices(f)[c];
-            shown[c] = oracle_.position(rgb::display_level(mesh, v), face[c]);
+            shown[c] = at == Corners::Limit ? limit(face[c]) : oracle_.position(rgb::display_level(mesh, v), face[c]);
         }
         const std::int64_t area = cross(corners[0], corners[1], corners[2]);
         for (const auto& [q, id] : points) {

@@ -28,8 +28,11 @@ public:
 
     // p^inf of the identity from its ring in the oracle's mesh of its level.
     glm::dvec3 limit(Identity id);
+    // Where the flat faces' corners are: at their display levels' positions, or at their limits (the
+    // positions `rgbsub lods` writes).
+    enum class Corners { Displayed, Limit };
     // Over the points of Σ(l + depth) in each face of level l; needs l + depth <= the oracle's levels.
-    OracleError displayed_error(const rgb::Mesh& mesh, const IdentityTracker& ids, int depth);
+    OracleError displayed_error(const rgb::Mesh& mesh, const IdentityTracker& ids, int depth, Corners at = Corners::Displayed);
 
 private:
     struct Ring {
