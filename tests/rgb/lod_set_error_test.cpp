@@ -19,6 +19,7 @@
 #include "support/identity_tracker.h"
 #include "support/oracle_surface.h"
 #include "support/test_meshes.h"
+#include "support/set_level.h"
 
 namespace rgbtest {
 namespace {
@@ -53,7 +54,7 @@ TEST(LodSetError, IsTheOraclesAtTheSamplesAndBoundsTheErrorBetweenThem) {
     // Levels 2, 1 and 0 (nested), and an adaptive level by tolerance that is no subset of level 2's.
     std::vector<TrackedLevel> levels;
     for (int level = kLodErrorCap; level >= 0; --level)
-        levels.push_back(tracked_level(base, oracle, [&](rgb::Mesh& mesh) { rgb::set_level(mesh, level); }));
+        levels.push_back(tracked_level(base, oracle, [&](rgb::Mesh& mesh) { rgbtest::set_level(mesh, level); }));
     levels.push_back(tracked_level(base, oracle, [&](rgb::Mesh& mesh) {
         rgb::DetailRequest request;
         request.value = rgb::limit_error_value(mesh.shared_base(), 0.01 * size);
