@@ -22,36 +22,9 @@ namespace rgbio {
 namespace {
 
 using test::binary_tetrahedron_ply;
+using test::GlbBuffer;
 using test::has_warning;
 using test::put;
-
-// The bytes of float arrays, and the glTF JSON of their buffer views and accessors, for a .glb.
-struct GlbBuffer {
-    std::string bytes, views, accessors;
-    int count = 0;
-    // An accessor over the floats (`type` VEC3, VEC2, ...; `components` per element).
-    int add_floats(const std::vector<float>& values, const char* type, int components) {
-        return add(values, type, components, 5126);
-    }
-    int add_indices(const std::vector<std::uint32_t>& values) { return add(values, "SCALAR", 1, 5125); }
-    std::string json(const std::string& rest) const {
-        return R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":)" + std::to_string(bytes.size()) + R"(}],"bufferViews":[)" + views +
-               R"(],"accessors":[)" + accessors + "]," + rest + "}";
-    }
-    std::string file(const std::string& rest) const { return test::glb_file(json(rest), bytes); }
-
-private:
-    template <class T>
-    int add(const std::vector<T>& values, const char* type, int components, int component_type) {
-        const std::size_t offset = bytes.size();
-        for (T v : values) put<T>(bytes, v);
-        const std::string comma = count > 0 ? "," : "";
-        views += comma + R"({"buffer":0,"byteOffset":)" + std::to_string(offset) + R"(,"byteLength":)" + std::to_string(values.size() * sizeof(T)) + "}";
-        accessors += comma + R"({"bufferView":)" + std::to_string(count) + R"(,"componentType":)" + std::to_string(component_type) +
-                     R"(,"count":)" + std::to_string(values.size() / static_cast<std::size_t>(components)) + R"(,"type":")" + type + "\"}";
-        return count++;
-    }
-};
 
 // Per triangle, its corners as (x, y, z, u, v), rotated to start at the smallest (u, v = -1: none).
 std::multiset<std::vector<std::array<double, 5>>> corners_of(const LoadedMesh& mesh) {

@@ -28,7 +28,7 @@ void check_coordinates(const glm::dvec3& p, std::size_t vertex, const std::strin
 // Welded vertices are numbered in the file's vertex order (a file without split vertices keeps its
 // numbering, as an OBJ does).
 std::vector<std::uint32_t> weld_positions(const ForeignMesh& mesh, ObjRecords& records, const std::string& file,
-                                          std::size_t& colour_conflicts) {
+                                          std::size_t& colour_conflicts, std::size_t& skin_conflicts) {
     std::vector<std::uint32_t> welded(mesh.positions.size(), kNoIndex);
     for (std::uint32_t v : mesh.corners) {
         if (v >= mesh.positions.size())
@@ -47,8 +47,9 @@ std::vector<std::uint32_t> weld_positions(const ForeignMesh& mesh, ObjRecords& r
             records.positions.push_back(p);
             records.position_lines.push_back(std::size_t(v) + 1);
             if (!mesh.colours.empty()) records.colours.push_back(mesh.colours[v]);
-        } else if (!mesh.colours.empty() && records.colours[welded[v]] != mesh.colours[v]) {
-            ++colour_conflicts;
+        } else {
+            colour_conflicts += !mesh.colours.empty() && records.colours[welded[v]] != mesh.colours[v];
+            skin_conflicts += !mesh.influences.empty() && mesh.influences[records.position_lines[welded[v]] - 1] != mesh.influences[v];
         }
     }
     if (!records.colours.empty()) records.has_colour.assign(records.colours.size(), 1);
@@ -139,8 +140,8 @@ void add_polygons(const ForeignMesh& mesh, const std::vector<std::uint32_t>& wel
 
 LoadedMesh weld_foreign_mesh(ForeignMesh&& mesh, const std::string& file, const ReadOptions& options) {
     ObjRecords records;
-    std::size_t colour_conflicts = 0;
-    const std::vector<std::uint32_t> welded = weld_positions(mesh, records, file, colour_conflicts);
+    std::size_t colour_conflicts = 0, skin_conflicts = 0;
+    const std::vector<std::uint32_t> welded = weld_positions(mesh, records, file, colour_conflicts, skin_conflicts);
     for (const Material& m : mesh.materials) records.material_names.push_back(m.name);
     records.group_names = mesh.group_names;
     // Speed: hashing every triangle to find duplicates took a tenth of reading a 1M-triangle file, and
@@ -183,6 +184,15 @@ LoadedMesh weld_foreign_mesh(ForeignMesh&& mesh, const std::string& file, const 
     if (colour_conflicts > 0)
         warnings.push_back(std::to_string(colour_conflicts) +
                            " corners carry another colour than the first corner at their position: colours are kept per vertex, the first one wins");
+    if (skin_conflicts > 0)
+        warnings.push_back(std::to_string(skin_conflicts) +
+                           " corners carry other joint weights than the first corner at their position: weights are kept per vertex, the first ones win");
+    if (mesh.skeleton) {
+        // Each loaded vertex from its welded vertex, which is the first file vertex at its position.
+        loaded.skeleton = std::move(mesh.skeleton);
+        loaded.influences.reserve(loaded.file_vertex.size());
+        for (std::uint32_t r : loaded.file_vertex) loaded.influences.push_back(mesh.influences[records.position_lines[r] - 1]);
+    }
     loaded.warnings.insert(loaded.warnings.begin(), warnings.begin(), warnings.end());
     loaded.materials = std::move(mesh.materials);
     return loaded;

@@ -13,6 +13,7 @@
 
 #include "io/files/file_text.h"
 #include "io/formats/binary_value.h"
+#include "io/formats/gltf_skin.h"
 #include "io/obj/obj_error.h"
 
 namespace rgbio {
@@ -81,6 +82,10 @@ private:
         }
         return 0.0;
     }
+public:
+    const std::string& path() const { return path_; }
+
+private:
     const tinygltf::Model& model_;
     std::string path_;
 };
@@ -102,10 +107,35 @@ struct Collector {
     ForeignMesh& out;
     std::vector<std::uint32_t> material_of;  // glTF material -> out.materials index
     std::size_t normals = 0, tangents = 0, extra_uvs = 0, skinned = 0, morphed = 0, lines_or_points = 0, alpha = 0;
+    // The skin is kept while every primitive with triangles is skinned by one skin from nodes of one
+    // transform (the weights of one vertex name the joints of one skeleton): `skin` is that one.
+    int skin = -1;
+    bool keep_skin = true;
+    glm::dmat4 skin_transform{1.0};
+    std::size_t unweighted = 0;
 };
 
+// The primitive's vertices' joint influences appended to c.out.influences, or the skin given up.
+void add_influences(Collector& c, const tinygltf::Primitive& primitive, int skin, const glm::dmat4& transform, std::size_t first) {
+    const auto joints = primitive.attributes.find("JOINTS_0"), weights = primitive.attributes.find("WEIGHTS_0");
+    const bool skinned = skin >= 0 && joints != primitive.attributes.end() && weights != primitive.attributes.end();
+    if (skinned && c.keep_skin && c.skin < 0) {
+        c.skin = skin;
+        c.skin_transform = transform;
+    }
+    c.keep_skin = c.keep_skin && skinned && c.skin == skin && c.skin_transform == transform;
+    if (!c.keep_skin) return;
+    const std::vector<double> j = c.data.read(joints->second, 4, "JOINTS_0");
+    const std::vector<double> w = c.data.read(weights->second, 4, "WEIGHTS_0");
+    if (j.size() != w.size() || j.size() / 4 != c.out.positions.size() - first)
+        c.data.fail("JOINTS_0 and WEIGHTS_0 must have one element per vertex of their primitive");
+    const std::vector<JointInfluences> influences =
+        joint_influences(j, w, c.model.skins[static_cast<std::size_t>(skin)].joints.size(), c.data.path(), c.unweighted);
+    c.out.influences.insert(c.out.influences.end(), influences.begin(), influences.end());
+}
+
 // The triangles of one primitive placed by `transform`, in group `group`.
-void add_primitive(Collector& c, const tinygltf::Primitive& primitive, const glm::dmat4& transform, std::uint32_t group) {
+void add_primitive(Collector& c, const tinygltf::Primitive& primitive, const glm::dmat4& transform, std::uint32_t group, int skin) {
     const int mode = primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
     if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
         ++c.lines_or_points;
@@ -148,6 +178,7 @@ void add_primitive(Collector& c, const tinygltf::Primitive& primitive, const glm
         for (std::size_t i = 0; i < n; ++i)
             out.colours.push_back(3 * i + 2 < rgb.size() ? glm::dvec3(rgb[3 * i], rgb[3 * i + 1], rgb[3 * i + 2]) : glm::dvec3(1.0));
     }
+    add_influences(c, primitive, skin, transform, first);
     std::vector<std::uint32_t> indices;
     if (primitive.indices >= 0) {
         for (double i : c.data.read(primitive.indices, 1, "indices")) {
@@ -187,7 +218,9 @@ void add_node(Collector& c, int index, const glm::dmat4& parent, std::vector<std
         const tinygltf::Mesh& mesh = c.model.meshes[static_cast<std::size_t>(node.mesh)];
         const std::uint32_t group = static_cast<std::uint32_t>(c.out.group_names.size());
         c.out.group_names.push_back(!node.name.empty() ? node.name : !mesh.name.empty() ? mesh.name : "mesh " + std::to_string(node.mesh + 1));
-        for (const tinygltf::Primitive& primitive : mesh.primitives) add_primitive(c, primitive, transform, group);
+        if (node.skin >= 0 && static_cast<std::size_t>(node.skin) >= c.model.skins.size())
+            c.data.fail("node " + std::to_string(index) + " names a skin that does not exist");
+        for (const tinygltf::Primitive& primitive : mesh.primitives) add_primitive(c, primitive, transform, group, node.skin);
     }
     for (int child : node.children) add_node(c, child, transform, on_path);
     on_path[static_cast<std::size_t>(index)] = 0;
@@ -216,14 +249,44 @@ void read_materials(Collector& c, const fs::path& folder) {
     if (embedded > 0) c.out.dropped.push_back(std::to_string(embedded) + " base-colour textures embedded in the file (only image files beside it are kept)");
 }
 
+// The skin that every mesh has, with its skeleton, into c.out; or no influences.
+void finish_skin(Collector& c) {
+    // Written joints are 16-bit (JOINTS_0 as unsigned short).
+    const bool kept = c.skin >= 0 && c.keep_skin && c.unweighted == 0 && c.out.influences.size() == c.out.positions.size() &&
+                      c.model.skins[static_cast<std::size_t>(c.skin)].joints.size() <= 65536;
+    if (!kept) {
+        c.out.influences.clear();
+        return;
+    }
+    const tinygltf::Skin& skin = c.model.skins[static_cast<std::size_t>(c.skin)];
+    const std::string name = "skin " + std::to_string(c.skin);
+    for (int joint : skin.joints)
+        if (joint < 0 || static_cast<std::size_t>(joint) >= c.model.nodes.size()) c.data.fail(name + " names joint node " + std::to_string(joint) + ", which does not exist");
+    if (skin.skeleton >= 0 && static_cast<std::size_t>(skin.skeleton) >= c.model.nodes.size())
+        c.data.fail(name + " names skeleton node " + std::to_string(skin.skeleton) + ", which does not exist");
+    const std::vector<double> inverse_bind =
+        skin.inverseBindMatrices >= 0 ? c.data.read(skin.inverseBindMatrices, 16, "inverseBindMatrices") : std::vector<double>();
+    if (skin.inverseBindMatrices >= 0 && inverse_bind.size() < 16 * skin.joints.size())
+        c.data.fail(name + " has fewer inverse bind matrices than joints");
+    c.out.skeleton = std::make_shared<const Skeleton>(read_skeleton(c.model, c.skin, inverse_bind, c.skin_transform));
+}
+
 void name_dropped(const Collector& c) {
     const tinygltf::Model& m = c.model;
     note_dropped(c.out, c.normals, "primitives' normals (the subdivided surface's normals follow from its shape; --normals writes them)");
     note_dropped(c.out, c.tangents, "primitives' tangents");
     note_dropped(c.out, c.extra_uvs, "primitives' second texture coordinate sets (only TEXCOORD_0 is kept)");
     note_dropped(c.out, c.alpha, "primitives' colour alpha (COLOR_0 keeps red, green and blue)");
-    note_dropped(c.out, c.skinned, "skinned primitives' joints and weights (JOINTS_0/WEIGHTS_0)");
-    note_dropped(c.out, m.skins.size(), "skins");
+    if (c.out.skeleton) {
+        note_dropped(c.out, m.skins.size() - 1, "skins besides the one of the meshes");
+    } else {
+        note_dropped(c.out, c.skinned,
+                     c.unweighted > 0 ? "skinned primitives' joints and weights (JOINTS_0/WEIGHTS_0): " + std::to_string(c.unweighted) +
+                                            " of their vertices have no weight"
+                                      : "skinned primitives' joints and weights (JOINTS_0/WEIGHTS_0): a skin is kept only when every "
+                                        "mesh is skinned by the same one");
+        note_dropped(c.out, m.skins.size(), "skins");
+    }
     note_dropped(c.out, c.morphed, "primitives' morph targets");
     note_dropped(c.out, m.animations.size(), "animations");
     note_dropped(c.out, m.cameras.size(), "cameras");
@@ -270,9 +333,10 @@ ForeignMesh read_gltf_mesh(const std::string& path) {
         for (std::size_t m = 0; m < model.meshes.size(); ++m) {
             out.group_names.push_back(model.meshes[m].name.empty() ? "mesh " + std::to_string(m + 1) : model.meshes[m].name);
             for (const tinygltf::Primitive& primitive : model.meshes[m].primitives)
-                add_primitive(c, primitive, identity, static_cast<std::uint32_t>(m));
+                add_primitive(c, primitive, identity, static_cast<std::uint32_t>(m), -1);
         }
     }
+    finish_skin(c);
     name_dropped(c);
     drop_idle_labels(out);
     return out;
