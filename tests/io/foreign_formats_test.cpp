@@ -219,6 +219,37 @@ TEST_F(ForeignFormats, AsciiPlyDoublesBitForBit) {
     EXPECT_TRUE(mesh.warnings.front().find("triangulated 1 quads") != std::string::npos) << mesh.warnings.front();
 }
 
+// Normals are named once in the dropped warning, as recomputed: positions move under subdivision, so
+// every written normal is the subdivided surface's own (docs/files.md).
+TEST_F(ForeignFormats, NormalsAreNamedOnceAsRecomputed) {
+    const auto entries_naming_normals = [](const std::string& warning) {
+        std::size_t n = 0;
+        for (std::size_t at = 0, end = 0; at < warning.size(); at = end + 2) {
+            end = std::min(warning.find("; ", at), warning.size());
+            n += warning.substr(at, end - at).find("normals") != std::string::npos;
+        }
+        return n;
+    };
+    write("normals.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                         "property float nx\nproperty float ny\nproperty float nz\nproperty float quality\n"
+                         "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                         "0 0 0 0 0 1 5\n1 0 0 0 0 1 5\n0 1 0 0 0 1 5\n3 0 1 2\n");
+    const LoadedMesh ply = read_mesh_file(path("normals.ply"));
+    ASSERT_EQ(ply.warnings.size(), 1u);
+    EXPECT_TRUE(has_warning(ply.warnings, "vertex normals (nx, ny, nz) (not kept: written normals are recomputed")) << ply.warnings[0];
+    EXPECT_TRUE(has_warning(ply.warnings, "1 other vertex properties (alpha, quality, ...)")) << ply.warnings[0];
+    EXPECT_EQ(entries_naming_normals(ply.warnings[0]), 1u) << ply.warnings[0];
+
+    GlbBuffer buffer;
+    buffer.add_floats({1, 0, 0, 0, 1, 0, 0, 0, 1}, "VEC3", 3);
+    buffer.add_floats({0, 0, 1, 0, 0, 1, 0, 0, 1}, "VEC3", 3);
+    write("normals.glb", buffer.file(R"("scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],"meshes":[{"primitives":[{"attributes":{"POSITION":0,"NORMAL":1}}]}])"));
+    const LoadedMesh gltf = read_mesh_file(path("normals.glb"));
+    ASSERT_EQ(gltf.warnings.size(), 1u);
+    EXPECT_TRUE(has_warning(gltf.warnings, "1 primitives' normals (not kept: written normals are recomputed")) << gltf.warnings[0];
+    EXPECT_EQ(entries_naming_normals(gltf.warnings[0]), 1u) << gltf.warnings[0];
+}
+
 TEST_F(ForeignFormats, BinaryPlyPositionsAndColours) {
     const std::vector<glm::dvec3> p = {{0.1, 0.2, 0.3}, {1.0 / 3.0, 0.0, 0.0}, {0.0, 1.1, 0.0}, {0.0, 0.0, 2.0 / 3.0}};
     write("le.ply", binary_tetrahedron_ply(false, true, p));

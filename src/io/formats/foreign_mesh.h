@@ -50,6 +50,12 @@ struct ForeignMesh {
 // AbsurdCoordinate, and validate_mesh's). In messages, "line N" of such a file is its N-th face.
 LoadedMesh weld_foreign_mesh(ForeignMesh&& mesh, const std::string& file, const ReadOptions& options);
 
+// Why no reader keeps a file's normals, said after naming them: subdivision moves the positions, so
+// the normals that fit the file's surface do not fit the written one, and every written normal is
+// recomputed (the exact Loop limit normals: rgb/values/limit_normals.h).
+inline constexpr const char* kNormalsRecomputed =
+    " (not kept: written normals are recomputed as the subdivided surface's exact limit normals, where --sharp-angle keeps hard edges sharp)";
+
 // Appends "N what" to mesh.dropped when n > 0.
 void note_dropped(ForeignMesh& mesh, std::size_t n, const std::string& what);
 

@@ -273,7 +273,7 @@ void finish_skin(Collector& c) {
 
 void name_dropped(const Collector& c) {
     const tinygltf::Model& m = c.model;
-    note_dropped(c.out, c.normals, "primitives' normals (the subdivided surface's normals follow from its shape; --normals writes them)");
+    note_dropped(c.out, c.normals, std::string("primitives' normals") + kNormalsRecomputed);
     note_dropped(c.out, c.tangents, "primitives' tangents");
     note_dropped(c.out, c.extra_uvs, "primitives' second texture coordinate sets (only TEXCOORD_0 is kept)");
     note_dropped(c.out, c.alpha, "primitives' colour alpha (COLOR_0 keeps red, green and blue)");
