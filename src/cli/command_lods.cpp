@@ -111,6 +111,7 @@ int run_lods(std::span<const std::string> args) {
     save.state = !arguments.has("--plain");
     save.attributes = asset.attributes;
     save.uvs = input_uv_layout(arguments, asset);
+    print_warnings("lods", *output, rgbio::dropped_skin(save.attributes.get(), *output));
     // The sizes a request can be checked for ahead are checked for all levels before any work.
     for (const rgbio::ScriptLine& request : requests) {
         if (const auto* level = std::get_if<rgb::LevelRequest>(&request.edit)) rgbio::check_request_size(asset.mesh, *level, limit);

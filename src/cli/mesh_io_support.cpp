@@ -53,6 +53,7 @@ void check_gltf_output_first(const char* command, const std::string& output, con
 void save_output(const char* command, const rgb::Mesh& mesh, const std::string& file, const rgbio::SaveOptions& save) {
     // Both writers have the exact texture coordinates of every level from the UV layout.
     std::vector<std::string> warnings = rgbio::dropped_attributes(mesh, save.attributes.get(), save.uvs != nullptr);
+    for (std::string& skin : rgbio::dropped_skin(save.attributes.get(), file)) warnings.push_back(std::move(skin));
     if (mesh.base().has_sharp_features() && (save.normals || rgbio::is_gltf_path(file)))
         warnings.push_back("the normals follow the smooth Loop rules (rgb/values/limit_normals.h): at vertices on tagged creases and "
                            "corners, whose tangent masks are not implemented yet, they are approximate");

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <iterator>
 
+#include "io/formats/mesh_format.h"
 #include "io/materials/material_library.h"
 #include "io/mesh_file.h"
 #include "io/mesh_reader.h"
@@ -59,6 +60,8 @@ BaseAttributes base_attributes(const LoadedMesh& loaded, const rgb::Mesh& mesh, 
         attributes.texcoords = loaded.texcoords;
         attributes.triangle_texcoords = loaded.triangle_texcoords;
         attributes.colours = loaded.colours;
+        attributes.skeleton = loaded.skeleton;
+        attributes.influences = loaded.influences;
         return attributes;
     }
     attributes.labels = loaded.adaptive_labels;
@@ -136,6 +139,11 @@ std::vector<std::string> dropped_attributes(const rgb::Mesh& mesh, const BaseAtt
         dropped.push_back("the texture coordinates (vt) are not written: the mesh is refined, and without the file's UV "
                           "layout only their level-0 values are known");
     return dropped;
+}
+
+std::vector<std::string> dropped_skin(const BaseAttributes* attributes, const std::string& path) {
+    if (!attributes || !attributes->skeleton || output_format(path) == OutputFormat::Gltf) return {};
+    return {"the skin (joints and their weights) is not written: only glTF files carry one"};
 }
 
 }  // namespace rgbio

@@ -34,6 +34,9 @@ struct BaseAttributes {
     std::vector<glm::dvec2> texcoords;
     std::vector<std::array<std::uint32_t, 3>> triangle_texcoords;  // empty, or per base face
     std::vector<glm::dvec3> colours;                               // empty, or per base vertex
+    // A glTF skin (io/obj/skin.h): written to glTF at every level (io/skin_weights.h), per base vertex.
+    std::shared_ptr<const Skeleton> skeleton;
+    std::vector<JointInfluences> influences;
 };
 
 // The attributes of the base mesh of a loaded file, whose mesh is `mesh` (build_mesh(loaded)). A
@@ -70,5 +73,8 @@ std::vector<std::string> library_references(const BaseAttributes& attributes, co
 // What a save of `mesh` leaves out of the attributes, one sentence each (empty when nothing).
 // `exact_uvs`: the texture coordinates are written through their own channel (rgb/values/uv_layout.h).
 std::vector<std::string> dropped_attributes(const rgb::Mesh& mesh, const BaseAttributes* attributes, bool exact_uvs = false);
+
+// What a save to `path` leaves out of a skin, one sentence (empty when nothing): only glTF carries one.
+std::vector<std::string> dropped_skin(const BaseAttributes* attributes, const std::string& path);
 
 }  // namespace rgbio

@@ -2,6 +2,7 @@
 
 #include "io/formats/mesh_format.h"
 #include "io/mesh_export.h"
+#include "io/skin_weights.h"
 #include "rgb/mesh/face_location.h"
 #include "rgb/values/limit_normals.h"
 #include "rgb/values/mesh_uvs.h"
@@ -43,6 +44,13 @@ GltfMesh gltf_mesh(const rgb::Mesh& mesh, const SaveOptions& options) {
         if (!materials.names.empty()) materials.of_triangle.push_back(attributes->labels.materials.of_triangle[rgb::base_face_of(mesh, f)]);
     }
     if (texcoords) out.texcoords = attributes->texcoords;
+    if (attributes && attributes->skeleton) {
+        const std::vector<JointInfluences> influences =
+            vertex_influences(mesh, attributes->influences, limit ? rgb::ChannelLevel::Limit : rgb::ChannelLevel::Displayed);
+        out.skeleton = attributes->skeleton;
+        out.influences.reserve(out.positions.size());
+        for (rgb::VertexId v : mesh.vertices()) out.influences.push_back(influences[v.idx]);
+    }
     if (attributes) {
         out.materials = attributes->materials;
         out.triangle_materials = material_indices(materials, out.materials);

@@ -5,7 +5,8 @@
 // colour, or base colour texture), every corner's exact texture coordinate from SaveOptions::uvs (the
 // OBJ writer's vt; without a UV layout, the level-0 ones while the mesh is its base mesh, and
 // dropped_attributes says what a refined one leaves out), and the vertex colours by the position
-// rules (rgb/values/vertex_channel.h) as COLOR_0, all at the positions' level.
+// rules (rgb/values/vertex_channel.h) as COLOR_0, and a skin's joint weights by the same rules
+// (skin_weights.h) as JOINTS_0/WEIGHTS_0, all at the positions' level.
 #include <string>
 
 #include "io/gltf/gltf_writer.h"

@@ -38,6 +38,35 @@ inline std::string glb_file(std::string json, std::string bin) {
     return out;
 }
 
+// The bytes of value arrays, and the glTF JSON of their buffer views and accessors, for a .glb.
+struct GlbBuffer {
+    std::string bytes, views, accessors;
+    int count = 0;
+    // An accessor over the floats (`type` VEC3, VEC2, ...; `components` per element).
+    int add_floats(const std::vector<float>& values, const char* type, int components) {
+        return add(values, type, components, 5126);
+    }
+    int add_indices(const std::vector<std::uint32_t>& values) { return add(values, "SCALAR", 1, 5125); }
+    // An accessor over values of any component type (5121 unsigned byte, 5123 unsigned short, ...).
+    template <class T>
+    int add(const std::vector<T>& values, const char* type, int components, int component_type, bool normalized = false) {
+        const std::size_t offset = bytes.size();
+        for (T v : values) put<T>(bytes, v);
+        while (bytes.size() % 4) bytes += '\0';  // the next view starts aligned
+        const std::string comma = count > 0 ? "," : "";
+        views += comma + R"({"buffer":0,"byteOffset":)" + std::to_string(offset) + R"(,"byteLength":)" + std::to_string(values.size() * sizeof(T)) + "}";
+        accessors += comma + R"({"bufferView":)" + std::to_string(count) + R"(,"componentType":)" + std::to_string(component_type) +
+                     (normalized ? R"(,"normalized":true)" : "") + R"(,"count":)" + std::to_string(values.size() / static_cast<std::size_t>(components)) +
+                     R"(,"type":")" + type + "\"}";
+        return count++;
+    }
+    std::string json(const std::string& rest) const {
+        return R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":)" + std::to_string(bytes.size()) + R"(}],"bufferViews":[)" + views +
+               R"(],"accessors":[)" + accessors + "]," + rest + "}";
+    }
+    std::string file(const std::string& rest) const { return glb_file(json(rest), bytes); }
+};
+
 // A binary STL of the given triangles (9 floats each), normals left zero.
 inline std::string binary_stl(const std::vector<std::array<float, 9>>& triangles) {
     std::string out(80, ' ');

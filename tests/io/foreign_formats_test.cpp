@@ -22,36 +22,9 @@ namespace rgbio {
 namespace {
 
 using test::binary_tetrahedron_ply;
+using test::GlbBuffer;
 using test::has_warning;
 using test::put;
-
-// The bytes of float arrays, and the glTF JSON of their buffer views and accessors, for a .glb.
-struct GlbBuffer {
-    std::string bytes, views, accessors;
-    int count = 0;
-    // An accessor over the floats (`type` VEC3, VEC2, ...; `components` per element).
-    int add_floats(const std::vector<float>& values, const char* type, int components) {
-        return add(values, type, components, 5126);
-    }
-    int add_indices(const std::vector<std::uint32_t>& values) { return add(values, "SCALAR", 1, 5125); }
-    std::string json(const std::string& rest) const {
-        return R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":)" + std::to_string(bytes.size()) + R"(}],"bufferViews":[)" + views +
-               R"(],"accessors":[)" + accessors + "]," + rest + "}";
-    }
-    std::string file(const std::string& rest) const { return test::glb_file(json(rest), bytes); }
-
-private:
-    template <class T>
-    int add(const std::vector<T>& values, const char* type, int components, int component_type) {
-        const std::size_t offset = bytes.size();
-        for (T v : values) put<T>(bytes, v);
-        const std::string comma = count > 0 ? "," : "";
-        views += comma + R"({"buffer":0,"byteOffset":)" + std::to_string(offset) + R"(,"byteLength":)" + std::to_string(values.size() * sizeof(T)) + "}";
-        accessors += comma + R"({"bufferView":)" + std::to_string(count) + R"(,"componentType":)" + std::to_string(component_type) +
-                     R"(,"count":)" + std::to_string(values.size() / static_cast<std::size_t>(components)) + R"(,"type":")" + type + "\"}";
-        return count++;
-    }
-};
 
 // Per triangle, its corners as (x, y, z, u, v), rotated to start at the smallest (u, v = -1: none).
 std::multiset<std::vector<std::array<double, 5>>> corners_of(const LoadedMesh& mesh) {
@@ -244,6 +217,37 @@ TEST_F(ForeignFormats, AsciiPlyDoublesBitForBit) {
     std::rotate(triangle.begin(), std::min_element(triangle.begin(), triangle.end()), triangle.end());
     EXPECT_EQ(corners.count(triangle), 1u);
     EXPECT_TRUE(mesh.warnings.front().find("triangulated 1 quads") != std::string::npos) << mesh.warnings.front();
+}
+
+// Normals are named once in the dropped warning, as recomputed: positions move under subdivision, so
+// every written normal is the subdivided surface's own (docs/files.md).
+TEST_F(ForeignFormats, NormalsAreNamedOnceAsRecomputed) {
+    const auto entries_naming_normals = [](const std::string& warning) {
+        std::size_t n = 0;
+        for (std::size_t at = 0, end = 0; at < warning.size(); at = end + 2) {
+            end = std::min(warning.find("; ", at), warning.size());
+            n += warning.substr(at, end - at).find("normals") != std::string::npos;
+        }
+        return n;
+    };
+    write("normals.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                         "property float nx\nproperty float ny\nproperty float nz\nproperty float quality\n"
+                         "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                         "0 0 0 0 0 1 5\n1 0 0 0 0 1 5\n0 1 0 0 0 1 5\n3 0 1 2\n");
+    const LoadedMesh ply = read_mesh_file(path("normals.ply"));
+    ASSERT_EQ(ply.warnings.size(), 1u);
+    EXPECT_TRUE(has_warning(ply.warnings, "vertex normals (nx, ny, nz) (not kept: written normals are recomputed")) << ply.warnings[0];
+    EXPECT_TRUE(has_warning(ply.warnings, "1 other vertex properties (alpha, quality, ...)")) << ply.warnings[0];
+    EXPECT_EQ(entries_naming_normals(ply.warnings[0]), 1u) << ply.warnings[0];
+
+    GlbBuffer buffer;
+    buffer.add_floats({1, 0, 0, 0, 1, 0, 0, 0, 1}, "VEC3", 3);
+    buffer.add_floats({0, 0, 1, 0, 0, 1, 0, 0, 1}, "VEC3", 3);
+    write("normals.glb", buffer.file(R"("scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],"meshes":[{"primitives":[{"attributes":{"POSITION":0,"NORMAL":1}}]}])"));
+    const LoadedMesh gltf = read_mesh_file(path("normals.glb"));
+    ASSERT_EQ(gltf.warnings.size(), 1u);
+    EXPECT_TRUE(has_warning(gltf.warnings, "1 primitives' normals (not kept: written normals are recomputed")) << gltf.warnings[0];
+    EXPECT_EQ(entries_naming_normals(gltf.warnings[0]), 1u) << gltf.warnings[0];
 }
 
 TEST_F(ForeignFormats, BinaryPlyPositionsAndColours) {

@@ -159,7 +159,7 @@ ForeignMesh read_assimp_mesh(const std::string& path) {
     read_materials(*scene, fs::path(path).parent_path(), out);
     Walk w{*scene, path, out};
     add_node(w, *scene->mRootNode, glm::dmat4(1.0), 0);
-    note_dropped(out, w.normals, "meshes' normals (the subdivided surface's normals follow from its shape; --normals writes them)");
+    note_dropped(out, w.normals, std::string("meshes' normals") + kNormalsRecomputed);
     note_dropped(out, w.extra_uvs, "meshes' second texture coordinate sets");
     note_dropped(out, w.skinned, "skinned meshes' bones and weights");
     note_dropped(out, w.morphed, "meshes' morph targets");

@@ -10,6 +10,19 @@
 
 namespace rgbio {
 
+// A hash of a point's exact value: equal points (+0 and -0 alike) hash alike.
+template <std::size_t N>
+std::size_t exact_hash(const std::array<double, N>& p) {
+    std::uint64_t h = 0x9E3779B97F4A7C15ull;
+    for (double x : p) {
+        // + 0.0 makes -0 into +0, which compares equal and must land in the same slot.
+        h ^= std::bit_cast<std::uint64_t>(x + 0.0);
+        h *= 0xBF58476D1CE4E5B9ull;
+        h ^= h >> 31;
+    }
+    return static_cast<std::size_t>(h);
+}
+
 template <std::size_t N>
 class ExactIndex {
 public:
@@ -38,16 +51,7 @@ public:
     const std::vector<Point>& points() const { return points_; }
 
 private:
-    static std::size_t hash(const Point& p) {
-        std::uint64_t h = 0x9E3779B97F4A7C15ull;
-        for (double x : p) {
-            // + 0.0 makes -0 into +0, which compares equal and must land in the same slot.
-            h ^= std::bit_cast<std::uint64_t>(x + 0.0);
-            h *= 0xBF58476D1CE4E5B9ull;
-            h ^= h >> 31;
-        }
-        return static_cast<std::size_t>(h);
-    }
+    static std::size_t hash(const Point& p) { return exact_hash<N>(p); }
     void rehash(std::size_t size) {
         slots_.assign(size, kEmpty);
         for (std::uint32_t id = 0; id < points_.size(); ++id) {

@@ -5,6 +5,7 @@
 #include <map>
 
 #include "io/formats/exact_index.h"
+#include "io/formats/exact_weld.h"
 #include "io/obj/obj_error.h"
 #include "io/obj/obj_parser.h"
 #include "io/repair/mesh_validation.h"
@@ -28,27 +29,31 @@ void check_coordinates(const glm::dvec3& p, std::size_t vertex, const std::strin
 // Welded vertices are numbered in the file's vertex order (a file without split vertices keeps its
 // numbering, as an OBJ does).
 std::vector<std::uint32_t> weld_positions(const ForeignMesh& mesh, ObjRecords& records, const std::string& file,
-                                          std::size_t& colour_conflicts) {
-    std::vector<std::uint32_t> welded(mesh.positions.size(), kNoIndex);
+                                          std::size_t& colour_conflicts, std::size_t& skin_conflicts) {
+    std::vector<std::uint8_t> used(mesh.positions.size(), 0);
     for (std::uint32_t v : mesh.corners) {
         if (v >= mesh.positions.size())
             throw ObjError(ObjProblem::Malformed, file, 0,
                            "a face names vertex " + std::to_string(std::size_t(v) + 1) + " of " + std::to_string(mesh.positions.size()));
-        welded[v] = 0;  // used
+        used[v] = 1;
     }
-    ExactIndex<3> index(mesh.positions.size());
+    const std::vector<std::uint32_t> first = first_equal_points(mesh.positions, used);
+    std::vector<std::uint32_t> welded(mesh.positions.size(), kNoIndex);
+    records.positions.reserve(mesh.positions.size());
+    records.position_lines.reserve(mesh.positions.size());
     for (std::uint32_t v = 0; v < mesh.positions.size(); ++v) {
-        if (welded[v] == kNoIndex) continue;
+        if (!used[v]) continue;
         const glm::dvec3& p = mesh.positions[v];
         check_coordinates(p, v, file);
-        bool added = false;
-        welded[v] = index.number({p.x, p.y, p.z}, added);
-        if (added) {
+        if (first[v] == v) {
+            welded[v] = static_cast<std::uint32_t>(records.positions.size());
             records.positions.push_back(p);
             records.position_lines.push_back(std::size_t(v) + 1);
             if (!mesh.colours.empty()) records.colours.push_back(mesh.colours[v]);
-        } else if (!mesh.colours.empty() && records.colours[welded[v]] != mesh.colours[v]) {
-            ++colour_conflicts;
+        } else {
+            welded[v] = welded[first[v]];
+            colour_conflicts += !mesh.colours.empty() && records.colours[welded[v]] != mesh.colours[v];
+            skin_conflicts += !mesh.influences.empty() && mesh.influences[first[v]] != mesh.influences[v];
         }
     }
     if (!records.colours.empty()) records.has_colour.assign(records.colours.size(), 1);
@@ -114,7 +119,14 @@ void add_polygons(const ForeignMesh& mesh, const std::vector<std::uint32_t>& wel
         }
         if (vertices.size() < 3) continue;  // readers pass points and lines on as dropped, not as faces
         sorted.assign(vertices.begin(), vertices.end());
-        std::sort(sorted.begin(), sorted.end());
+        if (sorted.size() == 3) {
+            // Speed: most faces are triangles, which three swaps sort.
+            if (sorted[0] > sorted[1]) std::swap(sorted[0], sorted[1]);
+            if (sorted[1] > sorted[2]) std::swap(sorted[1], sorted[2]);
+            if (sorted[0] > sorted[1]) std::swap(sorted[0], sorted[1]);
+        } else {
+            std::sort(sorted.begin(), sorted.end());
+        }
         // Welding makes a face whose corners coincide (a sliver STL and scanners write) use a vertex
         // twice: it has no area and no place in a manifold.
         if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) {
@@ -139,8 +151,8 @@ void add_polygons(const ForeignMesh& mesh, const std::vector<std::uint32_t>& wel
 
 LoadedMesh weld_foreign_mesh(ForeignMesh&& mesh, const std::string& file, const ReadOptions& options) {
     ObjRecords records;
-    std::size_t colour_conflicts = 0;
-    const std::vector<std::uint32_t> welded = weld_positions(mesh, records, file, colour_conflicts);
+    std::size_t colour_conflicts = 0, skin_conflicts = 0;
+    const std::vector<std::uint32_t> welded = weld_positions(mesh, records, file, colour_conflicts, skin_conflicts);
     for (const Material& m : mesh.materials) records.material_names.push_back(m.name);
     records.group_names = mesh.group_names;
     // Speed: hashing every triangle to find duplicates took a tenth of reading a 1M-triangle file, and
@@ -183,6 +195,15 @@ LoadedMesh weld_foreign_mesh(ForeignMesh&& mesh, const std::string& file, const 
     if (colour_conflicts > 0)
         warnings.push_back(std::to_string(colour_conflicts) +
                            " corners carry another colour than the first corner at their position: colours are kept per vertex, the first one wins");
+    if (skin_conflicts > 0)
+        warnings.push_back(std::to_string(skin_conflicts) +
+                           " corners carry other joint weights than the first corner at their position: weights are kept per vertex, the first ones win");
+    if (mesh.skeleton) {
+        // Each loaded vertex from its welded vertex, which is the first file vertex at its position.
+        loaded.skeleton = std::move(mesh.skeleton);
+        loaded.influences.reserve(loaded.file_vertex.size());
+        for (std::uint32_t r : loaded.file_vertex) loaded.influences.push_back(mesh.influences[records.position_lines[r] - 1]);
+    }
     loaded.warnings.insert(loaded.warnings.begin(), warnings.begin(), warnings.end());
     loaded.materials = std::move(mesh.materials);
     return loaded;

@@ -9,6 +9,7 @@
 // coordinates (+0 and -0 alike) become one vertex, so the surface is one manifold; what differs
 // between the corners of a welded vertex (texture coordinates) stays per corner, as OBJ's vt.
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,7 @@
 #include <glm/vec3.hpp>
 
 #include "io/obj/loaded_mesh.h"
+#include "io/obj/skin.h"
 
 namespace rgbio {
 
@@ -23,6 +25,8 @@ struct ForeignMesh {
     std::vector<glm::dvec3> positions;   // per vertex, as the file stores them (node transforms applied)
     std::vector<glm::dvec3> colours;     // empty, or per vertex (0-1)
     std::vector<glm::dvec2> vertex_uvs;  // empty, or per vertex (OBJ's convention: v up)
+    std::vector<JointInfluences> influences;  // empty, or per vertex, with `skeleton`
+    std::shared_ptr<const Skeleton> skeleton;
     // Polygon i's corners are corners[face_start[i] .. face_start[i + 1]), vertex indices.
     std::vector<std::uint32_t> face_start{0};
     std::vector<std::uint32_t> corners;
@@ -45,6 +49,12 @@ struct ForeignMesh {
 // validates and repairs as for OBJ. Throws ObjError (NoFaces, NonFiniteCoordinate,
 // AbsurdCoordinate, and validate_mesh's). In messages, "line N" of such a file is its N-th face.
 LoadedMesh weld_foreign_mesh(ForeignMesh&& mesh, const std::string& file, const ReadOptions& options);
+
+// Why no reader keeps a file's normals, said after naming them: subdivision moves the positions, so
+// the normals that fit the file's surface do not fit the written one, and every written normal is
+// recomputed (the exact Loop limit normals: rgb/values/limit_normals.h).
+inline constexpr const char* kNormalsRecomputed =
+    " (not kept: written normals are recomputed as the subdivided surface's exact limit normals, where --sharp-angle keeps hard edges sharp)";
 
 // Appends "N what" to mesh.dropped when n > 0.
 void note_dropped(ForeignMesh& mesh, std::size_t n, const std::string& what);

@@ -1,6 +1,7 @@
 #include "io/formats/gltf_reader.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <functional>
@@ -13,6 +14,7 @@
 
 #include "io/files/file_text.h"
 #include "io/formats/binary_value.h"
+#include "io/formats/gltf_skin.h"
 #include "io/obj/obj_error.h"
 
 namespace rgbio {
@@ -56,31 +58,39 @@ public:
             end < start)
             fail("bad accessor: " + name + " reaches beyond its buffer (" + std::to_string(buffer.size()) + " bytes)");
         const unsigned char* bytes = buffer.data() + start;
-        for (std::size_t i = 0; i < accessor.count; ++i)
-            for (int c = 0; c < components; ++c)
-                values[i * static_cast<std::size_t>(components) + static_cast<std::size_t>(c)] =
-                    component(bytes + i * static_cast<std::size_t>(stride) + static_cast<std::size_t>(c * size), accessor.componentType,
-                              accessor.normalized);
+        const auto copy = [&]<class T>(T, double scale, double low) {
+            copy_values<T>(bytes, accessor.count, components, static_cast<std::size_t>(stride), scale, low, values.data());
+        };
+        // The spec's normalized integers: unsigned ones over their maximum, signed ones too, at least -1.
+        const bool normalized = accessor.normalized;
+        switch (accessor.componentType) {
+            case TINYGLTF_COMPONENT_TYPE_FLOAT: copy(float(), 1.0, -HUGE_VAL); break;
+            case TINYGLTF_COMPONENT_TYPE_DOUBLE: copy(double(), 1.0, -HUGE_VAL); break;
+            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: copy(std::uint8_t(), normalized ? 255.0 : 1.0, -HUGE_VAL); break;
+            case TINYGLTF_COMPONENT_TYPE_BYTE: copy(std::int8_t(), normalized ? 127.0 : 1.0, normalized ? -1.0 : -HUGE_VAL); break;
+            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: copy(std::uint16_t(), normalized ? 65535.0 : 1.0, -HUGE_VAL); break;
+            case TINYGLTF_COMPONENT_TYPE_SHORT: copy(std::int16_t(), normalized ? 32767.0 : 1.0, normalized ? -1.0 : -HUGE_VAL); break;
+            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: copy(std::uint32_t(), 1.0, -HUGE_VAL); break;
+            case TINYGLTF_COMPONENT_TYPE_INT: copy(std::int32_t(), 1.0, -HUGE_VAL); break;
+        }
         return values;
     }
 
     std::size_t count(int index) const { return model_.accessors[static_cast<std::size_t>(index)].count; }
 
 private:
-    // One component as stored, or the spec's normalized value of an integer type.
-    static double component(const unsigned char* p, int type, bool normalized) {
-        switch (type) {
-            case TINYGLTF_COMPONENT_TYPE_FLOAT: return binary_value<float>(p);
-            case TINYGLTF_COMPONENT_TYPE_DOUBLE: return binary_value<double>(p);
-            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return normalized ? binary_value<std::uint8_t>(p) / 255.0 : binary_value<std::uint8_t>(p);
-            case TINYGLTF_COMPONENT_TYPE_BYTE: return normalized ? std::max(binary_value<std::int8_t>(p) / 127.0, -1.0) : binary_value<std::int8_t>(p);
-            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return normalized ? binary_value<std::uint16_t>(p) / 65535.0 : binary_value<std::uint16_t>(p);
-            case TINYGLTF_COMPONENT_TYPE_SHORT: return normalized ? std::max(binary_value<std::int16_t>(p) / 32767.0, -1.0) : binary_value<std::int16_t>(p);
-            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return binary_value<std::uint32_t>(p);
-            case TINYGLTF_COMPONENT_TYPE_INT: return binary_value<std::int32_t>(p);
-        }
-        return 0.0;
+    // The components as stored, each over `scale` and at least `low` (x / 1 is x, NaN stays NaN).
+    // Speed: one loop per component type, not a switch per value.
+    template <class T>
+    static void copy_values(const unsigned char* bytes, std::size_t count, int components, std::size_t stride, double scale, double low,
+                            double* out) {
+        for (std::size_t i = 0; i < count; ++i, bytes += stride)
+            for (int c = 0; c < components; ++c) *out++ = std::max(binary_value<T>(bytes + static_cast<std::size_t>(c) * sizeof(T)) / scale, low);
     }
+public:
+    const std::string& path() const { return path_; }
+
+private:
     const tinygltf::Model& model_;
     std::string path_;
 };
@@ -102,10 +112,35 @@ struct Collector {
     ForeignMesh& out;
     std::vector<std::uint32_t> material_of;  // glTF material -> out.materials index
     std::size_t normals = 0, tangents = 0, extra_uvs = 0, skinned = 0, morphed = 0, lines_or_points = 0, alpha = 0;
+    // The skin is kept while every primitive with triangles is skinned by one skin from nodes of one
+    // transform (the weights of one vertex name the joints of one skeleton): `skin` is that one.
+    int skin = -1;
+    bool keep_skin = true;
+    glm::dmat4 skin_transform{1.0};
+    std::size_t unweighted = 0;
 };
 
+// The primitive's vertices' joint influences appended to c.out.influences, or the skin given up.
+void add_influences(Collector& c, const tinygltf::Primitive& primitive, int skin, const glm::dmat4& transform, std::size_t first) {
+    const auto joints = primitive.attributes.find("JOINTS_0"), weights = primitive.attributes.find("WEIGHTS_0");
+    const bool skinned = skin >= 0 && joints != primitive.attributes.end() && weights != primitive.attributes.end();
+    if (skinned && c.keep_skin && c.skin < 0) {
+        c.skin = skin;
+        c.skin_transform = transform;
+    }
+    c.keep_skin = c.keep_skin && skinned && c.skin == skin && c.skin_transform == transform;
+    if (!c.keep_skin) return;
+    const std::vector<double> j = c.data.read(joints->second, 4, "JOINTS_0");
+    const std::vector<double> w = c.data.read(weights->second, 4, "WEIGHTS_0");
+    if (j.size() != w.size() || j.size() / 4 != c.out.positions.size() - first)
+        c.data.fail("JOINTS_0 and WEIGHTS_0 must have one element per vertex of their primitive");
+    const std::vector<JointInfluences> influences =
+        joint_influences(j, w, c.model.skins[static_cast<std::size_t>(skin)].joints.size(), c.data.path(), c.unweighted);
+    c.out.influences.insert(c.out.influences.end(), influences.begin(), influences.end());
+}
+
 // The triangles of one primitive placed by `transform`, in group `group`.
-void add_primitive(Collector& c, const tinygltf::Primitive& primitive, const glm::dmat4& transform, std::uint32_t group) {
+void add_primitive(Collector& c, const tinygltf::Primitive& primitive, const glm::dmat4& transform, std::uint32_t group, int skin) {
     const int mode = primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
     if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
         ++c.lines_or_points;
@@ -127,6 +162,7 @@ void add_primitive(Collector& c, const tinygltf::Primitive& primitive, const glm
     const std::size_t first = out.positions.size();
     const std::vector<double> p = c.data.read(position, 3, "POSITION");
     const std::size_t n = p.size() / 3;
+    out.positions.reserve(first + n);
     const bool identity = transform == glm::dmat4(1.0);
     for (std::size_t i = 0; i < n; ++i) {
         const glm::dvec3 x(p[3 * i], p[3 * i + 1], p[3 * i + 2]);
@@ -148,9 +184,12 @@ void add_primitive(Collector& c, const tinygltf::Primitive& primitive, const glm
         for (std::size_t i = 0; i < n; ++i)
             out.colours.push_back(3 * i + 2 < rgb.size() ? glm::dvec3(rgb[3 * i], rgb[3 * i + 1], rgb[3 * i + 2]) : glm::dvec3(1.0));
     }
+    add_influences(c, primitive, skin, transform, first);
     std::vector<std::uint32_t> indices;
     if (primitive.indices >= 0) {
-        for (double i : c.data.read(primitive.indices, 1, "indices")) {
+        const std::vector<double> read = c.data.read(primitive.indices, 1, "indices");
+        indices.reserve(read.size());
+        for (double i : read) {
             if (i >= static_cast<double>(n)) c.data.fail("bad accessor: index " + std::to_string(static_cast<std::size_t>(i)) + " beyond the " +
                                                          std::to_string(n) + " vertices of its primitive");
             indices.push_back(static_cast<std::uint32_t>(first + static_cast<std::size_t>(i)));
@@ -161,6 +200,8 @@ void add_primitive(Collector& c, const tinygltf::Primitive& primitive, const glm
     // A transform that mirrors turns the winding over: undone so outward stays outward.
     const bool mirrored = glm::determinant(glm::dmat3(transform)) < 0.0;
     const std::size_t faces_before = out.num_faces();
+    out.corners.reserve(out.corners.size() + indices.size());
+    out.face_start.reserve(out.face_start.size() + (mode == TINYGLTF_MODE_TRIANGLES ? indices.size() / 3 : indices.size()));
     const auto add = [&](std::uint32_t a, std::uint32_t b, std::uint32_t d) { mirrored ? out.add_face(a, d, b) : out.add_face(a, b, d); };
     if (mode == TINYGLTF_MODE_TRIANGLES)
         for (std::size_t i = 0; i + 2 < indices.size(); i += 3) add(indices[i], indices[i + 1], indices[i + 2]);
@@ -187,7 +228,9 @@ void add_node(Collector& c, int index, const glm::dmat4& parent, std::vector<std
         const tinygltf::Mesh& mesh = c.model.meshes[static_cast<std::size_t>(node.mesh)];
         const std::uint32_t group = static_cast<std::uint32_t>(c.out.group_names.size());
         c.out.group_names.push_back(!node.name.empty() ? node.name : !mesh.name.empty() ? mesh.name : "mesh " + std::to_string(node.mesh + 1));
-        for (const tinygltf::Primitive& primitive : mesh.primitives) add_primitive(c, primitive, transform, group);
+        if (node.skin >= 0 && static_cast<std::size_t>(node.skin) >= c.model.skins.size())
+            c.data.fail("node " + std::to_string(index) + " names a skin that does not exist");
+        for (const tinygltf::Primitive& primitive : mesh.primitives) add_primitive(c, primitive, transform, group, node.skin);
     }
     for (int child : node.children) add_node(c, child, transform, on_path);
     on_path[static_cast<std::size_t>(index)] = 0;
@@ -216,14 +259,44 @@ void read_materials(Collector& c, const fs::path& folder) {
     if (embedded > 0) c.out.dropped.push_back(std::to_string(embedded) + " base-colour textures embedded in the file (only image files beside it are kept)");
 }
 
+// The skin that every mesh has, with its skeleton, into c.out; or no influences.
+void finish_skin(Collector& c) {
+    // Written joints are 16-bit (JOINTS_0 as unsigned short).
+    const bool kept = c.skin >= 0 && c.keep_skin && c.unweighted == 0 && c.out.influences.size() == c.out.positions.size() &&
+                      c.model.skins[static_cast<std::size_t>(c.skin)].joints.size() <= 65536;
+    if (!kept) {
+        c.out.influences.clear();
+        return;
+    }
+    const tinygltf::Skin& skin = c.model.skins[static_cast<std::size_t>(c.skin)];
+    const std::string name = "skin " + std::to_string(c.skin);
+    for (int joint : skin.joints)
+        if (joint < 0 || static_cast<std::size_t>(joint) >= c.model.nodes.size()) c.data.fail(name + " names joint node " + std::to_string(joint) + ", which does not exist");
+    if (skin.skeleton >= 0 && static_cast<std::size_t>(skin.skeleton) >= c.model.nodes.size())
+        c.data.fail(name + " names skeleton node " + std::to_string(skin.skeleton) + ", which does not exist");
+    const std::vector<double> inverse_bind =
+        skin.inverseBindMatrices >= 0 ? c.data.read(skin.inverseBindMatrices, 16, "inverseBindMatrices") : std::vector<double>();
+    if (skin.inverseBindMatrices >= 0 && inverse_bind.size() < 16 * skin.joints.size())
+        c.data.fail(name + " has fewer inverse bind matrices than joints");
+    c.out.skeleton = std::make_shared<const Skeleton>(read_skeleton(c.model, c.skin, inverse_bind, c.skin_transform));
+}
+
 void name_dropped(const Collector& c) {
     const tinygltf::Model& m = c.model;
-    note_dropped(c.out, c.normals, "primitives' normals (the subdivided surface's normals follow from its shape; --normals writes them)");
+    note_dropped(c.out, c.normals, std::string("primitives' normals") + kNormalsRecomputed);
     note_dropped(c.out, c.tangents, "primitives' tangents");
     note_dropped(c.out, c.extra_uvs, "primitives' second texture coordinate sets (only TEXCOORD_0 is kept)");
     note_dropped(c.out, c.alpha, "primitives' colour alpha (COLOR_0 keeps red, green and blue)");
-    note_dropped(c.out, c.skinned, "skinned primitives' joints and weights (JOINTS_0/WEIGHTS_0)");
-    note_dropped(c.out, m.skins.size(), "skins");
+    if (c.out.skeleton) {
+        note_dropped(c.out, m.skins.size() - 1, "skins besides the one of the meshes");
+    } else {
+        note_dropped(c.out, c.skinned,
+                     c.unweighted > 0 ? "skinned primitives' joints and weights (JOINTS_0/WEIGHTS_0): " + std::to_string(c.unweighted) +
+                                            " of their vertices have no weight"
+                                      : "skinned primitives' joints and weights (JOINTS_0/WEIGHTS_0): a skin is kept only when every "
+                                        "mesh is skinned by the same one");
+        note_dropped(c.out, m.skins.size(), "skins");
+    }
     note_dropped(c.out, c.morphed, "primitives' morph targets");
     note_dropped(c.out, m.animations.size(), "animations");
     note_dropped(c.out, m.cameras.size(), "cameras");
@@ -270,9 +343,10 @@ ForeignMesh read_gltf_mesh(const std::string& path) {
         for (std::size_t m = 0; m < model.meshes.size(); ++m) {
             out.group_names.push_back(model.meshes[m].name.empty() ? "mesh " + std::to_string(m + 1) : model.meshes[m].name);
             for (const tinygltf::Primitive& primitive : model.meshes[m].primitives)
-                add_primitive(c, primitive, identity, static_cast<std::uint32_t>(m));
+                add_primitive(c, primitive, identity, static_cast<std::uint32_t>(m), -1);
         }
     }
+    finish_skin(c);
     name_dropped(c);
     drop_idle_labels(out);
     return out;

@@ -4,7 +4,8 @@
 // node transforms composed along the hierarchy (in double precision; a node without a transform
 // leaves the stored floats as they are), TEXCOORD_0 (v flipped to OBJ's convention), COLOR_0,
 // materials (base colour factor and an external base-colour texture), and one group per placed mesh
-// when there are several. Normals, tangents, further UV sets, skins (JOINTS_0/WEIGHTS_0), morph
+// when there are several, and the skin every mesh has (JOINTS_0/WEIGHTS_0 per vertex and the
+// skeleton: gltf_skin.h). Normals, tangents, further UV sets, a skin not every mesh has, morph
 // targets, animations, cameras, lights and embedded textures are named as dropped.
 #include <string>
 

@@ -191,7 +191,7 @@ PlyHeader parse_header(std::string_view text, const std::string& path) {
 }
 
 // Where each property of the vertex element goes: a coordinate, a colour or UV component, or nowhere.
-enum class Slot : std::uint8_t { X, Y, Z, Red, Green, Blue, U, V, Other };
+enum class Slot : std::uint8_t { X, Y, Z, Red, Green, Blue, U, V, Normal, Other };
 
 Slot vertex_slot(const std::string& name) {
     if (name == "x") return Slot::X;
@@ -202,18 +202,20 @@ Slot vertex_slot(const std::string& name) {
     if (name == "blue" || name == "diffuse_blue") return Slot::Blue;
     if (name == "s" || name == "u" || name == "texture_u" || name == "texture_s") return Slot::U;
     if (name == "t" || name == "v" || name == "texture_v" || name == "texture_t") return Slot::V;
+    if (name == "nx" || name == "ny" || name == "nz") return Slot::Normal;
     return Slot::Other;
 }
 
 void read_vertices(PlyBody& body, const PlyElement& element, ForeignMesh& out) {
     std::vector<Slot> slots;
-    bool colour = false, uv = false;
+    bool colour = false, uv = false, normals = false;
     int coordinates = 0;
     for (const PlyProperty& p : element.properties) {
         slots.push_back(p.list ? Slot::Other : vertex_slot(p.name));
         coordinates += slots.back() <= Slot::Z;
         colour |= slots.back() == Slot::Red;
         uv |= slots.back() == Slot::U;
+        normals |= slots.back() == Slot::Normal;
     }
     if (coordinates != 3) body.fail("the vertex element needs the properties x, y and z");
     if (element.count > body.remaining()) body.fail("the vertex element's count (" + std::to_string(element.count) + ") is beyond the file's size");
@@ -237,11 +239,13 @@ void read_vertices(PlyBody& body, const PlyElement& element, ForeignMesh& out) {
                     break;
                 case Slot::U: out.vertex_uvs[i].x = value; break;
                 case Slot::V: out.vertex_uvs[i].y = value; break;
+                case Slot::Normal: break;
                 case Slot::Other: others += i == 0; break;
             }
         }
     }
-    note_dropped(out, others, "other vertex properties (normals, alpha, quality, ...)");
+    if (normals) out.dropped.push_back(std::string("vertex normals (nx, ny, nz)") + kNormalsRecomputed);
+    note_dropped(out, others, "other vertex properties (alpha, quality, ...)");
 }
 
 void read_faces(PlyBody& body, const PlyElement& element, ForeignMesh& out) {

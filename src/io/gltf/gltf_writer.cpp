@@ -73,7 +73,8 @@ GltfVertices unweld(const GltfMesh& mesh) {
 
 class ModelBuilder {
 public:
-    // Appends raw values to the buffer as a view (4-byte aligned: every value here is 4 bytes).
+    // Appends raw values to the buffer as a view (4-byte aligned: every value here is 4 bytes, or
+    // 2 in groups of four).
     template <class T>
     int add_view(const std::vector<T>& values, int target) {
         tinygltf::BufferView view;
@@ -248,6 +249,24 @@ tinygltf::Mesh add_mesh(ModelBuilder& builder, const GltfMesh& mesh) {
         for (std::uint32_t v : vertices.position) colours.push_back(mesh.colours[v]);
         base.attributes["COLOR_0"] = builder.add_floats<3>(colours, TINYGLTF_TYPE_VEC3, false);
     }
+    if (!mesh.influences.empty()) {
+        std::vector<std::uint16_t> joints;
+        std::vector<float> weights;
+        for (std::uint32_t v : vertices.position) {
+            const JointInfluences& in = mesh.influences[v];
+            for (std::uint32_t j : in.joints) joints.push_back(static_cast<std::uint16_t>(j));
+            // The heaviest takes what the others leave of 1, so that the floats written sum to 1
+            // within the last bit (viewers and the validator check the sum).
+            double rest = 0.0;
+            for (std::size_t k = 1; k < kMaxInfluences; ++k) rest += static_cast<double>(static_cast<float>(in.weights[k]));
+            weights.push_back(static_cast<float>(1.0 - rest));
+            for (std::size_t k = 1; k < kMaxInfluences; ++k) weights.push_back(static_cast<float>(in.weights[k]));
+        }
+        base.attributes["JOINTS_0"] = builder.add_accessor(builder.add_view(joints, TINYGLTF_TARGET_ARRAY_BUFFER),
+                                                           TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_TYPE_VEC4, vertices.position.size());
+        base.attributes["WEIGHTS_0"] = builder.add_accessor(builder.add_view(weights, TINYGLTF_TARGET_ARRAY_BUFFER),
+                                                            TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC4, vertices.position.size());
+    }
     if (!mesh.triangle_texcoords.empty()) {
         std::vector<glm::dvec2> texcoords;
         for (std::uint32_t uv : vertices.texcoord)
@@ -271,6 +290,38 @@ tinygltf::Mesh add_mesh(ModelBuilder& builder, const GltfMesh& mesh) {
     return gltf_mesh;
 }
 
+// The skin, its joints the skeleton's nodes as they will be numbered: after the `first_node` nodes
+// of the levels.
+void add_skin(ModelBuilder& builder, const Skeleton& skeleton, int first_node) {
+    tinygltf::Skin skin;
+    skin.name = utf8_name(skeleton.name);
+    for (std::uint32_t joint : skeleton.joints) skin.joints.push_back(first_node + static_cast<int>(joint));
+    if (skeleton.root >= 0) skin.skeleton = first_node + static_cast<int>(skeleton.root);
+    std::vector<float> matrices;
+    for (const glm::dmat4& m : skeleton.inverse_bind_matrices)
+        for (int column = 0; column < 4; ++column)
+            for (int row = 0; row < 4; ++row) matrices.push_back(static_cast<float>(m[column][row]));
+    // Inverse bind matrices are no vertex data: their view has no target.
+    skin.inverseBindMatrices = builder.add_accessor(builder.add_view(matrices, 0), TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_MAT4,
+                                                    skeleton.inverse_bind_matrices.size());
+    builder.model.skins.push_back(std::move(skin));
+}
+
+// The skeleton's nodes after the levels' nodes, with the names and transforms of the file read.
+void add_skeleton_nodes(const Skeleton& skeleton, tinygltf::Model& model) {
+    const int first = static_cast<int>(model.nodes.size());
+    for (const SkeletonNode& s : skeleton.nodes) {
+        tinygltf::Node node;
+        node.name = utf8_name(s.name);
+        node.matrix = s.matrix;
+        node.translation = s.translation;
+        node.rotation = s.rotation;
+        node.scale = s.scale;
+        for (std::uint32_t c : s.children) node.children.push_back(first + static_cast<int>(c));
+        model.nodes.push_back(std::move(node));
+    }
+}
+
 }  // namespace
 
 std::string format_gltf_lods(std::span<const GltfMesh> levels, std::span<const double> coverage, GltfContainer container,
@@ -279,6 +330,8 @@ std::string format_gltf_lods(std::span<const GltfMesh> levels, std::span<const d
         throw std::invalid_argument("format_gltf_lods: one or more levels, with a screen coverage each when several");
     ModelBuilder builder;
     for (const GltfMesh& level : levels) builder.model.meshes.push_back(add_mesh(builder, level));
+    const Skeleton* skeleton = levels[0].skeleton.get();
+    if (skeleton) add_skin(builder, *skeleton, static_cast<int>(levels.size()));
     builder.finish();
 
     tinygltf::Model& model = builder.model;
@@ -288,6 +341,7 @@ std::string format_gltf_lods(std::span<const GltfMesh> levels, std::span<const d
     for (std::size_t i = 0; i < levels.size(); ++i) {
         tinygltf::Node node;
         node.mesh = static_cast<int>(i);
+        if (skeleton) node.skin = 0;
         if (levels.size() > 1) node.name = "LOD" + std::to_string(i);
         model.nodes.push_back(node);
     }
@@ -303,8 +357,17 @@ std::string format_gltf_lods(std::span<const GltfMesh> levels, std::span<const d
         model.nodes[0].extras = tinygltf::Value(extras);
         model.extensionsUsed.push_back("MSFT_lod");
     }
+    if (skeleton) add_skeleton_nodes(*skeleton, model);
     tinygltf::Scene scene;
     scene.nodes.push_back(0);
+    if (skeleton) {
+        // The skeleton's roots: its nodes that are no other's child.
+        std::vector<std::uint8_t> child(skeleton->nodes.size(), 0);
+        for (const SkeletonNode& node : skeleton->nodes)
+            for (std::uint32_t c : node.children) child[c] = 1;
+        for (std::size_t n = 0; n < child.size(); ++n)
+            if (!child[n]) scene.nodes.push_back(static_cast<int>(levels.size() + n));
+    }
     model.scenes.push_back(scene);
     model.defaultScene = 0;
 

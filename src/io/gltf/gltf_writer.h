@@ -11,6 +11,7 @@
 // 32-bit floats (glTF allows no doubles for them).
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -34,6 +35,11 @@ struct GltfMesh {
     // Empty, or per triangle an index into materials or kNoIndex (the primitive without material).
     std::vector<std::uint32_t> triangle_materials;
     std::vector<Material> materials;
+    // A skin (io/obj/skin.h): the skeleton and per position its influences, written as JOINTS_0
+    // (unsigned short) and WEIGHTS_0 (floats that sum to 1), the skeleton's nodes beside the mesh's
+    // and every level's node skinned by it. Levels share levels[0]'s skeleton.
+    std::shared_ptr<const Skeleton> skeleton = nullptr;
+    std::vector<JointInfluences> influences = {};
 };
 
 enum class GltfContainer { Json, Binary };

@@ -17,6 +17,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "io/obj/skin.h"
 #include "rgb/mesh/mesh.h"
 #include "rgb/support/progress.h"
 #include "rgb/values/uv_layout.h"
@@ -93,6 +94,11 @@ struct LoadedMesh {
     // With `adaptive`: the base mesh's UV channel from the state's base-uvs section, if it has one
     // (texcoords above are then the saved mesh's, corner by corner of its f lines).
     std::optional<rgb::UvChannel> base_uvs;
+
+    // A glTF skin (skin.h): the skeleton, and per position its joints' weights; null and empty
+    // without (OBJ never has one).
+    std::shared_ptr<const Skeleton> skeleton;
+    std::vector<JointInfluences> influences;
 
     FaceLabels face_materials;  // usemtl; a name refers to the entry of `materials` with that name
     FaceLabels face_groups;     // g (all names of one g line, as written, form one label)
