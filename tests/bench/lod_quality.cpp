@@ -606,11 +606,15 @@ std::vector<Row> run_mesh(const Options& o, const Input& input) {
 
     const std::string cage_path = dir + "/cage.obj";
     std::cout << "  rgbsub remesh --cage-triangles " << cage << ":\n";
-    const double remesh_seconds = (o.reuse_cages && fs::exists(cage_path)) ? 0.0 :
+    const bool reused = o.reuse_cages && fs::exists(cage_path);
+    const double remesh_seconds = reused ? 0.0 :
         run_command(shell_quote(o.rgbsub) + " remesh " + shell_quote(input.path) + " -o " + shell_quote(cage_path) +
                         " --cage-triangles " + std::to_string(cage) + " --timings " + input.remesh_options,
                     dir + "/remesh.log");
-    std::cout << "  rgbsub remesh: " << remesh_seconds << " s (whole process)\n";
+    if (reused)
+        std::cout << "  rgbsub remesh: the cage already there, reused\n";
+    else
+        std::cout << "  rgbsub remesh: " << remesh_seconds << " s (whole process)\n";
 
     std::vector<unsigned> indices;
     indices.reserve(3 * n);
