@@ -15,7 +15,7 @@
 // at most 2x and 3x at 1%. Reported, never asserted: the exit status is 0 unless something fails to run.
 //
 // Run on demand:
-//   ./lod_quality [--smoke] [--work DIR] [--samples N] [--rgbsub PATH] [--keep] [--remesh-options OPTIONS] [MESH.obj ...]
+//   ./lod_quality [--smoke] [--work DIR] [--samples N] [--rgbsub PATH] [--keep] [--reuse-cages] [--remesh-options OPTIONS] [MESH.obj ...]
 // (--remesh-options: more options for `remesh` of the meshes given, such as "--sharp-angle 30")
 // Without meshes it generates four in DIR (default /tmp/lod_quality), reused when already there:
 //   bunny4        assets/bunny.obj refined to level 4 (`rgbsub refine --level 4 --plain`), 940,544 triangles
@@ -25,6 +25,8 @@
 //                 remeshed with --sharp-angle 15 (as its user would: the ridges are its features)
 // --smoke: the bunny at level 1 (14,696 triangles) and 20,000 samples, a few seconds, for CI.
 // --keep writes meshoptimizer's LODs next to rgbsub's (meshopt_<T>.obj) for inspection.
+// --reuse-cages skips `remesh` where DIR/<mesh>/cage.obj is already there (for a change to the budgets
+// alone, which leaves the cages as they were: a remesh takes minutes a mesh on a busy machine).
 #include <meshoptimizer.h>
 
 #include <algorithm>
@@ -504,7 +506,7 @@ std::string with_commas(std::size_t n) {
 }
 
 struct Options {
-    bool smoke = false, keep = false;
+    bool smoke = false, keep = false, reuse_cages = false;
     std::string work = "/tmp/lod_quality";
     std::string rgbsub = RGBSUB_BINARY;
     std::size_t samples = 1'000'000;
@@ -604,11 +606,15 @@ std::vector<Row> run_mesh(const Options& o, const Input& input) {
 
     const std::string cage_path = dir + "/cage.obj";
     std::cout << "  rgbsub remesh --cage-triangles " << cage << ":\n";
-    const double remesh_seconds =
+    const bool reused = o.reuse_cages && fs::exists(cage_path);
+    const double remesh_seconds = reused ? 0.0 :
         run_command(shell_quote(o.rgbsub) + " remesh " + shell_quote(input.path) + " -o " + shell_quote(cage_path) +
                         " --cage-triangles " + std::to_string(cage) + " --timings " + input.remesh_options,
                     dir + "/remesh.log");
-    std::cout << "  rgbsub remesh: " << remesh_seconds << " s (whole process)\n";
+    if (reused)
+        std::cout << "  rgbsub remesh: the cage already there, reused\n";
+    else
+        std::cout << "  rgbsub remesh: " << remesh_seconds << " s (whole process)\n";
 
     std::vector<unsigned> indices;
     indices.reserve(3 * n);
@@ -707,6 +713,8 @@ int main(int argc, char** argv) {
             o.smoke = true;
         } else if (a == "--keep") {
             o.keep = true;
+        } else if (a == "--reuse-cages") {
+            o.reuse_cages = true;
         } else if (a == "--work") {
             o.work = next();
         } else if (a == "--rgbsub") {
@@ -716,7 +724,7 @@ int main(int argc, char** argv) {
         } else if (a == "--samples") {
             o.samples = static_cast<std::size_t>(std::stoull(next()));
         } else if (a.starts_with("--")) {
-            std::cerr << "usage: lod_quality [--smoke] [--work DIR] [--samples N] [--rgbsub PATH] [--keep] [--remesh-options OPTIONS] [MESH.obj ...]\n";
+            std::cerr << "usage: lod_quality [--smoke] [--work DIR] [--samples N] [--rgbsub PATH] [--keep] [--reuse-cages] [--remesh-options OPTIONS] [MESH.obj ...]\n";
             return 2;
         } else {
             o.meshes.push_back(a);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <span>
 #include <stdexcept>
 
 #include <glm/geometric.hpp>
@@ -88,8 +89,8 @@ struct LimitErrorCriterion::Corner {
     glm::dvec3 fine, coarse;
 };
 
-LimitErrorCriterion::LimitErrorCriterion(std::shared_ptr<const BaseMesh> base, double tolerance)
-    : base_(std::move(base)), evaluator_(*base_), tolerance_(tolerance) {
+LimitErrorCriterion::LimitErrorCriterion(std::shared_ptr<const BaseMesh> base, double tolerance, Samples samples)
+    : base_(std::move(base)), evaluator_(*base_), tolerance_(tolerance), samples_(samples) {
     if (!(tolerance > 0.0) || !std::isfinite(tolerance)) throw std::invalid_argument("the tolerance must be positive and finite");
 }
 
@@ -153,7 +154,9 @@ const std::array<double, 3>& LimitErrorCriterion::triangle_values(const Hierarch
             }
         };
         double worst = 0.0;
-        for (const auto& tiling : sample_plan())
+        // Beside the edge: the last tiling's pieces (X1, M12, M20) and (X1, M20, X0), with both other edges split.
+        const std::size_t first_tiling = samples_ == Samples::BesideTheEdge ? kTilings.size() - 1 : 0;
+        for (const auto& tiling : std::span(sample_plan()).subspan(first_tiling))
             for (std::size_t s = 0; s < kSamplesPerTriangle; ++s) {
                 const Interpolation& in = tiling[s];
                 if (!in.covered) continue;
@@ -191,15 +194,23 @@ double LimitErrorCriterion::value(const SurfacePoint& a, const SurfacePoint& b) 
     return worst;
 }
 
+namespace {
+
+EdgeValue owning_value(std::shared_ptr<LimitErrorCriterion> criterion) {
+    return [criterion = std::move(criterion)](const SurfacePoint& a, const SurfacePoint& b) { return criterion->value(a, b); };
+}
+
+}  // namespace
+
 EdgeValue detail_error_value(const std::shared_ptr<const BaseMesh>& base) {
     if (!base->detail()) throw std::invalid_argument("detail_error_value: the base mesh has no detail");
     // With detail no corner depends on the tolerance (corner()), so any positive one gives the values.
-    return limit_error_value(base, std::numeric_limits<double>::max());
+    return owning_value(std::make_shared<LimitErrorCriterion>(base, std::numeric_limits<double>::max(),
+                                                              LimitErrorCriterion::Samples::BesideTheEdge));
 }
 
 EdgeValue limit_error_value(const std::shared_ptr<const BaseMesh>& base, double tolerance) {
-    auto criterion = std::make_shared<LimitErrorCriterion>(base, tolerance);
-    return [criterion](const SurfacePoint& a, const SurfacePoint& b) { return criterion->value(a, b); };
+    return owning_value(std::make_shared<LimitErrorCriterion>(base, tolerance));
 }
 
 }  // namespace rgb
