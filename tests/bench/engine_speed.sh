@@ -39,6 +39,9 @@ cpu_seconds() {
 
 echo "level 4" > "$work/level4.txt"
 echo "level 4 sphere 0 0 0 1000" > "$work/level4_sphere.txt"
+# The path users take: a ball over part of the mesh. This one holds the torus's half with x > 0.2
+# or so (the torus lies around the z axis, radii 1 and 0.4).
+echo "level 4 sphere 3 0 0 3" > "$work/level4_half.txt"
 echo "level 3" > "$work/level3.txt"
 echo "budget 1500000" > "$work/budget.txt"
 printf 'level 1 sphere 100 100 100 0.5\nlevel 1 sphere 100 100 100 0.5\n' > "$work/miss.txt"
@@ -56,18 +59,23 @@ printf 'whole process, 6k -> %d triangles: rgbsub refine %.3f s, OpenMesh %.3f s
     "$(triangles_of "$work/out.obj")" "$refine_s" "$openmesh_s" "$(echo "$refine_s / $openmesh_s" | bc -l)"
 
 # 2. The engine per new vertex: apply --timings against OpenMesh's in-process build + LoopT + extraction.
-: > "$work/engine.ns"; : > "$work/om.ns"; : > "$work/general.ns"
+: > "$work/engine.ns"; : > "$work/om.ns"; : > "$work/general.ns"; : > "$work/half.ns"
 for _ in $(seq "$repeat"); do
     "$rgbsub" apply "$work/torus6k.obj" "$work/level4.txt" -o "$work/out.obj" --timings > "$work/t.txt"
     echo "$(engine_ms "$work/t.txt" 1) * 1000000 / $(engine_splits "$work/t.txt" 1)" | bc -l >> "$work/engine.ns"
     "$openmesh" "$work/torus6k.obj" "$work/om.obj" 4 | sed -E 's/.* ([0-9.]+) ns per new vertex.*/\1/' >> "$work/om.ns"
     "$rgbsub" apply "$work/torus6k.obj" "$work/level4_sphere.txt" -o "$work/out.obj" --timings > "$work/t.txt"
     echo "$(engine_ms "$work/t.txt" 1) * 1000000 / $(engine_splits "$work/t.txt" 1)" | bc -l >> "$work/general.ns"
+    "$rgbsub" apply "$work/torus6k.obj" "$work/level4_half.txt" -o "$work/half.obj" --timings > "$work/t.txt"
+    echo "$(engine_ms "$work/t.txt" 1) * 1000000 / $(engine_splits "$work/t.txt" 1)" | bc -l >> "$work/half.ns"
 done
 engine=$(median < "$work/engine.ns"); om=$(median < "$work/om.ns"); general=$(median < "$work/general.ns")
+half=$(median < "$work/half.ns")
 printf 'engine per new vertex, level 4: rgbsub %.0f ns, OpenMesh %.0f ns, ratio %.2f\n' "$engine" "$om" "$(echo "$engine / $om" | bc -l)"
 printf 'general path (level 4 in a sphere holding the mesh) per split: %.0f ns, %.2fx the whole-mesh path\n' \
     "$general" "$(echo "$general / $engine" | bc -l)"
+printf 'general path (level 4 in a sphere over half the mesh, %d of %d triangles) per split: %.0f ns, %.2fx the whole-mesh path\n' \
+    "$(triangles_of "$work/half.obj")" "$(triangles_of "$work/out.obj")" "$half" "$(echo "$half / $engine" | bc -l)"
 
 # 3. A budget against a uniform level, whole process, per output triangle: wall time and CPU time.
 : > "$work/budget.s"; : > "$work/level3.s"; : > "$work/budget.cpu"; : > "$work/level3.cpu"
