@@ -8,10 +8,11 @@ tests/io/gltf_export_check.py, no glTF library), against what the input says:
   those of the OBJ refine writes for the same request (float32);
 - the same grid at level 0 with texture coordinates: each glTF vertex is an input corner (position, u,
   1 - v); refined, each glTF triangle has the corners (position, exact texture coordinate) of the OBJ
-  refine writes for the same request (tests/io/gltf_levels_check.py), and rgbsub warns of nothing.
+  refine writes for the same request, and rgbsub warns of nothing.
 
 usage: gltf_refine_check.py PATH/TO/rgbsub
 """
+import collections
 import os
 import subprocess
 import sys
@@ -19,9 +20,36 @@ import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "io"))
 from gltf_export_check import expect, f32, load_glb, load_gltf, read_accessor  # noqa: E402
-from gltf_levels_check import gltf_triangles, obj_triangles, same_triangles  # noqa: E402
+from gltf_levels_check import canonical, gltf_triangles, same_triangles  # noqa: E402
 
 CELLS = 4
+
+
+def obj_triangles(path):
+    """The OBJ's triangles as corners (position, (u, 1 - v), colour or None), its number of v lines
+    and of distinct (v, vt) pairs."""
+    positions, colours, texcoords, triangles, pairs = [], [], [], [], set()
+    with open(path, encoding="utf-8") as f:
+        for line in f:
+            words = line.split()
+            if not words:
+                continue
+            if words[0] == "v":
+                assert len(words) in (4, 7), line
+                positions.append(tuple(f32(float(x)) for x in words[1:4]))
+                colours.append(tuple(f32(float(x)) for x in words[4:7]) if len(words) == 7 else None)
+            elif words[0] == "vt":
+                u, v = float(words[1]), float(words[2])
+                texcoords.append((f32(u), f32(1 - v)))
+            elif words[0] == "f":
+                assert len(words) == 4, line
+                corners = []
+                for corner in words[1:]:
+                    v, t = (int(i) - 1 for i in corner.split("/")[:2])
+                    pairs.add((v, t))
+                    corners.append((positions[v], texcoords[t], colours[v]))
+                triangles.append(canonical(corners))
+    return collections.Counter(triangles), len(positions), len(pairs)
 
 
 def grid_obj(with_uvs):
