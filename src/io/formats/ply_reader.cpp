@@ -127,7 +127,7 @@ std::optional<PlyType> parse_type(std::string_view word) {
     return std::nullopt;
 }
 
-std::vector<std::string_view> words(std::string_view line) {
+std::vector<std::string_view> header_words(std::string_view line) {
     std::vector<std::string_view> out;
     std::size_t i = 0;
     while (i < line.size()) {
@@ -156,7 +156,7 @@ PlyHeader parse_header(std::string_view text, const std::string& path) {
         const std::size_t end = text.find('\n', at);
         if (end == std::string_view::npos) fail(line + 1, "the header has no end_header line");
         ++line;
-        const std::vector<std::string_view> w = words(text.substr(at, end - at));
+        const std::vector<std::string_view> w = header_words(text.substr(at, end - at));
         at = end + 1;
         if (w.empty() || w[0] == "comment" || w[0] == "obj_info" || (line == 1 && w[0] == "ply")) continue;
         if (w[0] == "end_header") break;
