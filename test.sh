@@ -37,16 +37,17 @@ run_tests() {
 }
 
 # The sanitizer run goes first so that the last ctest summary printed is the whole suite's. The
-# Release build runs beside the sanitizer tests at the lowest priority, so that it takes only the
-# processor time they leave (they wait on child processes, files and the X server) and slows none of
-# them; its output is printed when it ends.
-asan_built=0
-build build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRGBSUB_SANITIZE=ON -DRGBSUB_WERROR=ON && asan_built=1 || failed=1
+# Release build runs beside the sanitizer build and tests at the lowest priority, so that it takes
+# only the processor time they leave (the build's single-file tails and links, the tests' waits on
+# child processes, files and the X server) and slows none of them; its output is printed when it
+# ends.
 release_log=$(mktemp)
 trap 'rm -f "$release_log"' EXIT
 nice -n 19 bash -c "$(declare -f build); jobs=$jobs; build build -DCMAKE_BUILD_TYPE=Release -DRGBSUB_WERROR=ON" \
   >"$release_log" 2>&1 &
 release_build=$!
+asan_built=0
+build build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRGBSUB_SANITIZE=ON -DRGBSUB_WERROR=ON && asan_built=1 || failed=1
 if [[ $asan_built -eq 1 ]]; then
   run_tests build-asan "--label-exclude fuzz"
 fi
