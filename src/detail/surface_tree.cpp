@@ -75,10 +75,10 @@ class TreeBuilder {
 public:
     TreeBuilder(std::span<const glm::dvec3> positions, std::span<const rgb::Triangle> triangles, double box_pad,
                 const ProgressFunction& progress)
-        : positions_(positions), triangles_(triangles), box_pad_(box_pad),
+        : positions_(positions), triangles_(triangles), box_pad_(box_pad), report_(progress),
           progress_(progress, static_cast<std::uint32_t>(triangles.size())) {}
 
-    SurfaceTree build(const ProgressFunction& progress) {
+    SurfaceTree build() {
         const auto n = static_cast<std::uint32_t>(triangles_.size());
         centroids_.resize(n);
         for (std::uint32_t f = 0; f < n; ++f) {
@@ -100,10 +100,10 @@ public:
             root.count[0] = static_cast<std::uint8_t>(built_[0].count);
             tree.nodes.push_back(root);
         } else {
-            report_share(progress, BuildProgress::kTreeShare);
+            report_share(report_, BuildProgress::kTreeShare);
             compact(tree.nodes, 0);
         }
-        report_share(progress, 0.95);
+        report_share(report_, 0.95);
         tree.corners.resize(n);
         for (std::uint32_t s = 0; s < n; ++s) {
             const rgb::Triangle& t = triangles_[order_[s]];
@@ -176,6 +176,7 @@ private:
     std::span<const glm::dvec3> positions_;
     std::span<const rgb::Triangle> triangles_;
     double box_pad_;
+    const ProgressFunction& report_;
     BuildProgress progress_;
     std::vector<glm::dvec3> centroids_;
     std::vector<std::uint32_t> order_;
@@ -186,7 +187,7 @@ private:
 
 SurfaceTree build_surface_tree(std::span<const glm::dvec3> positions, std::span<const rgb::Triangle> triangles,
                                double box_pad, const ProgressFunction& progress) {
-    return TreeBuilder(positions, triangles, box_pad, progress).build(progress);
+    return TreeBuilder(positions, triangles, box_pad, progress).build();
 }
 
 }  // namespace rgbdetail::dense_surface_internal
