@@ -1,9 +1,11 @@
-# cmake -DSOURCE=... -DBINARY=... -DGENERATOR=... -DMAKE_PROGRAM=... -DSECONDS=... -P run_fuzz.cmake
+# cmake -DSOURCE=... -DBINARY=... -DGENERATOR=... -DMAKE_PROGRAM=... -DPREBUILT_LIBRARIES=... -DSECONDS=...
+#       -P run_fuzz.cmake
 # Builds the fuzz project with clang and runs it for SECONDS, seeded with the small OBJ files of
 # seeds/ (plain ones, and saved files with tags, UVs, colours and labels made with the rgbsub binary)
 # and libFuzzer's random seed.
-# GENERATOR and MAKE_PROGRAM are the outer build's (CMAKE_GENERATOR, CMAKE_MAKE_PROGRAM).
-foreach(required SOURCE BINARY GENERATOR MAKE_PROGRAM SECONDS)
+# GENERATOR and MAKE_PROGRAM are the outer build's (CMAKE_GENERATOR, CMAKE_MAKE_PROGRAM);
+# PREBUILT_LIBRARIES its libraries that the fuzz target links as they are (tests/io/fuzz/CMakeLists.txt).
+foreach(required SOURCE BINARY GENERATOR MAKE_PROGRAM PREBUILT_LIBRARIES SECONDS)
   if(NOT DEFINED ${required})
     message(FATAL_ERROR "run_fuzz.cmake needs -D${required}=...")
   endif()
@@ -17,7 +19,8 @@ if(EXISTS ${BINARY}/CMakeCache.txt)
   endif()
 endif()
 execute_process(COMMAND ${CMAKE_COMMAND} -S ${SOURCE} -B ${BINARY} -G "${GENERATOR}" -DCMAKE_MAKE_PROGRAM=${MAKE_PROGRAM}
-                        -DCMAKE_CXX_COMPILER=${CLANGXX} -DCMAKE_BUILD_TYPE=RelWithDebInfo RESULT_VARIABLE result)
+                        -DCMAKE_CXX_COMPILER=${CLANGXX} -DCMAKE_BUILD_TYPE=RelWithDebInfo
+                        -DPREBUILT_LIBRARIES=${PREBUILT_LIBRARIES} RESULT_VARIABLE result)
 if(result)
   message(FATAL_ERROR "configuring the fuzz project failed")
 endif()
