@@ -23,12 +23,20 @@ rgb::RequestStats apply_all(rgb::Mesh& mesh, const std::vector<rgb::LevelRequest
     return stats;
 }
 
+// Random dabs cut into pieces. Under the sanitizers (test code at -O0 over an instrumented core, where
+// this test was a tenth of the editor tests) 12 rather than 30: still every mode, view and falloff.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr int kPieceDabs = 12;
+#else
+constexpr int kPieceDabs = 30;
+#endif
+
 TEST(RequestPieces, ADabInPiecesGivesTheMeshOfTheWholeDab) {
     rgb::Mesh mesh = rgbtest::make_rgb_mesh(rgbtest::bunny());
     std::mt19937 rng(17);
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     std::size_t sliced = 0;
-    for (int i = 0; i < 30; ++i) {
+    for (int i = 0; i < kPieceDabs; ++i) {
         rgb::Dab dab;
         dab.mode = static_cast<rgb::BrushMode>(i % 3);
         dab.level = 1 + static_cast<int>(rng() % 5);
@@ -46,7 +54,7 @@ TEST(RequestPieces, ADabInPiecesGivesTheMeshOfTheWholeDab) {
         ASSERT_TRUE(rgbtest::same_mesh(mesh, whole)) << "dab " << i << " in " << pieces.size() << " pieces";
         EXPECT_EQ(stats.splits > 0 || stats.removals > 0, expected.splits > 0 || expected.removals > 0) << "dab " << i;
     }
-    EXPECT_GT(sliced, 15u) << "most dabs must have been cut";
+    EXPECT_GT(2 * sliced, std::size_t{kPieceDabs}) << "most dabs must have been cut";
 }
 
 TEST(RequestPieces, RefinePiecesGoCoarseToFine) {
