@@ -52,6 +52,14 @@ int LodDriver::uniform_start_level() const {
     return level;
 }
 
+// The triangles the ordinary run makes of a face with edges `edge` long on average before it comes
+// down to splits of value `lowest` (each level halves the edges and quarters the triangles).
+namespace {
+double start_estimate_triangles(double edge, double lowest) {
+    return edge > lowest ? std::exp2(2.0 * std::ceil(std::log2(edge / lowest))) : 1.0;
+}
+}  // namespace
+
 // Whether the start would surely prove wrong, by an estimate from the base mesh alone (it decides only
 // whether to try: the result is the same either way). Its lowest vertex's edge is about the base's
 // shortest edge halved at each level below `level`; before the ordinary run comes down to that value,
@@ -78,7 +86,7 @@ bool LodDriver::uniform_start_hopeless(int level) const {
     const double budget = static_cast<double>(settings_.max_triangles);
     double triangles = 0.0;
     for (double edge : mean_edge) {
-        triangles += edge > lowest ? std::exp2(2.0 * std::ceil(std::log2(edge / lowest))) : 1.0;
+        triangles += start_estimate_triangles(edge, lowest);
         if (triangles > budget) return true;
     }
     return false;
@@ -110,7 +118,7 @@ bool LodDriver::uniform_start_overflows(int level, std::uint64_t lowest_key) con
                 const HalfedgeId h = Mesh::halfedge(f, k);
                 mean += plain_edge_length(mesh_.from_vertex(h), mesh_.to_vertex(h), level) / 3.0;
             }
-            sum += mean > lowest ? std::exp2(2.0 * std::ceil(std::log2(mean / lowest))) : 1.0;
+            sum += start_estimate_triangles(mean, lowest);
         }
         triangles[block] = sum;
     });
