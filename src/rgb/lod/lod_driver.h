@@ -62,7 +62,9 @@ struct LodSettings {
     // the same; where the start proves wrong (a vertex of those levels not wanted, or below the
     // split where the budget stops) the run starts again the ordinary way, from a copy of the mesh
     // kept before the start. On a mesh of very different triangle sizes, where an estimate from the
-    // base's edges shows it would prove wrong, it is not tried (uniform_start_hopeless).
+    // base's edges shows it would prove wrong, it is not tried (uniform_start_hopeless); where the
+    // same estimate from the start's own finest edges shows it, it is undone at once
+    // (uniform_start_overflows).
     bool uniform_start = false;
 };
 
@@ -145,6 +147,7 @@ private:
     void prefault_room(std::size_t faces, std::size_t vertices);
     int uniform_start_level() const;
     bool uniform_start_hopeless(int level) const;
+    bool uniform_start_overflows(int level, std::uint64_t lowest_key) const;
     void refine_uniform_start();
     void undo_uniform_start();
     bool split(const Candidate& c);
