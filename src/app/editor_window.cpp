@@ -358,6 +358,7 @@ int run_editor_window(const WindowLaunch& launch) {
     options.recovery_folder = RecoveryStore::default_folder();
     options.covered_right = kPanelCover;
     options.samples_folder = RGBSUB_ASSETS_DIR;
+    if (launch.cage_above) options.dense_mesh_triangles = *launch.cage_above;
     Editor editor(options);
     apply_settings(editor, settings.loaded());
     settings.report(editor);
