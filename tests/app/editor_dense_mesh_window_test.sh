@@ -13,17 +13,8 @@
 # Usage (ctest runs it): editor_dense_mesh_window_test.sh RGBSUB
 set -euo pipefail
 
-# A missing tool is an error of the machine, reported as such rather than skipped.
-for tool in xvfb-run xauth xdotool /usr/bin/python3; do
-  if ! command -v "$tool" >/dev/null; then
-    echo "editor_dense_mesh_window_test.sh: $tool is missing: install the Debian packages xvfb xauth xdotool" \
-         "python3-meshio (numpy) (third_party/debian_packages.sh, RGBSUB_TEST_PACKAGES)" >&2
-    exit 1
-  fi
-done
-if [[ -z "${RGBSUB_UNDER_XVFB:-}" ]]; then
-  RGBSUB_UNDER_XVFB=1 exec xvfb-run -a -s "-screen 0 1280x1024x24" "$0" "$@"
-fi
+source "$(dirname "$0")/window_test_support.sh"
+under_xvfb "xvfb xauth xdotool python3-meshio (numpy)" xvfb-run xauth xdotool /usr/bin/python3 -- "$0" "$@"
 
 rgbsub=$(realpath "$1")
 here=$(cd "$(dirname "$0")" && pwd)
@@ -173,17 +164,7 @@ if start dense.obj 3-question; then
     step "cage made"
     # A stroke across the torus's left side, left of the panel.
     x0=260 y0=420 x1=460
-    xdotool mousemove --window "$window" $x0 $y0
-    sleep 0.3
-    xdotool mousedown 1
-    sleep 0.2
-    for x in $(seq $((x0 + 20)) 20 $x1); do
-      xdotool mousemove --window "$window" "$x" $y0
-      sleep 0.05
-    done
-    sleep 0.2
-    xdotool mouseup 1
-    sleep 1
+    drag_stroke "$window" $x0 $y0 $x1
     shot 3-painted
     # The first save of a made document asks where, proposing NAME_cage.obj beside the input.
     xdotool key --clearmodifiers ctrl+s
