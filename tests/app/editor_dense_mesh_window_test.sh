@@ -180,6 +180,8 @@ step "saved the cage"
 cmp -s dense.obj dense_input.obj || fail "the dense input changed"
 if [[ -f dense_cage.obj ]]; then
   info=$("$rgbsub" info dense_cage.obj) || fail "rgbsub info cannot read dense_cage.obj back"
+  echo "$info" | grep -E "^adaptive state: restored from the file's #rgb lines" ||
+    fail "rgbsub info does not restore dense_cage.obj's adaptive state"
   echo "$info" | grep -E "^detail: from dense.obj \(6400 triangles\), stored to levels" ||
     fail "rgbsub info does not say that dense_cage.obj carries the detail of dense.obj"
   echo "$info" | grep -E "^triangles per level:.* [1-9][0-9]*:" || fail "the stroke refined nothing above level 0"
