@@ -15,7 +15,8 @@ RGBSUB_BUILD_PACKAGES=(
 # OpenSubdiv's Far (libosd-dev), the Loop oracle for creases, corners and face-varying UVs, and
 # meshoptimizer, which the LOD quality benchmark (tests/bench/lod_quality.cpp) compares against;
 # python3-meshio (with numpy), the independent reader of the PLY, STL, VTU and MSH files rgbsub writes
-# (tests/cli/formats_check.py); nodejs and npm, which install and run the Khronos glTF validator
+# (tests/cli/formats_check.py), whose numpy also checks the dense-mesh window test's saved cage
+# (tests/app/dense_mesh_window.py); nodejs and npm, which install and run the Khronos glTF validator
 # (npm gltf-validator, into the build tree: tests/cli/CMakeLists.txt).
 # (GCC's AddressSanitizer and UBSan runtimes come with build-essential's g++.)
 RGBSUB_TEST_PACKAGES=(xvfb xauth xdotool assimp-testmodels clang libclang-rt-14-dev libosd-dev libmeshoptimizer-dev

@@ -271,6 +271,7 @@ void run_loop(GLFWwindow* window, WindowState& state, const WindowLaunch& launch
     std::string title;
     bool file_shown = !launch.file;
     int frames_after_shown = 0;
+    bool had_file_task = false;
     // Read in the background, so the window is there at once; after the recovery question, if
     // there is one, and not over recovered work.
     std::optional<std::string> to_open = launch.file;
@@ -331,6 +332,11 @@ void run_loop(GLFWwindow* window, WindowState& state, const WindowLaunch& launch
                 std::printf("file shown after %.1f ms\n", std::chrono::duration<double, std::milli>(Clock::now() - start).count());
         }
         frames_after_shown += file_shown;
+        // A file task that ended in this frame (the cage made or stopped, a file read or saved) closed
+        // its dialog, which ImGui takes off the screen only in the next frame: without one, the empty
+        // "Making a cage" box stayed until the next input.
+        const bool file_task = editor.file_task() != nullptr;
+        if (std::exchange(had_file_task, file_task) && !file_task) state.settle_frames = kFramesAfterInput;
         settings.keep(window, editor, view, false);
     }
     settings.keep(window, editor, view, true);
@@ -358,6 +364,7 @@ int run_editor_window(const WindowLaunch& launch) {
     options.recovery_folder = RecoveryStore::default_folder();
     options.covered_right = kPanelCover;
     options.samples_folder = RGBSUB_ASSETS_DIR;
+    if (launch.cage_above) options.dense_mesh_triangles = *launch.cage_above;
     Editor editor(options);
     apply_settings(editor, settings.loaded());
     settings.report(editor);

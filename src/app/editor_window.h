@@ -1,6 +1,7 @@
 #pragma once
 // The editor in a GLFW window: input from GLFW goes to app::Editor (unless an ImGui panel takes it),
 // and each frame is drawn by app::EditorView.
+#include <cstddef>
 #include <optional>
 #include <string>
 
@@ -11,6 +12,9 @@ struct WindowLaunch {
     // Quit after this many frames once the file is shown (benchmarks and smoke tests); prints the
     // times from launch to the first frame and to the file shown.
     std::optional<int> frames;
+    // A plain mesh with more triangles is offered a cage that keeps its detail when opened
+    // (`edit --cage-above N`); none: EditorOptions::dense_mesh_triangles's default.
+    std::optional<std::size_t> cage_above;
 };
 
 // assets/default.obj of the source tree, if it is there (what `rgbsub` opens without a file).

@@ -2,6 +2,7 @@
 // to the headless command instead of failing inside GLFW.
 #include <cstdlib>
 #include <iostream>
+#include <limits>
 #include <stdexcept>
 
 #include "app/editor.h"
@@ -56,13 +57,17 @@ int write_screenshot(const std::string& file, const std::string& output, const s
 }  // namespace
 
 int run_edit(std::span<const std::string> args) {
-    const Arguments arguments(args, {kStrictSwitch}, {"--frames", "--screenshot", "--mode"});
+    const Arguments arguments(args, {kStrictSwitch}, {"--frames", "--screenshot", "--mode", "--cage-above"});
     if (arguments.has("--help")) {
-        std::cout << "usage: rgbsub edit [FILE.obj] [--frames N] [--screenshot OUT.png [--mode MODE]] [--strict]\n"
+        std::cout << "usage: rgbsub edit [FILE.obj] [--frames N] [--cage-above N] [--screenshot OUT.png [--mode MODE]] [--strict]\n"
                      "Opens the editor window (needs a display) on FILE.obj, or on the default mesh;\n"
                      "'rgbsub FILE.obj [OPTIONS]' is short for 'rgbsub edit FILE.obj [OPTIONS]'.\n"
                      "  --frames N          quit after N frames once FILE is shown, printing the times\n"
                      "                      from launch to the first frame and to FILE shown\n"
+                     "  --cage-above N      offer a cage that keeps the detail (as remesh makes it) when a\n"
+                     "                      plain mesh opened in the window has more than N triangles\n"
+                     "                      (default "
+                  << app::kDenseMeshTriangles << ")\n"
                      "  --screenshot PATH   write one editor frame, panels included, as a PNG and exit\n"
                      "                      (headless through OSMesa: no display needed)\n"
                      "  --mode MODE         for the screenshot: shaded, wire, rgb, level, matcap (clay lit from\n"
@@ -78,6 +83,8 @@ int run_edit(std::span<const std::string> args) {
     launch.file = arguments.positional().empty() ? app::default_mesh_path() : arguments.positional().front();
     // The editor repairs what it opens; --strict first makes sure FILE.obj needs no repair.
     if (arguments.has(kStrictSwitch) && launch.file) rgbio::read_mesh_file(*launch.file, read_options(arguments));
+    if (arguments.has("--cage-above"))
+        launch.cage_above = static_cast<std::size_t>(arguments.integer("--cage-above", 0, 0, std::numeric_limits<long>::max()));
     if (arguments.has("--frames")) launch.frames = static_cast<int>(arguments.integer("--frames", 1, 1, 1000000));
     if (const auto output = arguments.value("--screenshot")) {
         if (!launch.file) throw UsageError("--screenshot needs a FILE.obj");

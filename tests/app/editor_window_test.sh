@@ -13,17 +13,8 @@
 # Usage (ctest runs it): editor_window_test.sh RGBSUB SAVED_FILES_CHECK BUNNY.obj
 set -euo pipefail
 
-# A missing tool is an error of the machine, reported as such rather than skipped.
-for tool in xvfb-run xauth xdotool; do
-  if ! command -v "$tool" >/dev/null; then
-    echo "editor_window_test.sh: $tool is missing: install the Debian packages xvfb xauth xdotool" \
-         "(third_party/debian_packages.sh, RGBSUB_TEST_PACKAGES)" >&2
-    exit 1
-  fi
-done
-if [[ -z "${RGBSUB_UNDER_XVFB:-}" ]]; then
-  RGBSUB_UNDER_XVFB=1 exec xvfb-run -a -s "-screen 0 1280x1024x24" "$0" "$@"
-fi
+source "$(dirname "$0")/window_test_support.sh"
+under_xvfb "xvfb xauth xdotool" xvfb-run xauth xdotool -- "$0" "$@"
 
 rgbsub=$1 check=$2 bunny=$3
 work=$(mktemp -d)
@@ -79,17 +70,7 @@ save_as panel
 
 # 3. A stroke across the bunny (left of the panel).
 x0=340 y0=440 x1=560 y1=440
-xdotool mousemove --window "$window" $x0 $y0
-sleep 0.3
-xdotool mousedown 1
-sleep 0.2
-for x in $(seq $((x0 + 20)) 20 $x1); do
-  xdotool mousemove --window "$window" "$x" $y0
-  sleep 0.05
-done
-sleep 0.2
-xdotool mouseup 1
-sleep 1
+drag_stroke "$window" $x0 $y0 $x1
 save_as painted
 xdotool key --clearmodifiers ctrl+e
 sleep 0.5

@@ -62,6 +62,8 @@ TEST_F(ExitCodes, EveryCommandFollowsTheDocumentedTable) {
         {{"edit", mesh, "--screenshot", png, "--mode", "texture"}, "ok"},
         {{"edit", mesh, "--screenshot", png, "--mode", "textures"}, "usage error"},
         {{"edit", "-x"}, "usage error"},
+        {{"edit", mesh, "--cage-above", "-1"}, "usage error"},
+        {{"edit", mesh, "--cage-above", "many"}, "usage error"},
         {{"edit", mesh, "--screenshot", png, "--screenshot", png}, "usage error"},
         {{"edit", broken, "--screenshot", png}, "bad input"},
         {{"edit", missing, "--screenshot", png}, "I/O or resource failure"},
