@@ -2,7 +2,8 @@
 // reads, against HierarchyEvaluator's, bit for bit: every vertex of Σ4 in every base face, asked in a
 // scrambled order (the grid fills itself on demand), on meshes with a boundary, irregular valences and
 // crease, corner and semi-sharp tags, where the grid keeps the evaluator's points inside the face and
-// must hand it those on the face's boundary.
+// must hand it those on the face's boundary; and points given unreduced, deeper than the grid or in
+// another face.
 #include <algorithm>
 #include <cstdint>
 #include <random>
@@ -65,7 +66,7 @@ TEST(FaceGridLimits, AreTheEvaluatorsWithCreasesCornersAndSemiSharpEdges) {
     expect_evaluators_limits(rgb::BaseMesh(m.positions, m.triangles, f));
 }
 
-TEST(FaceGridLimits, AnswerForPointsDeeperThanTheGridAndOfOtherFaces) {
+TEST(FaceGridLimits, AnswerForUnreducedPointsDeeperThanTheGridAndOfOtherFaces) {
     const TestMesh m = torus(4, 3);
     const rgb::BaseMesh base(m.positions, m.triangles);
     rgb::HierarchyEvaluator fallback(base), reference(base);
@@ -74,6 +75,10 @@ TEST(FaceGridLimits, AnswerForPointsDeeperThanTheGridAndOfOtherFaces) {
     const rgb::SurfacePoint deeper{0, {5, 6, 5}, 4}, elsewhere{1, {1, 1, 2}, 2};
     EXPECT_EQ(grid.limit_position(deeper), reference.limit_position(deeper));
     EXPECT_EQ(grid.limit_position(elsewhere), reference.limit_position(elsewhere));
+    grid.start(0, 4);
+    const rgb::SurfacePoint unreduced{0, {4, 8, 4}, 4}, edge{0, {0, 12, 4}, 4};
+    EXPECT_EQ(grid.limit_position(unreduced), reference.limit_position(rgb::reduced(unreduced)));
+    EXPECT_EQ(grid.limit_position(edge), reference.limit_position(rgb::reduced(edge)));
 }
 
 }  // namespace

@@ -34,7 +34,7 @@ SurfacePoint FaceGridLimits::surface_point(const Point& p) const {
 }
 
 glm::dvec3 FaceGridLimits::limit_position(const SurfacePoint& p) {
-    if (p.face != face_ || p.level > level_) return evaluator_.limit_position(p);
+    if (p.face != face_ || p.level > level_) return evaluator_.limit_position(reduced(p));
     const int shift = level_ - p.level;
     const Point q{p.a[0] << shift, p.a[1] << shift, p.a[2] << shift};
     if (!inside(q)) return boundary_value(q, kMaxLevel + 1);

@@ -36,7 +36,7 @@ public:
     // Starts on base face `face` for points up to `level` (at most kMaxLevel), forgetting the values
     // of the face before.
     void start(std::uint32_t face, int level);
-    // p^inf of a point of the started face at a level up to the started one.
+    // p^inf of a point of the started face at a level up to the started one (reduced or not).
     glm::dvec3 limit_position(const SurfacePoint& p);
 
 private:

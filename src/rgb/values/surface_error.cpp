@@ -37,7 +37,7 @@ glm::dvec3 target_position(const BaseMesh& base, HierarchyEvaluator& evaluator, 
 namespace {
 
 // face_surface_error with the face's corners shown at shown_at(v) and the samples' target points
-// from target_at(sample).
+// from target_at(sample), the sample as numerators over 2^(l+2) (not reduced).
 template <class Shown, class Target>
 SurfaceError face_error_shown(const Mesh& mesh, FaceId f, const Shown& shown_at, Target&& target_at) {
     const BaseMesh& base = mesh.base();
@@ -59,8 +59,8 @@ SurfaceError face_error_shown(const Mesh& mesh, FaceId f, const Shown& shown_at,
     for (std::size_t c = 0; c < 3; ++c) parent.corners[c] = numerators_at(t[c], level);
     const std::int64_t area = cross(corners[0], corners[1], corners[2]);
     for (const SampleWeights& w : sample_weights()) {
-        const SurfacePoint s = parent.sample(w);
-        const Numerators q = numerators_at(s, level + 2);
+        const SurfacePoint s = parent.sample_at_level(w);
+        const Numerators& q = s.a;
         const std::int64_t w0 = cross(q, corners[1], corners[2]), w1 = cross(corners[0], q, corners[2]),
                            w2 = cross(corners[0], corners[1], q);
         if (w0 < 0 || w1 < 0 || w2 < 0) continue;
@@ -80,7 +80,7 @@ SurfaceError face_error_shown(const Mesh& mesh, FaceId f, const Shown& shown_at,
 
 SurfaceError face_surface_error(const Mesh& mesh, HierarchyEvaluator& evaluator, FaceId f) {
     return face_error_shown(mesh, f, [&](VertexId v) { return displayed_position(mesh, v); },
-                            [&](const SurfacePoint& s) { return target_position(mesh.base(), evaluator, s); });
+                            [&](const SurfacePoint& s) { return target_position(mesh.base(), evaluator, reduced(s)); });
 }
 
 namespace {
@@ -156,7 +156,7 @@ std::vector<SurfaceError> surface_errors_at(std::span<const Mesh* const> meshes,
     parallel_blocks_for(chunks, blocks, [&](std::size_t b, std::size_t begin, std::size_t end) {
         HierarchyEvaluator evaluator(base);
         FaceGridLimits grid(base, evaluator);
-        const auto target = [&](const SurfacePoint& s) { return detail ? detail->position(base, s) : grid.limit_position(s); };
+        const auto target = [&](const SurfacePoint& s) { return detail ? detail->position(base, reduced(s)) : grid.limit_position(s); };
         for (std::size_t c = begin; c < end; ++c) {
             evaluator.clear();
             for (std::uint32_t g = chunk_start[c]; g < chunk_start[c + 1]; ++g) {
