@@ -33,7 +33,9 @@ SurfacePoint HierarchyTriangle::corner(int c) const {
     return reduced(p);
 }
 
-SurfacePoint HierarchyTriangle::sample(const SampleWeights& w) const {
+SurfacePoint HierarchyTriangle::sample(const SampleWeights& w) const { return reduced(sample_at_level(w)); }
+
+SurfacePoint HierarchyTriangle::sample_at_level(const SampleWeights& w) const {
     // Numerators over 2^(level+2): (sum w_c * 4 * corner_c) / 4.
     SurfacePoint p;
     p.face = face;
@@ -41,7 +43,7 @@ SurfacePoint HierarchyTriangle::sample(const SampleWeights& w) const {
     for (int i = 0; i < 3; ++i)
         p.a[i] = static_cast<std::uint32_t>(w[0]) * corners[0][i] + static_cast<std::uint32_t>(w[1]) * corners[1][i] +
                  static_cast<std::uint32_t>(w[2]) * corners[2][i];
-    return reduced(p);
+    return p;
 }
 
 glm::dvec3 interpolate(const std::array<glm::dvec3, 3>& corners, const std::array<double, 3>& weights) {

@@ -30,6 +30,8 @@ struct HierarchyTriangle {
     SurfacePoint corner(int c) const;
     // The point sum(w_c * corner c) / 4: a vertex of Σ(level + 2) (reduced to its own level).
     SurfacePoint sample(const SampleWeights& w) const;
+    // The same point as numerators over 2^(level + 2), not reduced.
+    SurfacePoint sample_at_level(const SampleWeights& w) const;
 };
 
 // The triangles of Σl on either side of the edge (a, b) of Σl (one on the boundary), each rotated so

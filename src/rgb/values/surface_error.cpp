@@ -1,5 +1,6 @@
 #include "rgb/values/surface_error.h"
 
+#include <algorithm>
 #include <array>
 
 #include <glm/common.hpp>
@@ -8,6 +9,7 @@
 #include "rgb/mesh/detail_positions.h"
 #include "rgb/mesh/face_location.h"
 #include "rgb/mesh/mesh.h"
+#include "rgb/values/face_grid_limits.h"
 #include "rgb/values/hierarchy_evaluator.h"
 #include "rgb/values/hierarchy_triangle.h"
 #include "rgb/support/parallel.h"
@@ -34,9 +36,10 @@ glm::dvec3 target_position(const BaseMesh& base, HierarchyEvaluator& evaluator, 
 
 namespace {
 
-// face_surface_error with the face's corners shown at shown(v).
-template <class Shown>
-SurfaceError face_error_shown(const Mesh& mesh, HierarchyEvaluator& evaluator, FaceId f, const Shown& shown_at) {
+// face_surface_error with the face's corners shown at shown_at(v) and the samples' target points
+// from target_at(sample), the sample as numerators over 2^(l+2) (not reduced).
+template <class Shown, class Target>
+SurfaceError face_error_shown(const Mesh& mesh, FaceId f, const Shown& shown_at, Target&& target_at) {
     const BaseMesh& base = mesh.base();
     SurfaceError out;
     const int level = mesh.level(f);
@@ -56,13 +59,13 @@ SurfaceError face_error_shown(const Mesh& mesh, HierarchyEvaluator& evaluator, F
     for (std::size_t c = 0; c < 3; ++c) parent.corners[c] = numerators_at(t[c], level);
     const std::int64_t area = cross(corners[0], corners[1], corners[2]);
     for (const SampleWeights& w : sample_weights()) {
-        const SurfacePoint s = parent.sample(w);
-        const Numerators q = numerators_at(s, level + 2);
+        const SurfacePoint s = parent.sample_at_level(w);
+        const Numerators& q = s.a;
         const std::int64_t w0 = cross(q, corners[1], corners[2]), w1 = cross(corners[0], q, corners[2]),
                            w2 = cross(corners[0], corners[1], q);
         if (w0 < 0 || w1 < 0 || w2 < 0) continue;
         const std::array<double, 3> weights{double(w0) / double(area), double(w1) / double(area), double(w2) / double(area)};
-        const glm::dvec3 limit = target_position(base, evaluator, s);
+        const glm::dvec3 limit = target_at(s);
         const double error = glm::distance(interpolate(shown, weights), limit);
         ++out.samples;
         if (error > out.max_error) {
@@ -76,7 +79,8 @@ SurfaceError face_error_shown(const Mesh& mesh, HierarchyEvaluator& evaluator, F
 }  // namespace
 
 SurfaceError face_surface_error(const Mesh& mesh, HierarchyEvaluator& evaluator, FaceId f) {
-    return face_error_shown(mesh, evaluator, f, [&](VertexId v) { return displayed_position(mesh, v); });
+    return face_error_shown(mesh, f, [&](VertexId v) { return displayed_position(mesh, v); },
+                            [&](const SurfacePoint& s) { return target_position(mesh.base(), evaluator, reduced(s)); });
 }
 
 namespace {
@@ -137,21 +141,33 @@ std::vector<SurfaceError> surface_errors_at(std::span<const Mesh* const> meshes,
         if (groups[0].start[g + 1] - groups[0].start[chunk_start.back()] >= kFacesPerChunk) chunk_start.push_back(g + 1);
     if (chunk_start.back() != base.num_faces()) chunk_start.push_back(static_cast<std::uint32_t>(base.num_faces()));
     const std::size_t chunks = chunk_start.size() - 1;
-    // Per block of chunks (one per thread) one evaluator, emptied between chunks; within a chunk every
-    // mesh in turn, finest first, so that a coarser mesh's samples that a finer one has are looked up.
+    // The deepest samples in each base face: two levels below its deepest face in any mesh.
+    std::vector<int> deepest(base.num_faces(), 0);
+    for (std::size_t m = 0; m < meshes.size(); ++m)
+        for (std::uint32_t g = 0; g < base.num_faces(); ++g)
+            for (std::uint32_t k = groups[m].start[g]; k < groups[m].start[g + 1]; ++k)
+                deepest[g] = std::max(deepest[g], meshes[m]->level(FaceId(groups[m].faces[k])) + 2);
+    // Per block of chunks (one per thread) one evaluator, emptied between chunks, and one grid of the
+    // limit points inside a base face (face_grid_limits.h); within a base face every mesh in turn,
+    // finest first, so that a coarser mesh's samples that a finer one has are looked up.
     const std::size_t blocks = parallel_blocks(chunks, 1);
     std::vector<std::vector<FaceError>> found(blocks, std::vector<FaceError>(meshes.size()));
+    const DetailPositions* detail = base.detail();
     parallel_blocks_for(chunks, blocks, [&](std::size_t b, std::size_t begin, std::size_t end) {
         HierarchyEvaluator evaluator(base);
+        FaceGridLimits grid(base, evaluator);
+        const auto target = [&](const SurfacePoint& s) { return detail ? detail->position(base, reduced(s)) : grid.limit_position(s); };
         for (std::size_t c = begin; c < end; ++c) {
             evaluator.clear();
-            for (std::size_t m = 0; m < meshes.size(); ++m) {
-                const Mesh& mesh = *meshes[m];
-                const std::vector<glm::dvec3>& shown = corner_positions[m];
-                const FacesByBaseFace& group = groups[m];
-                for (std::uint32_t k = group.start[chunk_start[c]]; k < group.start[chunk_start[c + 1]]; ++k) {
-                    const FaceId f(group.faces[k]);
-                    take(found[b][m], face_error_shown(mesh, evaluator, f, [&](VertexId v) { return shown[v.idx]; }), f.idx);
+            for (std::uint32_t g = chunk_start[c]; g < chunk_start[c + 1]; ++g) {
+                grid.start(g, deepest[g]);
+                for (std::size_t m = 0; m < meshes.size(); ++m) {
+                    const std::vector<glm::dvec3>& shown = corner_positions[m];
+                    const FacesByBaseFace& group = groups[m];
+                    for (std::uint32_t k = group.start[g]; k < group.start[g + 1]; ++k) {
+                        const FaceId f(group.faces[k]);
+                        take(found[b][m], face_error_shown(*meshes[m], f, [&](VertexId v) { return shown[v.idx]; }, target), f.idx);
+                    }
                 }
             }
         }

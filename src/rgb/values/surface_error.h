@@ -45,10 +45,11 @@ SurfaceError surface_error_at(const Mesh& mesh, const std::vector<glm::dvec3>& c
 
 // The same for several meshes on one base mesh (the levels of an LOD set, finest first), each with
 // its corner positions by slot. The samples and their target points are those above, mesh by mesh;
-// the work is shared: the faces are taken a few thousand of the finest mesh's at a time, by base face,
-// each mesh in turn with one cache of target points, so that where the meshes nest (a coarser face's
-// samples are among the finer faces' samples that cover it) a coarser mesh's samples are looked up
-// rather than evaluated again.
+// the work is shared: the faces are taken base face by base face, every mesh in turn, the limit
+// points inside the base face from one grid (face_grid_limits.h: the evaluator's bits at array
+// reads) and those on its edges from an evaluator kept for a few thousand of the finest mesh's faces,
+// so that where the meshes nest (a coarser face's samples are among the finer faces' samples that
+// cover it) a coarser mesh's samples are looked up rather than evaluated again.
 std::vector<SurfaceError> surface_errors_at(std::span<const Mesh* const> meshes, std::span<const std::vector<glm::dvec3>> corner_positions);
 
 // The length that percentages of the mesh's size are of (tolerances and automatic LOD in the editor,
