@@ -261,6 +261,8 @@ void Editor::take_opened(LoadedDocument loaded, const std::string& path) {
     dense_ = std::move(loaded);
     pending_ = Pending::DenseMesh;
     pending_path_ = path;
+    // The reading is over: the status line says what waits for the user, not "opening ...".
+    report("read " + path + ": a cage of it, or the mesh as a base mesh?", false);
 }
 
 std::size_t Editor::dense_triangles() const { return dense_ ? dense_->mesh.base().num_faces() : 0; }

@@ -14,12 +14,18 @@
 namespace app {
 namespace {
 
+// The axis gizmo's size: its axes' length, and its centre's distance from the window's left edge and
+// from the status bar.
+constexpr float kGizmoLength = 34.0f, kGizmoMargin = 52.0f;
+// How far above the status bar the gizmo reaches (its "ortho"/"persp" label, kGizmoMargin + 4 above its
+// centre), plus a gap: the legend of a heat map starts above it instead of under it.
+constexpr float kGizmoHeight = 2.0f * kGizmoMargin + 4.0f + 6.0f;
+
 // The mesh frame's axes as the camera sees them, in the bottom left corner: X red, Y green, Z blue,
 // the farthest drawn first so that the nearest lies on top.
 void draw_axis_gizmo(const render::OrbitCamera& camera) {
-    constexpr float kLength = 34.0f, kMargin = 52.0f;
     const ImVec2 display = ImGui::GetIO().DisplaySize;
-    const ImVec2 centre(kMargin, display.y - kStatusBarHeight - kMargin);
+    const ImVec2 centre(kGizmoMargin, display.y - kStatusBarHeight - kGizmoMargin);
     struct Axis {
         glm::vec4 direction;
         ImU32 colour;
@@ -34,17 +40,17 @@ void draw_axis_gizmo(const render::OrbitCamera& camera) {
     for (Axis& axis : axes) {
         const glm::vec4 seen = view * axis.direction;
         axis.depth = seen.z;
-        axis.tip = ImVec2(centre.x + kLength * seen.x, centre.y - kLength * seen.y);
+        axis.tip = ImVec2(centre.x + kGizmoLength * seen.x, centre.y - kGizmoLength * seen.y);
     }
     std::sort(axes.begin(), axes.end(), [](const Axis& a, const Axis& b) { return a.depth < b.depth; });
     ImDrawList* draw = ImGui::GetBackgroundDrawList();
-    draw->AddCircleFilled(centre, kLength + 12.0f, IM_COL32(40, 40, 40, 90));
+    draw->AddCircleFilled(centre, kGizmoLength + 12.0f, IM_COL32(40, 40, 40, 90));
     for (const Axis& axis : axes) {
         draw->AddLine(centre, axis.tip, axis.colour, 3.0f);
         draw->AddCircleFilled(axis.tip, 8.0f, axis.colour);
         draw->AddText(ImVec2(axis.tip.x - 4.0f, axis.tip.y - 7.0f), IM_COL32(255, 255, 255, 255), axis.name);
     }
-    draw->AddText(ImVec2(centre.x - kMargin + 6.0f, centre.y - kMargin - 4.0f), IM_COL32(90, 90, 90, 255),
+    draw->AddText(ImVec2(centre.x - kGizmoMargin + 6.0f, centre.y - kGizmoMargin - 4.0f), IM_COL32(90, 90, 90, 255),
                   camera.orthographic ? "ortho" : "persp");
 }
 
@@ -99,7 +105,7 @@ void EditorView::take_settings(EditorSettings& settings) const {
 void EditorView::draw(Editor& editor, glm::ivec2 framebuffer, bool show_cursor) {
     Document& document = editor.document();
     draw_panels(editor, panels_, options_);
-    options_.bottom_inset_px = kStatusBarHeight;
+    options_.bottom_inset_px = kStatusBarHeight + (axis_gizmo_ ? kGizmoHeight : 0.0f);
     // The document's displayed triangles as far as they have caught up (Editor::update), which
     // picking uses too: the renderer uploads what changed.
     document.set_position_source(options_.positions);

@@ -48,6 +48,7 @@ TEST(EditorDenseMesh, OpeningADenseMeshAsksAndTheBaseMeshAnswerOpensItAsBefore) 
     EXPECT_EQ(editor.smallest_cage_triangles(), 14u);  // a torus
     EXPECT_EQ(editor.cage_triangles(), 1250u);         // 0.5%
     EXPECT_EQ(editor.document().mesh().num_faces(), 0u) << "nothing opened before the answer";
+    EXPECT_EQ(editor.message().find("opening"), std::string::npos) << "the reading is over: " << editor.message();
 
     editor.answer_dense_mesh(false);
     EXPECT_EQ(editor.pending(), Pending::None);
