@@ -177,6 +177,8 @@ bool Document::display_up_to_date() const {
 
 bool Document::catch_up_part() {
     if (changes_->empty()) return true;
+    const auto start = std::chrono::steady_clock::now();
+    const std::size_t faces_before = faces_caught_up_, vertices_before = vertices_caught_up_;
     std::vector<render::SlotRange> ranges;
     const std::span<const rgb::FaceId> faces = changes_->changed_faces();
     const std::span<const rgb::VertexId> vertices = changes_->moved_vertices();
@@ -195,7 +197,13 @@ bool Document::catch_up_part() {
         faces_caught_up_ = face_end;
         vertices_caught_up_ = vertex_end;
     }
+    const auto indexing = std::chrono::steady_clock::now();
     index_.update(geometry_, ranges);
+    catch_up_timing_.geometry_ms += std::chrono::duration<double, std::milli>(indexing - start).count();
+    catch_up_timing_.index_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - indexing).count();
+    ++catch_up_timing_.parts;
+    catch_up_timing_.faces += faces_caught_up_ - faces_before;
+    catch_up_timing_.vertices += vertices_caught_up_ - vertices_before;
     if (!display_changes_.rebuilt) display_changes_.ranges.insert(display_changes_.ranges.end(), ranges.begin(), ranges.end());
     if (faces_caught_up_ < faces.size() || vertices_caught_up_ < vertices.size()) return false;
     changes_->clear();

@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "app/loaded_document.h"
@@ -23,6 +24,22 @@ namespace app {
 // Changed face slots (added or freed) a part of the display's catching up takes, with the same share
 // of the moved vertices: a few milliseconds.
 inline constexpr std::size_t kDisplayPartFaces = std::size_t(1) << 13;
+
+// What the display's catching up cost, summed over its parts until taken (the statistics and the
+// benchmarks): the displayed triangles' update and the picking index's, and the changed face slots
+// and moved vertices the parts handled.
+struct CatchUpTiming {
+    double geometry_ms = 0.0, index_ms = 0.0;
+    std::size_t parts = 0, faces = 0, vertices = 0;
+
+    void add(const CatchUpTiming& other) {
+        geometry_ms += other.geometry_ms;
+        index_ms += other.index_ms;
+        parts += other.parts;
+        faces += other.faces;
+        vertices += other.vertices;
+    }
+};
 
 class Document {
 public:
@@ -136,6 +153,8 @@ public:
         bool rebuilt = false;
     };
     DisplayChanges take_display_changes();
+    // The catching up's cost since the last call.
+    CatchUpTiming take_catch_up_timing() { return std::exchange(catch_up_timing_, CatchUpTiming{}); }
     // The nearest front-facing displayed triangle along the ray.
     std::optional<SurfaceHit> pick(const Ray& ray);
 
@@ -175,6 +194,7 @@ private:
     // How much of changes_'s lists the geometry has caught up with.
     std::size_t faces_caught_up_ = 0, vertices_caught_up_ = 0;
     DisplayChanges display_changes_;
+    CatchUpTiming catch_up_timing_;
 };
 
 // "name.obj*" for the title bar and panels: the file name, or "untitled", with the unsaved mark.

@@ -182,6 +182,7 @@ void Editor::update(std::chrono::microseconds job_slice) {
     timing_.frame_operations = operations;
     // The picking geometry and index catch up here rather than in the next pick, within what is
     // left of the slice (but a few milliseconds at least, so that they keep up with the work).
+    document_.take_catch_up_timing();  // what picking caught up before this frame's catch-up
     const auto catch_up = std::chrono::steady_clock::now();
     // View-dependent LOD changes what is in view every frame: a display caught up in part would show
     // holes and overlaps where faces already replaced meet faces not yet, so its frames catch up
@@ -189,6 +190,7 @@ void Editor::update(std::chrono::microseconds job_slice) {
     if (view_lod()) document_.geometry();
     else document_.catch_up_display(std::max(std::chrono::duration_cast<std::chrono::microseconds>(deadline - catch_up), kMinDisplaySlice));
     timing_.geometry_ms = milliseconds_since(catch_up);
+    timing_.catch_up = document_.take_catch_up_timing();
     keep_recovery_copy(false);
 }
 

@@ -76,6 +76,7 @@ struct EngineTiming {
     double frame_ms = 0.0;             // engine work in the most recent update()
     std::size_t frame_operations = 0;  // splits and removals it made
     double geometry_ms = 0.0;          // then bringing the picking geometry and index up to date
+    CatchUpTiming catch_up;            // that catching up's parts
     double last_pick_ms = 0.0;         // picking the most recent dab and mapping it to base space
     double stroke_start_ms = 0.0;      // the press that started the most recent stroke
     std::size_t dabs = 0;
