@@ -24,6 +24,11 @@ namespace app {
 // Changed face slots (added or freed) a part of the display's catching up takes, with the same share
 // of the moved vertices: a few milliseconds.
 inline constexpr std::size_t kDisplayPartFaces = std::size_t(1) << 13;
+// The smallest part a frame catches up (catch_up_display), whatever time it has left: the display
+// always moves on.
+inline constexpr std::size_t kMinDisplayPartFaces = std::size_t(1) << 10;
+
+class DisplayPace;
 
 // What the display's catching up cost, summed over its parts until taken (the statistics and the
 // benchmarks): the displayed triangles' update and the picking index's, and the changed face slots
@@ -132,9 +137,12 @@ public:
     // change (the undo of a huge stroke: 140k vertices, 0.35 s of display work at 3.8M triangles)
     // they catch up a part per frame instead of all in one frame.
     const render::SurfaceGeometry& shown() const { return geometry_; }
-    // Brings the displayed triangles and the picking index up to date for about `budget`, at least
-    // one part of the changes; false while some are left.
-    bool catch_up_display(std::chrono::microseconds budget);
+    // Brings the displayed triangles and the picking index up to date within about `budget`, in
+    // parts that `pace` expects to fit the time left (kMinDisplayPartFaces to kDisplayPartFaces
+    // face slots; the first one whatever the time left); false while some are left.
+    bool catch_up_display(std::chrono::microseconds budget, const DisplayPace& pace);
+    // Changed face slots the display has yet to catch up with (all of them after a change of everything).
+    std::size_t display_backlog() const;
     // Whether the display has more changes of the mesh left to catch up with than one part of the
     // catching up takes (a few milliseconds).
     bool display_behind() const;
@@ -168,8 +176,9 @@ private:
     void start_history(std::string path, bool unsaved);
     // The file `path` holds the mesh as it is now, with everything set.
     void mark_saved(const std::string& path);
-    // Brings the geometry and index up to date with the next part of the changes; true once all are in.
-    bool catch_up_part();
+    // Brings the geometry and index up to date with the next part of the changes (up to `max_faces`
+    // changed face slots); true once all are in.
+    bool catch_up_part(std::size_t max_faces = kDisplayPartFaces);
 
     // Keeps room for a quarter more triangles than there are, ahead of an edit, undo or redo.
     void keep_room_for_edit();

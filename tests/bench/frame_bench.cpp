@@ -88,8 +88,10 @@ struct Frames {
 void print_frames(const char* what, const Frames& f) {
     std::printf("    %s: %zu frames, engine per frame p50 %6.2f ms  p95 %6.2f ms  max %6.2f ms  (%zu over the slice)\n", what,
                 f.engine_ms.size(), quantile(f.engine_ms, 0.5), quantile(f.engine_ms, 0.95), quantile(f.engine_ms, 1.0), f.over_slice);
-    std::printf("      processor time per frame p50 %6.2f ms  p95 %6.2f ms  max %6.2f ms | longest frame: input %.1f, job %.1f, catch-up %.1f ms\n",
-                quantile(f.cpu_ms, 0.5), quantile(f.cpu_ms, 0.95), quantile(f.cpu_ms, 1.0), f.worst.input_ms, f.worst.job_ms,
+    double cpu_total = 0.0;
+    for (double ms : f.cpu_ms) cpu_total += ms;
+    std::printf("      processor time per frame p50 %6.2f ms  p95 %6.2f ms  max %6.2f ms, in all %.0f ms | longest frame: input %.1f, job %.1f, catch-up %.1f ms\n",
+                quantile(f.cpu_ms, 0.5), quantile(f.cpu_ms, 0.95), quantile(f.cpu_ms, 1.0), cpu_total, f.worst.input_ms, f.worst.job_ms,
                 f.worst.catch_up_ms);
     std::printf("      in all: job %.0f ms, input %.0f ms | catch-up geometry %.0f ms, index %.0f ms, %zu parts, %zu face slots, %zu moved vertices\n",
                 f.job_ms, f.other_input_ms, f.catch_up.geometry_ms, f.catch_up.index_ms, f.catch_up.parts, f.catch_up.faces, f.catch_up.vertices);
