@@ -74,8 +74,8 @@ struct EditorOptions {
 
 // What the engine and picking cost, for the statistics panel and the benchmarks.
 struct EngineTiming {
-    double frame_ms = 0.0;             // engine work in the most recent update()
-    std::size_t frame_operations = 0;  // splits and removals it made
+    double frame_ms = 0.0;             // the jobs' work in the most recent update(), all its rounds
+    std::size_t frame_operations = 0;  // splits and removals they made
     double geometry_ms = 0.0;          // bringing the picking geometry and index up to date in it
     CatchUpTiming catch_up;            // that catching up's parts
     double last_pick_ms = 0.0;         // picking the most recent dab and mapping it to base space
