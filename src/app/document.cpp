@@ -6,6 +6,7 @@
 #include <span>
 #include <utility>
 
+#include "app/display_pace.h"
 #include "io/mesh_export.h"
 #include "rgb/values/restore_state.h"
 
@@ -160,11 +161,18 @@ const render::SurfaceGeometry& Document::geometry() {
     return geometry_;
 }
 
-bool Document::catch_up_display(std::chrono::microseconds budget) {
+bool Document::catch_up_display(std::chrono::microseconds budget, const DisplayPace& pace) {
     const auto deadline = std::chrono::steady_clock::now() + budget;
-    while (!catch_up_part())
-        if (std::chrono::steady_clock::now() >= deadline) return false;
-    return true;
+    for (bool first = true;; first = false) {
+        const double left_us = std::chrono::duration<double, std::micro>(deadline - std::chrono::steady_clock::now()).count();
+        const std::size_t fits = std::min(kDisplayPartFaces, pace.faces_within(left_us));
+        if (!first && fits < kMinDisplayPartFaces) return false;
+        if (catch_up_part(std::max(fits, kMinDisplayPartFaces))) return true;
+    }
+}
+
+std::size_t Document::display_backlog() const {
+    return changes_->everything() ? mesh_.face_capacity() : changes_->changed_faces().size() - faces_caught_up_;
 }
 
 bool Document::display_behind() const {
@@ -175,8 +183,10 @@ bool Document::display_up_to_date() const {
     return changes_->empty() && !display_changes_.rebuilt && display_changes_.ranges.empty();
 }
 
-bool Document::catch_up_part() {
+bool Document::catch_up_part(std::size_t max_faces) {
     if (changes_->empty()) return true;
+    const auto start = std::chrono::steady_clock::now();
+    const std::size_t faces_before = faces_caught_up_, vertices_before = vertices_caught_up_;
     std::vector<render::SlotRange> ranges;
     const std::span<const rgb::FaceId> faces = changes_->changed_faces();
     const std::span<const rgb::VertexId> vertices = changes_->moved_vertices();
@@ -186,7 +196,7 @@ bool Document::catch_up_part() {
         vertices_caught_up_ = vertices.size();
     } else {
         // The moved vertices in the same proportion as the faces (each added face lists its three).
-        const std::size_t face_end = std::min(faces.size(), faces_caught_up_ + kDisplayPartFaces);
+        const std::size_t face_end = std::min(faces.size(), faces_caught_up_ + max_faces);
         const std::size_t vertex_end =
             face_end == faces.size() ? vertices.size()
                                      : std::max(vertices_caught_up_, std::min(vertices.size(), vertices.size() * face_end / faces.size()));
@@ -195,7 +205,13 @@ bool Document::catch_up_part() {
         faces_caught_up_ = face_end;
         vertices_caught_up_ = vertex_end;
     }
+    const auto indexing = std::chrono::steady_clock::now();
     index_.update(geometry_, ranges);
+    catch_up_timing_.geometry_ms += std::chrono::duration<double, std::milli>(indexing - start).count();
+    catch_up_timing_.index_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - indexing).count();
+    ++catch_up_timing_.parts;
+    catch_up_timing_.faces += faces_caught_up_ - faces_before;
+    catch_up_timing_.vertices += vertices_caught_up_ - vertices_before;
     if (!display_changes_.rebuilt) display_changes_.ranges.insert(display_changes_.ranges.end(), ranges.begin(), ranges.end());
     if (faces_caught_up_ < faces.size() || vertices_caught_up_ < vertices.size()) return false;
     changes_->clear();

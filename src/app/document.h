@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "app/loaded_document.h"
@@ -23,6 +24,27 @@ namespace app {
 // Changed face slots (added or freed) a part of the display's catching up takes, with the same share
 // of the moved vertices: a few milliseconds.
 inline constexpr std::size_t kDisplayPartFaces = std::size_t(1) << 13;
+// The smallest part a frame catches up (catch_up_display), whatever time it has left: the display
+// always moves on.
+inline constexpr std::size_t kMinDisplayPartFaces = std::size_t(1) << 10;
+
+class DisplayPace;
+
+// What the display's catching up cost, summed over its parts until taken (the statistics and the
+// benchmarks): the displayed triangles' update and the picking index's, and the changed face slots
+// and moved vertices the parts handled.
+struct CatchUpTiming {
+    double geometry_ms = 0.0, index_ms = 0.0;
+    std::size_t parts = 0, faces = 0, vertices = 0;
+
+    void add(const CatchUpTiming& other) {
+        geometry_ms += other.geometry_ms;
+        index_ms += other.index_ms;
+        parts += other.parts;
+        faces += other.faces;
+        vertices += other.vertices;
+    }
+};
 
 class Document {
 public:
@@ -115,9 +137,12 @@ public:
     // change (the undo of a huge stroke: 140k vertices, 0.35 s of display work at 3.8M triangles)
     // they catch up a part per frame instead of all in one frame.
     const render::SurfaceGeometry& shown() const { return geometry_; }
-    // Brings the displayed triangles and the picking index up to date for about `budget`, at least
-    // one part of the changes; false while some are left.
-    bool catch_up_display(std::chrono::microseconds budget);
+    // Brings the displayed triangles and the picking index up to date within about `budget`, in
+    // parts that `pace` expects to fit the time left (kMinDisplayPartFaces to kDisplayPartFaces
+    // face slots; the first one whatever the time left); false while some are left.
+    bool catch_up_display(std::chrono::microseconds budget, const DisplayPace& pace);
+    // Changed face slots the display has yet to catch up with (all of them after a change of everything).
+    std::size_t display_backlog() const;
     // Whether the display has more changes of the mesh left to catch up with than one part of the
     // catching up takes (a few milliseconds).
     bool display_behind() const;
@@ -136,6 +161,8 @@ public:
         bool rebuilt = false;
     };
     DisplayChanges take_display_changes();
+    // The catching up's cost since the last call.
+    CatchUpTiming take_catch_up_timing() { return std::exchange(catch_up_timing_, CatchUpTiming{}); }
     // The nearest front-facing displayed triangle along the ray.
     std::optional<SurfaceHit> pick(const Ray& ray);
 
@@ -149,8 +176,9 @@ private:
     void start_history(std::string path, bool unsaved);
     // The file `path` holds the mesh as it is now, with everything set.
     void mark_saved(const std::string& path);
-    // Brings the geometry and index up to date with the next part of the changes; true once all are in.
-    bool catch_up_part();
+    // Brings the geometry and index up to date with the next part of the changes (up to `max_faces`
+    // changed face slots); true once all are in.
+    bool catch_up_part(std::size_t max_faces = kDisplayPartFaces);
 
     // Keeps room for a quarter more triangles than there are, ahead of an edit, undo or redo.
     void keep_room_for_edit();
@@ -175,6 +203,7 @@ private:
     // How much of changes_'s lists the geometry has caught up with.
     std::size_t faces_caught_up_ = 0, vertices_caught_up_ = 0;
     DisplayChanges display_changes_;
+    CatchUpTiming catch_up_timing_;
 };
 
 // "name.obj*" for the title bar and panels: the file name, or "untitled", with the unsaved mark.

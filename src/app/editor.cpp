@@ -156,13 +156,49 @@ void Editor::key_pressed(Key key, Modifiers mods) {
     }
 }
 
-void Editor::update(std::chrono::microseconds job_slice) {
+void Editor::update(std::chrono::microseconds slice) {
     poll_file_task();
     poll_recovery_task();
     const auto start = std::chrono::steady_clock::now();
-    const auto deadline = start + job_slice;
-    std::size_t operations = 0;
-    // The front job gets the slice; one that finishes early hands the rest to the next.
+    const auto frame_end = start + slice;
+    timing_.frame_ms = timing_.geometry_ms = 0.0;
+    timing_.frame_operations = 0;
+    timing_.catch_up = {};
+    document_.take_catch_up_timing();  // what picking caught up before this frame
+    // Rounds of work and catching up, both within the slice: the work stops early by what the
+    // display is expected to need to show it (display_pace.h), and time the display did not need
+    // goes back to the work in another round.
+    for (;;) {
+        const auto round = std::chrono::steady_clock::now();
+        const auto left = std::chrono::duration_cast<std::chrono::microseconds>(frame_end - round);
+        const std::size_t behind = document_.display_backlog();
+        // View-dependent LOD bounds its own changes a step.
+        const auto deadline = frame_end - display_pace_.display_share(left, behind, view_lod() ? view_lod()->max_face_changes() : 0);
+        const bool stopped = run_jobs(deadline);
+        const auto catch_up = std::chrono::steady_clock::now();
+        timing_.frame_ms += std::chrono::duration<double, std::milli>(catch_up - round).count();
+        const std::size_t made = document_.display_backlog();
+        display_pace_.work_changed(made > behind ? made - behind : 0);
+        // The picking geometry and index catch up here rather than in the next pick, within what
+        // is left of the slice (but a part at least, so that they keep up with work that overran
+        // its share). View-dependent LOD changes what is in view every frame: a display caught up
+        // in part would show holes and overlaps where faces already replaced meet faces not yet,
+        // so its frames catch up whole (its step stops at a quarter of a part's worth of changes,
+        // Editor::start_view_lod).
+        bool caught_up = true;
+        if (view_lod()) document_.geometry();
+        else caught_up = document_.catch_up_display(std::chrono::duration_cast<std::chrono::microseconds>(frame_end - catch_up), display_pace_);
+        timing_.geometry_ms += milliseconds_since(catch_up);
+        const CatchUpTiming caught = document_.take_catch_up_timing();
+        display_pace_.caught_up(caught);
+        timing_.catch_up.add(caught);
+        if (!stopped || !caught_up || frame_end - std::chrono::steady_clock::now() < kMinWorkRound) break;
+    }
+    keep_recovery_copy(false);
+}
+
+bool Editor::run_jobs(std::chrono::steady_clock::time_point deadline) {
+    // The front job gets the time; one that finishes early hands the rest to the next.
     while (!jobs_.empty()) {
         MeshJob& job = *jobs_.front();
         if (!front_begun_) {
@@ -173,23 +209,14 @@ void Editor::update(std::chrono::microseconds job_slice) {
         const auto* requests = dynamic_cast<const RequestJob*>(&job);
         const std::size_t before = requests ? requests->stats().splits + requests->stats().removals : 0;
         const bool more = job.step(std::max(left, std::chrono::microseconds(0)));
-        if (requests) operations += requests->stats().splits + requests->stats().removals - before;
-        if (more) break;
+        if (requests) timing_.frame_operations += requests->stats().splits + requests->stats().removals - before;
+        // View-dependent LOD stops at its cap of changes before the deadline, and has more to do
+        // until it converges.
+        if (more) return std::chrono::steady_clock::now() >= deadline || (view_lod() && !view_lod()->converged());
         finish_front();
-        if (std::chrono::steady_clock::now() >= deadline) break;
+        if (std::chrono::steady_clock::now() >= deadline) return !jobs_.empty();
     }
-    timing_.frame_ms = milliseconds_since(start);
-    timing_.frame_operations = operations;
-    // The picking geometry and index catch up here rather than in the next pick, within what is
-    // left of the slice (but a few milliseconds at least, so that they keep up with the work).
-    const auto catch_up = std::chrono::steady_clock::now();
-    // View-dependent LOD changes what is in view every frame: a display caught up in part would show
-    // holes and overlaps where faces already replaced meet faces not yet, so its frames catch up
-    // whole (its step stops at a quarter of a part's worth of changes, Editor::start_view_lod).
-    if (view_lod()) document_.geometry();
-    else document_.catch_up_display(std::max(std::chrono::duration_cast<std::chrono::microseconds>(deadline - catch_up), kMinDisplaySlice));
-    timing_.geometry_ms = milliseconds_since(catch_up);
-    keep_recovery_copy(false);
+    return false;
 }
 
 void Editor::finish_work() {

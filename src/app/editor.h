@@ -27,6 +27,7 @@
 #include "app/brush_adjust.h"
 #include "app/crease_tool.h"
 #include "app/detail_job.h"
+#include "app/display_pace.h"
 #include "app/document.h"
 #include "app/history_job.h"
 #include "app/input.h"
@@ -73,17 +74,18 @@ struct EditorOptions {
 
 // What the engine and picking cost, for the statistics panel and the benchmarks.
 struct EngineTiming {
-    double frame_ms = 0.0;             // engine work in the most recent update()
-    std::size_t frame_operations = 0;  // splits and removals it made
-    double geometry_ms = 0.0;          // then bringing the picking geometry and index up to date
+    double frame_ms = 0.0;             // the jobs' work in the most recent update(), all its rounds
+    std::size_t frame_operations = 0;  // splits and removals they made
+    double geometry_ms = 0.0;          // bringing the picking geometry and index up to date in it
+    CatchUpTiming catch_up;            // that catching up's parts
     double last_pick_ms = 0.0;         // picking the most recent dab and mapping it to base space
     double stroke_start_ms = 0.0;      // the press that started the most recent stroke
     std::size_t dabs = 0;
 };
 
-// The least time a frame gives the display to catch up with the mesh (Document::catch_up_display),
-// so that it keeps up with work that takes the whole slice.
-inline constexpr std::chrono::microseconds kMinDisplaySlice{4000};
+// The least time left in a frame for another round of work after the display caught up
+// (Editor::update): a shorter one would cut the work into pieces too small to be worth it.
+inline constexpr std::chrono::microseconds kMinWorkRound{2000};
 
 // The side panel's width in pixels (editor_panels.cpp), and what it covers of the viewport with its
 // margin: the window and headless frames tell the editor (set_covered_right) so that framing keeps
@@ -119,9 +121,10 @@ public:
     void key_pressed(Key key, Modifiers mods);
     // Shift held or not, for the stroke under way and the cursor preview.
     void set_modifiers(Modifiers mods) { mods_ = mods; }
-    // Advances the queued work (strokes, whole-mesh jobs) by about a time slice, takes the results
-    // of files read or written in the background and keeps the recovery copy; call once per frame.
-    void update(std::chrono::microseconds job_slice);
+    // Advances the queued work (strokes, whole-mesh jobs) and brings the display up to date with it
+    // (as far as it can), both within about a time slice (display_pace.h), takes the results of
+    // files read or written in the background and keeps the recovery copy; call once per frame.
+    void update(std::chrono::microseconds slice);
     // Runs the queued work and the files being read or written to their end (tests, headless frames).
     void finish_work();
     // Whether frames must keep coming without input: a stroke, a whole-mesh job or a file task under
@@ -272,6 +275,9 @@ private:
     void detail_dab(const BaseSpaceHit& at, const glm::dvec3& hit_point);
     std::optional<SurfaceHit> pick(glm::vec2 px);
     void queue(std::unique_ptr<MeshJob> job);
+    // Steps the queued jobs until `deadline`; true if they stopped with work left for more time
+    // (not for lack of work: a converged view-dependent LOD, say).
+    bool run_jobs(std::chrono::steady_clock::time_point deadline);
     // Undo or redo: at once, or as a job.
     bool cross(HistoryJob::Direction direction);
     // File tasks: start, and take what finished.
@@ -339,6 +345,7 @@ private:
     // reaches the front.
     std::deque<std::unique_ptr<MeshJob>> jobs_;
     bool front_begun_ = false;
+    DisplayPace display_pace_;
 
     // Files read or written in the background, one at a time.
     std::unique_ptr<BackgroundTask> file_task_;

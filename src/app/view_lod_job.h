@@ -48,6 +48,8 @@ public:
     // Takes effect at the next step.
     void set_settings(const rgb::ViewLodSettings& settings) { lod_.set_settings(settings); }
     const rgb::ViewLodSettings& settings() const { return lod_.settings(); }
+    // The most faces a step adds and removes (give or take one operation's).
+    std::size_t max_face_changes() const { return max_face_changes_; }
 
 private:
     std::function<rgb::ScreenView()> current_view_;

@@ -78,8 +78,8 @@ protected:
 TEST_F(WindowFrames, KeepComingUntilTheDisplayHasCaughtUpWithAJobAndAnUndo) {
     ASSERT_TRUE(editor.open(test::asset_path("bunny.obj")));
     draw_until_idle(std::chrono::microseconds(1));
-    // Frames whose job takes most of the slice leave the display behind (it catches up at least
-    // kMinDisplaySlice a frame); the job ends with the display still catching up.
+    // Frames whose job takes most of the slice leave the display behind (it gets what the job's
+    // share leaves, display_pace.h); the job ends with the display still catching up.
     editor.start_flood_fill(kCatchUpLevel);
     draw_until_idle(std::chrono::milliseconds(30));
     ASSERT_EQ(editor.job(), nullptr);
