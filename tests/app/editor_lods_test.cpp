@@ -17,7 +17,7 @@
 namespace app::test {
 namespace {
 
-std::string file_bytes(const std::filesystem::path& path) {
+std::string lod_file_bytes(const std::filesystem::path& path) {
     std::ifstream in(path, std::ios::binary);
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
@@ -101,9 +101,9 @@ TEST_F(EditorLods, TheExportWritesTheFilesOfTheCli) {
         const bool one_file = name == "lv.glb";
         for (std::size_t i = 0; i < (one_file ? 1 : 3); ++i) {
             const std::string file = one_file ? name : rgbio::lod_file_name(name, i);
-            const std::string expected = file_bytes(folder / "cli" / file);
+            const std::string expected = lod_file_bytes(folder / "cli" / file);
             ASSERT_FALSE(expected.empty()) << file;
-            EXPECT_EQ(file_bytes(folder / "editor" / file), expected) << file;
+            EXPECT_EQ(lod_file_bytes(folder / "editor" / file), expected) << file;
         }
     }
 }
