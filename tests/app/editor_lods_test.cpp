@@ -126,6 +126,16 @@ TEST_F(EditorLods, BadValuesAreRefusedInThePanel) {
     EXPECT_NE(editor.lod_problem().find("no file to export to"), std::string::npos) << editor.lod_problem();
 }
 
+TEST_F(EditorLods, EscStopsMakingTheLevels) {
+    editor.start_lod_levels();
+    ASSERT_NE(editor.lod_task(), nullptr);
+    editor.key_pressed(Key::Escape, {});
+    EXPECT_EQ(editor.lod_task(), nullptr);
+    editor.finish_work();
+    EXPECT_EQ(editor.lod_levels(), nullptr);
+    EXPECT_EQ(editor.message(), "stopped making the LODs");
+}
+
 TEST_F(EditorLods, AFailedExportWritesNothing) {
     // LOD1's file cannot be written (a folder has its name): LOD0's, written first, goes again.
     const std::filesystem::path output = folder / "lv.obj";
