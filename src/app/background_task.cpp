@@ -15,6 +15,7 @@ struct BackgroundTask::Shared {
     std::atomic<bool> done{false};
     std::optional<std::string> error;
     std::optional<LoadedDocument> document;
+    std::optional<LodLevels> lods;
     std::atomic<const char*> phase{"starting"};  // a remesh's phase (string literals)
     std::atomic<bool> stop{false};                // set when the task is dropped
     std::string summary;
@@ -116,6 +117,31 @@ std::unique_ptr<BackgroundTask> BackgroundTask::remesh(std::shared_ptr<const rgb
     return task;
 }
 
+std::unique_ptr<BackgroundTask> BackgroundTask::lods(rgb::Mesh copy, std::vector<rgbio::ScriptLine> requests, rgbio::LodSetOptions options) {
+    std::unique_ptr<BackgroundTask> task(new BackgroundTask(Kind::Lods, options.output.value_or("")));
+    start_thread([shared = task->shared_, mesh = std::move(copy), requests = std::move(requests), options = std::move(options)]() mutable {
+        try {
+            // Making the levels takes most of the time, measuring their errors and the displays the rest.
+            constexpr double kLevelsShare = 0.8, kErrorsShare = 0.9;
+            options.progress = [&shared](std::size_t step, std::size_t levels) {
+                shared->progress.reach(step < levels ? kLevelsShare * static_cast<double>(step) / static_cast<double>(levels) : kLevelsShare);
+                return !shared->stop.load(std::memory_order_relaxed);
+            };
+            LodLevels made{rgbio::make_lod_set(mesh, requests, options), {}, 0};
+            shared->progress.reach(kErrorsShare);
+            for (const rgbio::LodSetLevel& level : made.set.levels) {
+                render::SurfaceGeometry& display = made.displays.emplace_back(written_source(options.save.positions));
+                display.rebuild(level.mesh);
+            }
+            shared->lods.emplace(std::move(made));
+        } catch (const std::exception& failure) {
+            shared->error = describe(failure);
+        }
+        shared->done.store(true, std::memory_order_release);
+    });
+    return task;
+}
+
 double BackgroundTask::seconds() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
 
 double BackgroundTask::fraction() const { return done() ? 1.0 : shared_->progress.fraction(); }
@@ -123,6 +149,8 @@ double BackgroundTask::fraction() const { return done() ? 1.0 : shared_->progres
 std::string BackgroundTask::status() const {
     const int percent = static_cast<int>(std::floor(100.0 * fraction()));
     if (kind_ == Kind::Remesh) return "Making a cage of " + path_ + ": " + phase() + ", " + std::to_string(percent) + "%, Esc stops";
+    if (kind_ == Kind::Lods)
+        return (path_.empty() ? std::string("Making the LODs: ") : "Exporting the LODs to " + path_ + ": ") + std::to_string(percent) + "%, Esc stops";
     return (kind_ == Kind::Open ? "Opening " : "Saving ") + path_ + ": " + std::to_string(percent) + "%";
 }
 
@@ -138,6 +166,12 @@ LoadedDocument BackgroundTask::take_document() {
     LoadedDocument document = std::move(*shared_->document);
     shared_->document.reset();
     return document;
+}
+
+LodLevels BackgroundTask::take_lods() {
+    LodLevels lods = std::move(*shared_->lods);
+    shared_->lods.reset();
+    return lods;
 }
 
 }  // namespace app

@@ -10,8 +10,10 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "app/loaded_document.h"
+#include "app/lod_levels.h"
 #include "io/mesh_file.h"
 #include "rgb/support/progress.h"
 
@@ -19,7 +21,7 @@ namespace app {
 
 class BackgroundTask {
 public:
-    enum class Kind { Open, Save, Remesh };
+    enum class Kind { Open, Save, Remesh, Lods };
 
     // Reads `path` with load_document.
     static std::unique_ptr<BackgroundTask> open(const std::string& path, render::PositionSource source);
@@ -33,6 +35,11 @@ public:
     static std::unique_ptr<BackgroundTask> remesh(std::shared_ptr<const rgb::BaseMesh> dense, std::size_t cage_triangles,
                                                   const std::string& path, render::PositionSource source);
 
+    // Makes the levels of detail of `requests` from `copy` with rgbio::make_lod_set (writing them
+    // to options.output, if set, as `rgbsub lods` does) and each level's display. Dropping the task
+    // stops it before its next level (the files of a set stopped are removed).
+    static std::unique_ptr<BackgroundTask> lods(rgb::Mesh copy, std::vector<rgbio::ScriptLine> requests, rgbio::LodSetOptions options);
+
     ~BackgroundTask();
     // Threads of tasks, dropped or not, that have not finished yet.
     static int running();
@@ -44,8 +51,8 @@ public:
     double seconds() const;
     // How far the reading or writing is, in [0, 1], never decreasing; 1 once done.
     double fraction() const;
-    // "Opening PATH: 43%", "Saving PATH: 43%" or "Making a cage of PATH: fitting the cage, 43%",
-    // for the status line.
+    // "Opening PATH: 43%", "Saving PATH: 43%", "Making a cage of PATH: fitting the cage, 43%" or
+    // "Making the LODs: 43%" ("Exporting the LODs to PATH: 43%"), for the status line.
     std::string status() const;
     // A remesh's phase now ("making the cage", "fitting the cage", "sampling the detail", ...).
     std::string phase() const;
@@ -56,6 +63,8 @@ public:
     const std::string& summary() const;
     // Once done, an open or remesh that worked: the document (once).
     LoadedDocument take_document();
+    // Once done, LODs made: the levels (once).
+    LodLevels take_lods();
 
 private:
     struct Shared;

@@ -150,6 +150,7 @@ void Editor::key_pressed(Key key, Modifiers mods) {
             else if (pending_ != Pending::None) answer_pending(false);
             else if (view_lod()) freeze_view_lod();
             else if (!jobs_.empty()) cancel_job();
+            else if (lod_task_) stop_lods();
             else stop_opening();
             break;
         default: break;
@@ -158,6 +159,7 @@ void Editor::key_pressed(Key key, Modifiers mods) {
 
 void Editor::update(std::chrono::microseconds slice) {
     poll_file_task();
+    poll_lod_task();
     poll_recovery_task();
     const auto start = std::chrono::steady_clock::now();
     const auto frame_end = start + slice;
@@ -223,14 +225,14 @@ void Editor::finish_work() {
     if (stroke_) end_stroke();
     // The view-dependent mode never ends by itself: it is done for now once settled for the camera.
     const auto working = [this] { return !jobs_.empty() && !(view_lod() && view_lod()->converged()); };
-    while (working() || file_task_ || recovery_task_ || save_when_idle_) {
+    while (working() || file_task_ || recovery_task_ || save_when_idle_ || lod_task_) {
         update(std::chrono::seconds(1));
         if (!working()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
     }
 }
 
 bool Editor::needs_frames() const {
-    return job() != nullptr || painting_ || file_task_ != nullptr || !document_.display_up_to_date();
+    return job() != nullptr || painting_ || file_task_ != nullptr || lod_task_ != nullptr || !document_.display_up_to_date();
 }
 
 void Editor::queue(std::unique_ptr<MeshJob> job) { jobs_.push_back(std::move(job)); }

@@ -30,6 +30,7 @@
 #include "app/display_pace.h"
 #include "app/document.h"
 #include "app/history_job.h"
+#include "app/lod_levels.h"
 #include "app/input.h"
 #include "app/mesh_job.h"
 #include "app/recovery_store.h"
@@ -185,6 +186,32 @@ public:
     // The mode's job while it runs.
     ViewLodJob* view_lod() const;
 
+    // ---- Export LODs (lod_levels.h; editor_lods.cpp) ----
+    LodExportSettings& lod_export_settings() { return lod_export_; }
+    // Makes the levels the settings ask for of the mesh as it is, as `rgbsub lods` makes them, in the
+    // background (lod_task(); Esc stops it): lod_levels() has them once done. Bad values (an empty
+    // list, a value out of range or twice) or a level too large are refused with lod_problem() set.
+    void start_lod_levels();
+    // The same, writing them to `path` as `rgbsub lods -o path` does (io/lod_set_files.h: a .glb or
+    // .gltf path one file with MSFT_lod, another one file per level); a failed export writes nothing.
+    void start_lod_export(const std::string& path);
+    const BackgroundTask* lod_task() const { return lod_task_.get(); }
+    // The levels made of the document as it is now; null if none (or the mesh has changed since).
+    const LodLevels* lod_levels() const;
+    // Why the last request for LODs was refused or failed ("" if it was not).
+    const std::string& lod_problem() const { return lod_problem_; }
+    // The viewport shows level `level` of lod_levels() in place of the mesh (none: the mesh again).
+    // The document and its history stay as they are; an edit ends the preview.
+    void preview_lod(std::optional<std::size_t> level);
+    std::optional<std::size_t> previewed_lod() const;
+    // The level previewed and its display (at its written positions), if any.
+    struct LodPreview {
+        const rgb::Mesh* mesh;
+        const render::SurfaceGeometry* display;
+        std::uint64_t serial;  // differs for every level of every set made (never 0)
+    };
+    std::optional<LodPreview> lod_preview() const;
+
     // ---- files ----
     // Right away, on this thread (tests, headless frames); each returns false and sets an error
     // message when it cannot proceed.
@@ -295,6 +322,10 @@ private:
     // proposes to write it ("" for any other file).
     bool is_sample(const std::string& path) const;
     std::string save_suggestion(const std::string& path) const;
+    // Export LODs (editor_lods.cpp): start making (and writing) the levels; take the result.
+    void start_lods(const std::optional<std::string>& output);
+    void poll_lod_task();
+    void stop_lods();
     // A remesh's result arrived (editor_files.cpp).
     void remeshed(BackgroundTask& task);
     // The recovery copy: written when `force`d or due, if there is unsaved work not yet in it.
@@ -381,6 +412,15 @@ private:
     std::uint64_t open_failures_ = 0;
 
     DetailSettings detail_settings_;
+
+    LodExportSettings lod_export_;
+    std::unique_ptr<BackgroundTask> lod_task_;
+    std::uint64_t lod_task_changes_ = 0;  // Document::changes() of the mesh lod_task_ works on
+    std::vector<std::string> lod_notes_;  // what the export leaves out (a skin)
+    std::optional<LodLevels> lod_levels_;
+    std::uint64_t lod_sets_made_ = 0;
+    std::optional<std::size_t> lod_preview_;
+    std::string lod_problem_;
 
     CreaseToolSettings crease_tool_;
     std::optional<CreaseDrag> crease_drag_;

@@ -19,6 +19,7 @@ const char* browser_title(FileBrowser::Purpose purpose) {
         case FileBrowser::Purpose::Open: return "Open a mesh";
         case FileBrowser::Purpose::SaveAs: return "Save the mesh as";
         case FileBrowser::Purpose::SaveStrokes: return "Save the strokes as a script";
+        case FileBrowser::Purpose::ExportLods: return "Export the LODs as";
         case FileBrowser::Purpose::None: break;
     }
     return "";
@@ -58,6 +59,7 @@ void finish(Editor& editor, FileBrowser& browser) {
         case FileBrowser::Purpose::Open: editor.request_open(path); break;
         case FileBrowser::Purpose::SaveAs: editor.request_save_as(path); break;
         case FileBrowser::Purpose::SaveStrokes: editor.save_strokes(path); break;
+        case FileBrowser::Purpose::ExportLods: editor.start_lod_export(path); break;
         case FileBrowser::Purpose::None: break;
     }
     browser.purpose = FileBrowser::Purpose::None;

@@ -14,6 +14,7 @@
 #include "app/editor.h"
 #include "app/editor_dialogs.h"
 #include "app/hover_tooltip.h"
+#include "app/lod_panel.h"
 #include "io/script/lod_script.h"
 #include "render/colour_map.h"
 #include "rgb/mesh/mesh.h"
@@ -337,7 +338,7 @@ void status_bar(Editor& editor) {
     constexpr float kProgressWidth = 320.0f;
     std::string work;
     float fraction = -1.0f;
-    if (const BackgroundTask* task = editor.file_task()) {
+    if (const BackgroundTask* task = editor.file_task() ? editor.file_task() : editor.lod_task()) {
         work = task->status();
         fraction = static_cast<float>(task->fraction());
     } else if (const MeshJob* job = editor.job()) {
@@ -385,6 +386,8 @@ void draw_panels(Editor& editor, PanelState& state, render::RenderOptions& optio
         if (section(layout, "Whole mesh", true)) actions_panel(editor, state);
         if (section(layout, "Detail by size, accuracy, view", true)) detail_panel(editor);
         if (section(layout, "File", true)) files_panel(editor, state);
+        // Below File and folded at first, so that File's controls stay where they were.
+        if (section(layout, "Export LODs", false)) lod_panel(editor, state);
         if (section(layout, "Display", true)) display_panel(editor, options, editor.document().mesh().base().detail() != nullptr);
         if (section(layout, "Statistics", false)) statistics_panel(editor, state);
         if (section(layout, "Shortcuts", false)) shortcuts_panel();

@@ -21,7 +21,7 @@ inline constexpr float kStatusBarHeight = 26.0f;
 
 // The file browser: a folder listing to pick a file from, and a name to type.
 struct FileBrowser {
-    enum class Purpose { None, Open, SaveAs, SaveStrokes };
+    enum class Purpose { None, Open, SaveAs, SaveStrokes, ExportLods };
     Purpose purpose = Purpose::None;
     std::filesystem::path folder;
     std::array<char, 256> name{};
@@ -35,6 +35,8 @@ struct PanelState {
     int flood_level = 2;
     double frame_ms = 0.0;  // the window's own work in the last frame, not the wait for input
     FileBrowser browser;
+    std::array<char, 256> lod_values{};  // the Export LODs fields (lod_panel.h)
+    std::array<char, 1024> lod_path{};
     PanelLayout layout;  // kept between sessions (editor_settings.h)
 };
 

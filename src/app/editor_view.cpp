@@ -110,13 +110,18 @@ void EditorView::draw(Editor& editor, glm::ivec2 framebuffer, bool show_cursor) 
     // picking uses too: the renderer uploads what changed.
     document.set_position_source(options_.positions);
     document.set_detail_distance(options_.colouring == render::Colouring::DetailDistance);
-    const render::SurfaceGeometry& geometry = document.shown();
     const Document::DisplayChanges changes = document.take_display_changes();
-    renderer_.show(document.mesh(), geometry, changes.ranges, changes.rebuilt);
+    // A level of Export LODs previewed in place of the mesh: uploaded whole when it comes and when
+    // the mesh comes back.
+    const std::optional<Editor::LodPreview> preview = editor.lod_preview();
+    const std::uint64_t shown = preview ? preview->serial : 0;
+    if (preview) renderer_.show(*preview->mesh, *preview->display, {}, shown != shown_);
+    else renderer_.show(document.mesh(), document.shown(), changes.ranges, changes.rebuilt || shown != shown_);
+    shown_ = shown;
 
     options_.brush.reset();
     // While F or Ctrl+F adjusts the brush, its own circle stands for the brush.
-    if (show_cursor && !ImGui::GetIO().WantCaptureMouse && !editor.brush_adjust())
+    if (show_cursor && !ImGui::GetIO().WantCaptureMouse && !editor.brush_adjust() && !preview)
         if (const auto hit = editor.cursor_hit()) {
             // Orange where a drag adds detail, blue where it removes it (coarsen, or Shift).
             const bool removes = editor.active_mode() == BrushMode::Coarsen ||

@@ -37,6 +37,7 @@ private:
     render::RenderOptions options_;
     PanelState panels_;
     bool axis_gizmo_ = true;
+    std::uint64_t shown_ = 0;  // what the renderer showed last frame: the mesh (0) or a preview's serial
 };
 
 }  // namespace app

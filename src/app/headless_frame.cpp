@@ -53,6 +53,10 @@ render::Image render_editor_frame(Editor& editor, const HeadlessFrame& frame) {
     editor.mouse_moved(cursor);
 
     EditorView view;
+    EditorSettings settings;
+    view.take_settings(settings);
+    settings.panel = frame.layout;
+    view.apply_settings(settings);
     view.options().shading = frame.shading;
     view.options().colouring = frame.colouring;
     view.options().wireframe = frame.wireframe;

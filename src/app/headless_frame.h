@@ -5,6 +5,7 @@
 
 #include <glm/vec2.hpp>
 
+#include "app/editor_settings.h"
 #include "render/image.h"
 #include "render/renderer.h"
 
@@ -21,6 +22,8 @@ struct HeadlessFrame {
     // The window's axis gizmo: off, so that a frame shows the mesh and the panels alone (the
     // screenshots, and tests that judge a frame by its colours).
     bool axis_gizmo = false;
+    // The panel's sections open or folded (none named: as in a new window).
+    PanelLayout layout;
 };
 
 // Opens `file` in an editor and renders one frame of it. Throws rgbio::ObjError when the file cannot

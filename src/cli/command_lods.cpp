@@ -1,5 +1,6 @@
 // rgbsub lods IN -o OUT (--budgets T1,T2,... | --tolerances E1,E2,... | --levels L1,L2,...): a set of
-// levels of detail, finest first (io/script/lod_set.h), in one glTF file (MSFT_lod) or one file per level.
+// levels of detail, finest first (io/script/lod_set.h), in one glTF file (MSFT_lod) or one file per level
+// (io/lod_set_files.h, which the editor's Export LODs panel uses too).
 #include <iostream>
 #include <optional>
 #include <vector>
@@ -8,32 +9,15 @@
 #include "cli/commands.h"
 #include "cli/mesh_io_support.h"
 #include "cli/progress.h"
-#include "io/formats/format_writers.h"
-#include "io/gltf_export.h"
-#include "io/mesh_export.h"
+#include "io/base_attributes.h"
+#include "io/formats/mesh_format.h"
+#include "io/lod_set_files.h"
 #include "io/script/lod_set.h"
 #include "io/script/triangle_limit.h"
-#include "rgb/mesh/mesh.h"
-#include "rgb/values/surface_error.h"
 
 namespace cli {
 
 namespace {
-
-// The positions a level is written with, live vertices in slot order, and a slot's written position
-// (for the error of the written surface).
-struct WrittenLevel {
-    std::size_t triangles = 0;
-    std::vector<glm::dvec3> positions;
-    rgbio::GltfMesh gltf;  // for a glTF set: the level, written with the others at the end
-};
-
-std::vector<glm::dvec3> by_slot(const rgb::Mesh& mesh, const std::vector<glm::dvec3>& positions) {
-    std::vector<glm::dvec3> out(mesh.vertex_capacity());
-    std::size_t k = 0;
-    for (rgb::VertexId v : mesh.vertices()) out[v.idx] = positions[k++];
-    return out;
-}
 
 constexpr std::string_view kLodsHelp =
     "usage: rgbsub lods IN -o OUT (--budgets T1,T2,... | --tolerances E1,E2,... | --levels L1,L2,...)\n"
@@ -98,82 +82,41 @@ int run_lods(std::span<const std::string> args) {
     try {
         requests = rgbio::lod_set_requests(*criterion, list, asset.mesh);
     } catch (const std::invalid_argument& error) {
-        throw UsageError(std::string(*criterion == rgbio::LodSetCriterion::Levels    ? "--levels"
-                                     : *criterion == rgbio::LodSetCriterion::Budgets ? "--budgets"
-                                                                                      : "--tolerances") +
-                         ": " + error.what());
+        throw UsageError(std::string(rgbio::lod_set_option(*criterion)) + ": " + error.what());
     }
     rgbio::SaveOptions save;
-    // Limit positions put a vertex at the same point in every level; a cage's detail positions are
-    // the same in every level too, and are the surface it carries.
-    save.positions = positions ? parse_positions(*positions)
-                               : (asset.mesh.base().detail() ? rgbio::SavedPositions::Displayed : rgbio::SavedPositions::Limit);
+    save.positions = positions ? parse_positions(*positions) : rgbio::lod_set_positions(asset.mesh);
     save.state = !arguments.has("--plain");
     save.attributes = asset.attributes;
     save.uvs = input_uv_layout(arguments, asset);
     print_warnings("lods", *output, rgbio::dropped_skin(save.attributes.get(), *output));
     // The sizes a request can be checked for ahead are checked for all levels before any work.
-    for (const rgbio::ScriptLine& request : requests) {
-        if (const auto* level = std::get_if<rgb::LevelRequest>(&request.edit)) rgbio::check_request_size(asset.mesh, *level, limit);
-        if (const auto* budget = std::get_if<rgbio::BudgetEdit>(&request.edit)) rgbio::check_budget_size(budget->triangles, limit);
-    }
+    rgbio::check_lod_set_size(asset.mesh, requests, limit);
 
-    const double size = rgb::bounding_box_diagonal(asset.mesh.base());
-    std::vector<WrittenLevel> levels;
-    std::vector<rgb::Mesh> meshes;  // kept for the errors, measured for all levels at once
-    meshes.reserve(requests.size());
-    {
-        Progress progress("making the levels");
-        for (std::size_t i = 0; i < requests.size(); ++i) {
-            progress.update(i, requests.size(), "LOD" + std::to_string(i));
-            const rgb::Mesh& mesh = meshes.emplace_back(rgbio::lod_set_level(asset.mesh, requests[i], limit));
-            WrittenLevel level;
-            level.triangles = mesh.num_faces();
-            if (format == rgbio::OutputFormat::Gltf) {
-                level.gltf = rgbio::gltf_mesh(mesh, save);
-                if (const std::optional<std::string> repair = rgbio::gltf_normal_repair(level.gltf))
-                    print_warnings("lods", *output, {"LOD" + std::to_string(i) + ": " + *repair});
-                level.positions = level.gltf.positions;
-            } else {
-                rgbio::ExportMesh flat = rgbio::export_mesh(mesh, save);
-                level.positions = flat.positions;
-                const std::string file = rgbio::lod_file_name(*output, i);
-                if (format == rgbio::OutputFormat::Obj) {
-                    rgbio::save_mesh(mesh, file, save);
-                } else {
-                    rgbio::save_export_mesh(flat, file, format);
-                }
-            }
-            levels.push_back(std::move(level));
-        }
-    }
-    std::vector<bool> nested(levels.size(), false);
-    for (std::size_t i = 1; i < levels.size(); ++i) nested[i] = rgbio::positions_nested(levels[i].positions, levels[i - 1].positions);
-    std::vector<double> errors;
-    {
-        Progress progress("measuring the levels' errors");
-        std::vector<const rgb::Mesh*> measured;
-        std::vector<std::vector<glm::dvec3>> corners;
-        for (std::size_t i = 0; i < levels.size(); ++i) {
-            measured.push_back(&meshes[i]);
-            corners.push_back(by_slot(meshes[i], levels[i].positions));
-        }
-        for (const rgb::SurfaceError& error : rgb::surface_errors_at(measured, corners)) errors.push_back(error.max_error);
-    }
-    const std::vector<double> coverage = rgbio::switch_coverage(errors, size);
-    if (format == rgbio::OutputFormat::Gltf) {
-        std::vector<rgbio::GltfMesh> meshes;
-        for (WrittenLevel& level : levels) meshes.push_back(std::move(level.gltf));
-        rgbio::save_gltf_lods(meshes, coverage, *output);
-    }
+    rgbio::LodSetOptions options;
+    options.save = save;
+    options.max_triangles = limit;
+    options.output = *output;
+    std::optional<Progress> progress;
+    options.progress = [&progress](std::size_t step, std::size_t levels) {
+        if (step == 0) progress.emplace("making the levels");
+        if (step == levels) progress.emplace("measuring the levels' errors");
+        progress->update(step, levels, step < levels ? "LOD" + std::to_string(step) : std::string());
+        return true;
+    };
+    const rgbio::LodSet set = rgbio::make_lod_set(asset.mesh, requests, options);
+    progress.reset();
+    print_warnings("lods", *output, set.warnings);
+    const std::vector<rgbio::LodSetLevel>& levels = set.levels;
     bool all_nested = true;
     for (std::size_t i = 0; i < levels.size(); ++i) {
+        const rgbio::LodSetLevel& level = levels[i];
         std::cout << (format == rgbio::OutputFormat::Gltf ? *output : rgbio::lod_file_name(*output, i)) << ": LOD" << i << " ("
-                  << requests[i].text << "): " << levels[i].triangles << " triangles, error " << errors[i] << " ("
-                  << 100.0 * errors[i] / size << "% of the size), shown down to screen coverage " << coverage[i];
-        if (i > 0) std::cout << (nested[i] ? ", nested in LOD" : ", not nested in LOD") << i - 1;
+                  << level.request.text << "): " << level.mesh.num_faces() << " triangles, error " << level.error << " ("
+                  << 100.0 * level.error / set.size << "% of the size), shown down to screen coverage " << level.coverage;
+        if (i > 0) std::cout << (level.nested ? ", nested in LOD" : ", not nested in LOD") << i - 1;
         std::cout << '\n';
-        all_nested = all_nested && (i == 0 || nested[i]);
+        all_nested = all_nested && (i == 0 || level.nested);
     }
     if (!all_nested)
         std::cout << "rgbsub lods: not every level's vertices are among the finer level's"

@@ -334,5 +334,42 @@ TEST(HeadlessFrame, TheAxisGizmoShowsTheMeshFramesAxes) {
     EXPECT_TRUE(green(middle)) << "Y towards the viewer: " << int(middle.r) << " " << int(middle.g) << " " << int(middle.b);
 }
 
+// Export LODs: the slider shows a level in place of the mesh, and its left end the mesh again as it
+// was. The frames, the section open with its table, are written to the test's temporary folder
+// (lods_*.png) for a person to look at.
+TEST(HeadlessFrame, ExportLodsPreviewsALevelInPlaceOfTheMesh) {
+    const std::filesystem::path folder = test::fresh_folder("lods_frames");
+    EditorOptions options;
+    options.viewport = {960, 600};
+    Editor editor(options);
+    ASSERT_TRUE(editor.open(test::asset_path("default.obj")));
+    HeadlessFrame frame;
+    frame.size = options.viewport;
+    frame.colouring = render::Colouring::Level;
+    frame.wireframe = true;
+    for (const char* folded : {"Brush", "Whole mesh", "Detail by size, accuracy, view", "Display"}) frame.layout.sections[folded] = false;
+    frame.layout.sections["Export LODs"] = true;
+    const render::Image mesh = render_editor_frame(editor, frame);
+    editor.lod_export_settings().values = "3,1";
+    editor.start_lod_levels();
+    editor.finish_work();
+    ASSERT_NE(editor.lod_levels(), nullptr) << editor.lod_problem();
+    editor.preview_lod(0);
+    const render::Image level = render_editor_frame(editor, frame);
+    std::ofstream(folder / "lods_preview.png", std::ios::binary) << render::encode_png(level);
+    editor.preview_lod(std::nullopt);
+    const render::Image again = render_editor_frame(editor, frame);
+    std::ofstream(folder / "lods_mesh.png", std::ios::binary) << render::encode_png(again);
+    // The viewport, left of the panel and above the status bar.
+    const auto differing = [](const render::Image& a, const render::Image& b) {
+        std::size_t n = 0;
+        for (int y = 0; y < 560; ++y)
+            for (int x = 0; x < 600; ++x) n += a.pixel(x, y) != b.pixel(x, y);
+        return n;
+    };
+    EXPECT_GT(differing(mesh, level), 10000u) << "level 3's 12,288 triangles in its heat colour in place of the 192 of level 0";
+    EXPECT_EQ(differing(mesh, again), 0u);
+}
+
 }  // namespace
 }  // namespace app

@@ -38,6 +38,15 @@ std::optional<std::size_t> whole_number(const std::string& text, std::size_t max
 
 }  // namespace
 
+const char* lod_set_option(LodSetCriterion criterion) {
+    switch (criterion) {
+        case LodSetCriterion::Levels: return "--levels";
+        case LodSetCriterion::Budgets: return "--budgets";
+        case LodSetCriterion::Tolerances: return "--tolerances";
+    }
+    return "";
+}
+
 std::vector<ScriptLine> lod_set_requests(LodSetCriterion criterion, const std::string& list, const rgb::Mesh& mesh) {
     struct Entry {
         double fineness;  // larger is finer

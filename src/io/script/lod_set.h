@@ -17,6 +17,9 @@ namespace rgbio {
 
 enum class LodSetCriterion { Levels, Budgets, Tolerances };
 
+// The option that asks for it: "--levels", "--budgets" or "--tolerances".
+const char* lod_set_option(LodSetCriterion criterion);
+
 // The requests a comma-separated list asks for (`4,3,1`, `20000,5000`, `0.1%,1%`), finest first:
 // levels and budgets in decreasing order, tolerances by increasing world amount on `mesh` (a % of its
 // bounding-box diagonal, as world_amount). Throws std::invalid_argument naming the bad entry for an
