@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "frame_timing.h"
 #include "app/editor.h"
 #include "app/job_pacer.h"
 #include "app/loaded_document.h"
@@ -30,18 +31,14 @@
 
 namespace {
 
+using bench::percentile;
+
 using Clock = std::chrono::steady_clock;
 constexpr glm::ivec2 kViewport{1280, 800};
 // What JobPacer gives the work when drawing takes 4 ms (a GPU drawing these meshes).
 const auto kFrameSlice = std::chrono::microseconds(static_cast<long long>(1000.0 * app::JobPacer::slice_ms(4.0)));
 
 double ms_since(Clock::time_point start) { return std::chrono::duration<double, std::milli>(Clock::now() - start).count(); }
-
-double percentile(std::vector<double> v, double p) {
-    if (v.empty()) return 0.0;
-    std::sort(v.begin(), v.end());
-    return v[static_cast<std::size_t>(p * static_cast<double>(v.size() - 1))];
-}
 
 // The recorded path: left to right across the middle of the view, waving up and down.
 std::vector<glm::vec2> recorded_path() {

@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "frame_timing.h"
 #include "io/mesh_file.h"
 #include "io/script/detail_edit.h"
 #include "render/camera.h"
@@ -32,23 +33,12 @@
 
 namespace {
 
+using bench::percentile;
+using bench::thread_cpu_ms;
+
 using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
-
-// This thread's processor time: on a machine shared with other work a frame's wall time includes
-// the time the thread waited for a core.
-double thread_cpu_ms() {
-    timespec t{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return 1e3 * static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_nsec);
-}
-
-double percentile(std::vector<double> v, double p) {
-    if (v.empty()) return 0.0;
-    std::sort(v.begin(), v.end());
-    return v[static_cast<std::size_t>(p * static_cast<double>(v.size() - 1))];
-}
 
 struct Options {
     double pixels = 3.0;

@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "frame_timing.h"
 #include "app/editor.h"
 #include "app/job_pacer.h"
 #include "app/loaded_document.h"
@@ -27,26 +28,15 @@
 
 namespace {
 
+using bench::percentile;
+using bench::thread_cpu_ms;
+
 using Clock = std::chrono::steady_clock;
 constexpr glm::ivec2 kFrameViewport{1280, 800};
 // What JobPacer gives the work when drawing takes 4 ms.
 const auto kSlice = std::chrono::microseconds(static_cast<long long>(1000.0 * app::JobPacer::slice_ms(4.0)));
 
 double elapsed_ms(Clock::time_point start) { return std::chrono::duration<double, std::milli>(Clock::now() - start).count(); }
-
-// This thread's processor time: on a machine shared with other work the wall clock also counts the
-// time the thread waited for a core.
-double thread_cpu_ms() {
-    timespec t{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return 1e3 * static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_nsec);
-}
-
-double quantile(std::vector<double> v, double p) {
-    if (v.empty()) return 0.0;
-    std::sort(v.begin(), v.end());
-    return v[static_cast<std::size_t>(p * static_cast<double>(v.size() - 1))];
-}
 
 // The frames of one phase: engine time each (job and catch-up), and the catch-up's parts summed.
 struct Frames {
@@ -87,11 +77,11 @@ struct Frames {
 
 void print_frames(const char* what, const Frames& f) {
     std::printf("    %s: %zu frames, engine per frame p50 %6.2f ms  p95 %6.2f ms  max %6.2f ms  (%zu over the slice)\n", what,
-                f.engine_ms.size(), quantile(f.engine_ms, 0.5), quantile(f.engine_ms, 0.95), quantile(f.engine_ms, 1.0), f.over_slice);
+                f.engine_ms.size(), percentile(f.engine_ms, 0.5), percentile(f.engine_ms, 0.95), percentile(f.engine_ms, 1.0), f.over_slice);
     double cpu_total = 0.0;
     for (double ms : f.cpu_ms) cpu_total += ms;
     std::printf("      processor time per frame p50 %6.2f ms  p95 %6.2f ms  max %6.2f ms, in all %.0f ms | longest frame: input %.1f, job %.1f, catch-up %.1f ms\n",
-                quantile(f.cpu_ms, 0.5), quantile(f.cpu_ms, 0.95), quantile(f.cpu_ms, 1.0), cpu_total, f.worst.input_ms, f.worst.job_ms,
+                percentile(f.cpu_ms, 0.5), percentile(f.cpu_ms, 0.95), percentile(f.cpu_ms, 1.0), cpu_total, f.worst.input_ms, f.worst.job_ms,
                 f.worst.catch_up_ms);
     std::printf("      in all: job %.0f ms, input %.0f ms | catch-up geometry %.0f ms, index %.0f ms, %zu parts, %zu face slots, %zu moved vertices\n",
                 f.job_ms, f.other_input_ms, f.catch_up.geometry_ms, f.catch_up.index_ms, f.catch_up.parts, f.catch_up.faces, f.catch_up.vertices);
