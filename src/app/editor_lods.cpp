@@ -36,9 +36,10 @@ void Editor::start_lods(const std::optional<std::string>& output) {
     const rgb::Mesh& mesh = document_.mesh();
     rgbio::LodSetOptions options;
     // As `rgbsub lods` without options: limit positions (a cage's detail positions), the state in OBJ
-    // levels, what rides on the base mesh.
+    // levels, what rides on the base mesh; .msh levels in the encoding the Files panel asks for.
     rgbio::SaveOptions save;
     save.positions = rgbio::lod_set_positions(mesh);
+    save.msh = save_options_.msh;
     options.save = document_.with_attributes(save);
     // Every level's error is measured at the tolerance criterion's samples (command_lods.cpp).
     options.max_triangles = rgbio::editor_triangle_limit(rgbio::MemoryUse::Tolerance);

@@ -219,6 +219,11 @@ void files_panel(Editor& editor, PanelState& state) {
     ImGui::RadioButton("limit", &positions, 1);
     hover_tooltip("Which positions a save writes: as shown, or on the Loop limit surface");
     editor.save_options().positions = static_cast<rgbio::SavedPositions>(positions);
+    bool msh_binary = editor.save_options().msh == rgbio::MshEncoding::Binary;
+    ImGui::Checkbox("binary .msh", &msh_binary);
+    hover_tooltip("Save as and Export LODs to a .msh name write Gmsh 4.1 binary (raw doubles, smaller, no decimals to\n"
+                  "parse) instead of ASCII, as rgbsub's --msh-binary");
+    editor.save_options().msh = msh_binary ? rgbio::MshEncoding::Binary : rgbio::MshEncoding::Ascii;
     // The UV and recent rows are there (greyed) without UVs or recent files too, so that the rows
     // below do not move when a file is opened.
     const std::optional<rgb::UvInterpolation> uv = editor.document().uv_interpolation();

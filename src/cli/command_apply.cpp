@@ -37,13 +37,13 @@ rgbio::MemoryUse dearest_use(const std::vector<rgbio::ScriptLine>& script) {
 }  // namespace
 
 int run_apply(std::span<const std::string> args) {
-    const Arguments arguments(args, {"--timings", "--normals", "--plain", kStrictSwitch},
+    const Arguments arguments(args, {"--timings", "--normals", "--plain", kStrictSwitch, kMshBinarySwitch},
                               {"--output", "--positions", "--max-triangles", kSharpAngleOption, kBoundaryOption,
                                kUvInterpolationOption},
                               {{"-o", "--output"}});
     if (arguments.has("--help")) {
         std::cout << "usage: rgbsub apply IN.obj SCRIPT -o OUT [--timings] [--positions display|limit] [--normals]\n"
-                     "                    [--max-triangles N] [--plain] [--strict] [--sharp-angle DEG]\n"
+                     "                    [--max-triangles N] [--plain] [--strict] [--msh-binary] [--sharp-angle DEG]\n"
                      "                    [--boundary edge-only|edge-and-corner] [--uv-interpolation OPTION]\n"
                      "Runs SCRIPT, one edit per line, then saves the adaptive mesh. Coordinates are those of IN.obj's\n"
                      "base mesh.\n"
@@ -64,7 +64,7 @@ int run_apply(std::span<const std::string> args) {
                      "Blank lines and lines starting with # are skipped. --timings prints the engine time per line,\n"
                      "and for the dabs their count and the engine time per dab (p50, p95).\n"
                      "--plain writes an OBJ without the adaptive state (#rgb lines), for tools that dislike them.\n"
-                  << kOutputHelp << kStrictHelp << kSharpHelp << kUvHelp;
+                  << kOutputHelp << kMshBinaryHelp << kStrictHelp << kSharpHelp << kUvHelp;
         return exit_ok;
     }
     if (arguments.positional().size() != 2) throw UsageError("expects IN.obj and SCRIPT");
@@ -74,6 +74,7 @@ int run_apply(std::span<const std::string> args) {
     save.positions = parse_positions(arguments.value("--positions").value_or("display"));
     save.normals = arguments.has("--normals");
     save.state = !arguments.has("--plain");
+    save.msh = msh_encoding(arguments, *output);
     const std::string& input = arguments.positional()[0];
     const std::string& script_file = arguments.positional()[1];
 

@@ -21,7 +21,7 @@ namespace {
 
 constexpr std::string_view kLodsHelp =
     "usage: rgbsub lods IN -o OUT (--budgets T1,T2,... | --tolerances E1,E2,... | --levels L1,L2,...)\n"
-    "                   [--positions limit|display] [--max-triangles N] [--plain] [--strict]\n"
+    "                   [--positions limit|display] [--max-triangles N] [--plain] [--strict] [--msh-binary]\n"
     "                   [--sharp-angle DEG] [--boundary edge-only|edge-and-corner] [--uv-interpolation OPTION]\n"
     "Writes a set of levels of detail of IN, LOD0 (the finest) to LODn, each the canonical mesh of its\n"
     "request, as refine and apply make it:\n"
@@ -42,12 +42,12 @@ constexpr std::string_view kLodsHelp =
 }  // namespace
 
 int run_lods(std::span<const std::string> args) {
-    const Arguments arguments(args, {"--plain", kStrictSwitch},
+    const Arguments arguments(args, {"--plain", kStrictSwitch, kMshBinarySwitch},
                               {"--output", "--budgets", "--tolerances", "--levels", "--positions", "--max-triangles",
                                kSharpAngleOption, kBoundaryOption, kUvInterpolationOption},
                               {{"-o", "--output"}});
     if (arguments.has("--help")) {
-        std::cout << kLodsHelp << kStrictHelp << kSharpHelp << kUvHelp;
+        std::cout << kLodsHelp << kMshBinaryHelp << kStrictHelp << kSharpHelp << kUvHelp;
         return exit_ok;
     }
     if (arguments.positional().size() != 1) throw UsageError("expects exactly one IN");
@@ -67,6 +67,7 @@ int run_lods(std::span<const std::string> args) {
     if (!criterion) throw UsageError("needs --levels L1,L2,..., --budgets T1,T2,... or --tolerances E1,E2,...");
     const std::optional<std::string> positions = arguments.value("--positions");
     if (positions) parse_positions(*positions);  // a bad value is a usage error before the load
+    const rgbio::MshEncoding msh = msh_encoding(arguments, *output);
     // Every level's error is measured at the tolerance criterion's samples, whatever the criterion, so
     // the default bounds memory as a tolerance request's (triangle_limit.h).
     const auto limit = static_cast<std::size_t>(arguments.integer(
@@ -87,6 +88,7 @@ int run_lods(std::span<const std::string> args) {
     rgbio::SaveOptions save;
     save.positions = positions ? parse_positions(*positions) : rgbio::lod_set_positions(asset.mesh);
     save.state = !arguments.has("--plain");
+    save.msh = msh;
     save.attributes = asset.attributes;
     save.uvs = input_uv_layout(arguments, asset);
     print_warnings("lods", *output, rgbio::dropped_skin(save.attributes.get(), *output));

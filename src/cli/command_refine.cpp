@@ -51,14 +51,14 @@ std::optional<rgbio::DetailEdit> detail_edit(const Arguments& arguments) {
 }  // namespace
 
 int run_refine(std::span<const std::string> args) {
-    const Arguments arguments(args, {"--normals", "--plain", kStrictSwitch},
+    const Arguments arguments(args, {"--normals", "--plain", kStrictSwitch, kMshBinarySwitch},
                               {"--output", "--level", "--max-edge", "--tolerance", "--sphere", "--positions", "--max-triangles",
                                kSharpAngleOption, kBoundaryOption, kUvInterpolationOption},
                               {{"-o", "--output"}});
     if (arguments.has("--help")) {
         std::cout << "usage: rgbsub refine IN.obj -o OUT (--level N | --max-edge L | --tolerance E) [--sphere X,Y,Z,R]\n"
                      "                     [--positions display|limit] [--normals] [--max-triangles N] [--plain] [--strict]\n"
-                     "                     [--sharp-angle DEG] [--boundary edge-only|edge-and-corner] [--uv-interpolation OPTION]\n"
+                     "                     [--msh-binary] [--sharp-angle DEG] [--boundary edge-only|edge-and-corner] [--uv-interpolation OPTION]\n"
                      "Sets the level of detail inside the sphere (everywhere without --sphere; its coordinates are\n"
                      "those of IN.obj's base mesh), by one of:\n"
                      "  --level N       every face meeting the sphere gets level N (0.." << rgb::kMaxLevel << ")\n"
@@ -76,7 +76,7 @@ int run_refine(std::span<const std::string> args) {
                      "--max-edge and --tolerance, found) to exceed --max-triangles (default: from this machine's\n"
                      "memory) is refused and nothing is saved.\n"
                      "--plain writes an OBJ without the adaptive state (#rgb lines), for tools that dislike them.\n"
-                  << kOutputHelp << kStrictHelp << kSharpHelp << kUvHelp;
+                  << kOutputHelp << kMshBinaryHelp << kStrictHelp << kSharpHelp << kUvHelp;
         return exit_ok;
     }
     if (arguments.positional().size() != 1) throw UsageError("expects exactly one IN.obj");
@@ -97,6 +97,7 @@ int run_refine(std::span<const std::string> args) {
     save.positions = parse_positions(arguments.value("--positions").value_or("display"));
     save.normals = arguments.has("--normals");
     save.state = !arguments.has("--plain");
+    save.msh = msh_encoding(arguments, *output);
     const std::string& input = arguments.positional()[0];
 
     check_output_first(*output);

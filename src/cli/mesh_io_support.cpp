@@ -74,6 +74,13 @@ void save_output(const char* command, const rgb::Mesh& mesh, const std::string& 
     rgbio::save_mesh_file(mesh, file, save);
 }
 
+rgbio::MshEncoding msh_encoding(const Arguments& arguments, const std::string& output) {
+    if (!arguments.has(kMshBinarySwitch)) return rgbio::MshEncoding::Ascii;
+    if (rgbio::output_format(output) != rgbio::OutputFormat::Msh)
+        throw UsageError(std::string(kMshBinarySwitch) + " writes Gmsh files: it needs -o OUT.msh, not " + output);
+    return rgbio::MshEncoding::Binary;
+}
+
 rgbio::ReadOptions read_options(const Arguments& arguments) { return {.strict = arguments.has(kStrictSwitch)}; }
 
 rgb::Mesh with_sharp_options(const Arguments& arguments, rgb::Mesh mesh) {

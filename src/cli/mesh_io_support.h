@@ -83,6 +83,14 @@ inline constexpr std::string_view kOutputHelp =
     "                      adaptive state\n"
     "  --normals           OBJ: vn lines with the exact normals of the Loop limit surface\n";
 
+// The switch of the commands that write .msh files (refine, apply, lods), its line for --help, and the
+// encoding it asks for: binary with it, which wants a .msh output (UsageError with any other, where it
+// would do nothing), else ASCII.
+inline constexpr std::string_view kMshBinarySwitch = "--msh-binary";
+inline constexpr std::string_view kMshBinaryHelp =
+    "  --msh-binary        OUT.msh in Gmsh 4.1 binary (raw doubles, smaller, no decimals to parse) instead of ASCII\n";
+rgbio::MshEncoding msh_encoding(const Arguments& arguments, const std::string& output);
+
 // "display" or "limit"; throws UsageError otherwise.
 rgbio::SavedPositions parse_positions(const std::string& value);
 

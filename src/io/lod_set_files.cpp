@@ -52,7 +52,7 @@ LodSet make_levels(const rgb::Mesh& input, const std::vector<ScriptLine>& reques
         if (!writing) continue;
         const std::string file = lod_file_name(*options.output, i);
         if (format == OutputFormat::Obj) save_mesh(level.mesh, file, options.save);
-        else save_export_mesh(flat, file, format);
+        else save_export_mesh(flat, file, format, options.save.msh);
         written.push_back(file);
     }
     for (std::size_t i = 1; i < set.levels.size(); ++i)

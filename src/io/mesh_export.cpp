@@ -40,7 +40,7 @@ void save_mesh_file(const rgb::Mesh& mesh, const std::string& path, const SaveOp
     if (format == OutputFormat::Gltf)
         export_gltf(mesh, path, options);
     else
-        save_export_mesh(export_mesh(mesh, options), path, format);
+        save_export_mesh(export_mesh(mesh, options), path, format, options.msh);
     options.progress.done();  // the other formats are written in one piece: no progress before the end
 }
 

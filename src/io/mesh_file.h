@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "io/base_attributes.h"
+#include "io/formats/mesh_format.h"
 #include "io/obj/loaded_mesh.h"
 #include "rgb/mesh/mesh.h"
 #include "rgb/support/progress.h"
@@ -33,6 +34,7 @@ struct SaveOptions {
     SavedPositions positions = SavedPositions::Displayed;
     bool normals = false;      // vn: exact normals of the Loop limit surface (rgb/values/limit_normals.h)
     bool state = true;         // the #rgb lines that make the file resumable
+    MshEncoding msh = MshEncoding::Ascii;  // a .msh output (io/formats/format_writers.h): ASCII or binary
     // Texture coordinates (io/base_uvs.h): vt lines with every corner's exact UV (at its vertex's
     // display level, or the limit beside limit positions) and f v/vt corners; the state keeps the
     // base channel. Must have been built over the saved mesh's base mesh. Null: none.

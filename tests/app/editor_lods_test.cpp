@@ -1,5 +1,6 @@
 // Export LODs in the editor: the levels previewed are those `rgbsub lods` writes, previewing leaves
-// the document alone, the export writes the CLI's files, and bad values are refused in the panel.
+// the document alone, the export writes the CLI's files (binary .msh ones when the Files panel asks for
+// them, as `--msh-binary`, and Save as too), and bad values are refused in the panel.
 #include <fstream>
 #include <iterator>
 #include <string>
@@ -34,9 +35,12 @@ protected:
         ASSERT_TRUE(editor.open(input)) << editor.message();
     }
 
-    // `rgbsub lods` of the input with these arguments, writing to `output`.
-    void run_cli(const std::string& option, const std::string& values, const std::filesystem::path& output) {
-        const cli_test::Outcome run = cli_test::run_rgbsub({"lods", input, "-o", output.string(), option, values});
+    // `rgbsub lods` of the input with these arguments (and `extra`, if not empty), writing to `output`.
+    void run_cli(const std::string& option, const std::string& values, const std::filesystem::path& output,
+                 const std::string& extra = "") {
+        std::vector<std::string> args = {"lods", input, "-o", output.string(), option, values};
+        if (!extra.empty()) args.push_back(extra);
+        const cli_test::Outcome run = cli_test::run_rgbsub(args);
         ASSERT_EQ(run.exit_code, 0) << run.output;
     }
 
@@ -90,8 +94,10 @@ TEST_F(EditorLods, EachPreviewShowsTheLevelTheCliWritesAndLeavesTheDocumentAlone
 TEST_F(EditorLods, TheExportWritesTheFilesOfTheCli) {
     std::filesystem::create_directory(folder / "cli");
     std::filesystem::create_directory(folder / "editor");
-    for (const std::string name : {"lv.obj", "lv.glb"}) {
-        run_cli("--levels", "2,0,1", folder / "cli" / name);
+    for (const std::string name : {"lv.obj", "lv.glb", "lv.msh"}) {
+        const bool msh = name == "lv.msh";
+        run_cli("--levels", "2,0,1", folder / "cli" / name, msh ? "--msh-binary" : "");
+        editor.save_options().msh = msh ? rgbio::MshEncoding::Binary : rgbio::MshEncoding::Ascii;
         editor.lod_export_settings().criterion = rgbio::LodSetCriterion::Levels;
         editor.lod_export_settings().values = "2,0,1";
         editor.start_lod_export((folder / "editor" / name).string());
@@ -103,9 +109,19 @@ TEST_F(EditorLods, TheExportWritesTheFilesOfTheCli) {
             const std::string file = one_file ? name : rgbio::lod_file_name(name, i);
             const std::string expected = lod_file_bytes(folder / "cli" / file);
             ASSERT_FALSE(expected.empty()) << file;
+            if (msh) {
+                EXPECT_EQ(expected.substr(0, 20), "$MeshFormat\n4.1 1 8\n") << file;
+            }
             EXPECT_EQ(lod_file_bytes(folder / "editor" / file), expected) << file;
         }
     }
+    // Save as writes the same encoding: the mesh (at level 0) at limit positions is LOD2 of the set above
+    // (levels 2, 1, 0: finest first).
+    editor.save_options().positions = rgbio::SavedPositions::Limit;
+    editor.request_save_as((folder / "editor" / "saved.msh").string());
+    editor.finish_work();
+    ASSERT_FALSE(editor.message_is_error()) << editor.message();
+    EXPECT_EQ(lod_file_bytes(folder / "editor" / "saved.msh"), lod_file_bytes(folder / "cli" / "lv_LOD2.msh"));
 }
 
 TEST_F(EditorLods, BadValuesAreRefusedInThePanel) {

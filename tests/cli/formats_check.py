@@ -8,6 +8,8 @@ for OBJ.
 The input is an octahedron with vertex colours, refined to level 3 in a ball around one corner, so that
 faces of levels 0 to 3 and of all three colours meet. Against the plain OBJ refine writes for the same
 request (its v and f lines, read with Python's float(), which rounds correctly):
+MSH both as ASCII and, with --msh-binary, as binary (file-type 1, data-size 8, the int 1 after the
+format line), each checked as below:
 - PLY, VTU, MSH: every position bit for bit (they store doubles); STL: as 32-bit floats (it stores
   floats), triangle by triangle;
 - the triangles, in the OBJ's order, as index triples (PLY, VTU, MSH) or position triples (STL);
@@ -17,7 +19,9 @@ request (its v and f lines, read with Python's float(), which rounds correctly):
 `rgbsub lods`: levels and budgets as one OBJ per level, nested by position (each coarser level's v
 lines among the finer's); a .glb set whose node 0 names the other levels through MSFT_lod, with
 MSFT_screencoverage not increasing and ending at 0, each level its own mesh with indexed primitives
-and the positions of the OBJ level as floats.
+and the positions of the OBJ level as floats; --msh-binary levels as binary MSH files, at the OBJ
+levels' positions bit for bit and with their triangles; --msh-binary with an output other than .msh is
+a usage error (exit 1).
 
 usage: formats_check.py PATH/TO/rgbsub
 """
@@ -157,10 +161,15 @@ def check_formats(rgbsub, path):
     positions, colours, triangles = read_obj(path("ref.obj"))
     colour_counts, level_counts = info_counts(rgbsub, path("state.obj"))
     assert len(level_counts) == 4 and len(colour_counts) == 3, (level_counts, colour_counts)
-    for ext in ("ply", "PLY", "vtu", "msh", "stl"):
-        out = path("out." + ext)
-        note = run(rgbsub, "refine", path("in.obj"), "--level", "3", "--sphere", "0.8,0.2,0.2,0.3", "-o", out).stderr
+    for ext, extra in (("ply", []), ("PLY", []), ("vtu", []), ("msh", []), ("msh", ["--msh-binary"]), ("stl", [])):
+        out = path("out%s.%s" % ("_binary" if extra else "", ext))
+        note = run(rgbsub, "refine", path("in.obj"), "--level", "3", "--sphere", "0.8,0.2,0.2,0.3", "-o", out, *extra).stderr
         assert "note: the adaptive state is kept only in OBJ files" in note, note
+        if ext == "msh":
+            with open(out, "rb") as f:
+                head = f.read(40)
+            binary = b"$MeshFormat\n4.1 1 8\n" + (1).to_bytes(4, sys.byteorder) + b"\n$EndMeshFormat\n"
+            assert head.startswith(binary if extra else b"$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"), head
         mesh = PlyMesh(out) if ext.lower() == "ply" else meshio.read(out)
         if ext.lower() == "stl":
             # Floats, and meshio merges the facets' corners: compare triangle by triangle.
@@ -174,7 +183,7 @@ def check_formats(rgbsub, path):
             wanted = np.rint(np.clip(colours, 0, 1) * 255).astype(int).tolist()
             got = np.stack([mesh.point_data[c] for c in ("red", "green", "blue")], axis=1).astype(int).tolist()
             expect("ply vertex colours", got, wanted)
-        print(ext, "ok")
+        print(ext, *extra, "ok")
 
 
 def obj_vertex_set(path):
@@ -216,6 +225,20 @@ def check_lods(rgbsub, path):
         indices = np.array(read_accessor(doc, buffer, primitive["indices"])).reshape(-1, 3)
         expect("glb LOD%d triangles" % i, got[indices].tolist(), positions[triangles].astype(np.float32).tolist())
     print("lods glb ok")
+    # Binary MSH levels against the OBJ levels of the same request (written just above).
+    run(rgbsub, "lods", path("in.obj"), "-o", path("lv.msh"), "--levels", "2,0,1", "--msh-binary")
+    for i in range(3):
+        positions, _, triangles = read_obj(path("lv_LOD%d.obj" % i))
+        with open(path("lv_LOD%d.msh" % i), "rb") as f:
+            assert f.read(20) == b"$MeshFormat\n4.1 1 8\n", i
+        mesh = meshio.read(path("lv_LOD%d.msh" % i))
+        expect("msh LOD%d positions bit for bit" % i, np.asarray(mesh.points).tolist(), positions.tolist())
+        expect("msh LOD%d triangles" % i, triangles_of(mesh).tolist(), triangles.tolist())
+    refused = subprocess.run([rgbsub, "lods", path("in.obj"), "-o", path("no.obj"), "--levels", "1", "--msh-binary"],
+                             capture_output=True, text=True)
+    assert refused.returncode == 1 and "--msh-binary" in refused.stderr and "no.obj" in refused.stderr, refused
+    assert not os.path.exists(path("no_LOD0.obj"))
+    print("lods msh binary ok")
 
 
 def main():

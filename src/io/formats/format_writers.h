@@ -11,8 +11,9 @@
 //   VTU  VTK XML UnstructuredGrid (ParaView), ASCII: points as Float64 in shortest round-trip decimals
 //        (bit for bit), triangles (VTK type 5), cell data `level`, `rgb_colour`, `quality` (aspect
 //        ratio) and `min_angle` (degrees), point data `colour` when the mesh has vertex colours.
-//   MSH  Gmsh 4.1 ASCII: one surface entity, nodes in shortest round-trip decimals (bit for bit),
-//        3-node triangles (type 2), and $ElementData `level`, `rgb_colour`, `quality`, `min_angle`.
+//   MSH  Gmsh 4.1, ASCII or binary (MshEncoding): one surface entity, nodes as shortest round-trip
+//        decimals or as doubles (bit for bit either way), 3-node triangles (type 2), and $ElementData
+//        `level`, `rgb_colour`, `quality`, `min_angle` (in binary files all four as doubles).
 #include <string>
 
 #include "io/formats/export_mesh.h"
@@ -23,9 +24,10 @@ namespace rgbio {
 void save_ply(const ExportMesh& mesh, const std::string& path);
 void save_stl(const ExportMesh& mesh, const std::string& path);
 void save_vtu(const ExportMesh& mesh, const std::string& path);
-void save_msh(const ExportMesh& mesh, const std::string& path);
+void save_msh(const ExportMesh& mesh, const std::string& path, MshEncoding encoding = MshEncoding::Ascii);
 
-// The writer of `format` (Ply, Stl, Vtu or Msh; OBJ and glTF have writers of their own).
-void save_export_mesh(const ExportMesh& mesh, const std::string& path, OutputFormat format);
+// The writer of `format` (Ply, Stl, Vtu or Msh, the last in `msh`'s encoding; OBJ and glTF have
+// writers of their own).
+void save_export_mesh(const ExportMesh& mesh, const std::string& path, OutputFormat format, MshEncoding msh = MshEncoding::Ascii);
 
 }  // namespace rgbio

@@ -35,6 +35,10 @@ enum class OutputFormat {
 
 OutputFormat output_format(const std::string& path);
 
+// How a .msh output is written: Gmsh 4.1 ASCII (file-type 0, what Gmsh itself writes unless asked
+// for binary) or binary (file-type 1: about half the size, and read without parsing decimals).
+enum class MshEncoding { Ascii, Binary };
+
 // "OBJ", "glTF", "PLY", "STL", "VTK XML (.vtu)", "Gmsh (.msh)", for messages.
 std::string_view format_name(OutputFormat format);
 

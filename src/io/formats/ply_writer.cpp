@@ -31,12 +31,12 @@ void save_ply(const ExportMesh& mesh, const std::string& path) {
     file.commit();
 }
 
-void save_export_mesh(const ExportMesh& mesh, const std::string& path, OutputFormat format) {
+void save_export_mesh(const ExportMesh& mesh, const std::string& path, OutputFormat format, MshEncoding msh) {
     switch (format) {
         case OutputFormat::Ply: return save_ply(mesh, path);
         case OutputFormat::Stl: return save_stl(mesh, path);
         case OutputFormat::Vtu: return save_vtu(mesh, path);
-        case OutputFormat::Msh: return save_msh(mesh, path);
+        case OutputFormat::Msh: return save_msh(mesh, path, msh);
         case OutputFormat::Obj:
         case OutputFormat::Gltf: break;
     }
