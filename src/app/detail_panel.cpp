@@ -7,6 +7,7 @@
 
 #include "app/editor.h"
 #include "app/hover_tooltip.h"
+#include "app/radio_row.h"
 
 namespace app {
 namespace {
@@ -25,15 +26,13 @@ double as_shown(float value) {
 
 void detail_panel(Editor& editor) {
     DetailSettings& detail = editor.detail_settings();
-    int criterion = static_cast<int>(detail.criterion);
-    ImGui::RadioButton("max edge", &criterion, 0);
-    hover_tooltip("No green edge longer than the amount (as `rgbsub refine --max-edge`; transition diagonals can be),\n"
-            "as coarse as that allows");
-    ImGui::SameLine();
-    ImGui::RadioButton("tolerance", &criterion, 1);
-    hover_tooltip("The surface shown within the amount of the Loop limit surface at its samples\n"
-            "(as `rgbsub refine --tolerance`), as coarse as the criterion allows");
-    detail.criterion = static_cast<rgbio::DetailCriterion>(criterion);
+    detail.criterion = radio_row(detail.criterion,
+                                 {{"max edge",
+                                   "No green edge longer than the amount (as `rgbsub refine --max-edge`; transition diagonals can be),\n"
+                                   "as coarse as that allows"},
+                                  {"tolerance",
+                                   "The surface shown within the amount of the Loop limit surface at its samples\n"
+                                   "(as `rgbsub refine --tolerance`), as coarse as the criterion allows"}});
     float amount = static_cast<float>(detail.amount.value);
     // Taken only when changed: the float would otherwise replace the exact default every frame.
     if (ImGui::DragFloat("amount", &amount, amount * 0.01f, 1e-6f, 1e6f, "%.4g", ImGuiSliderFlags_Logarithmic) && amount > 0.0f)

@@ -14,6 +14,7 @@
 #include "app/editor.h"
 #include "app/editor_dialogs.h"
 #include "app/hover_tooltip.h"
+#include "app/radio_row.h"
 #include "app/lod_panel.h"
 #include "io/script/lod_script.h"
 #include "render/colour_map.h"
@@ -62,51 +63,30 @@ const char* mode_name(BrushMode mode) {
 
 void brush_panel(Editor& editor) {
     BrushSettings& brush = editor.brush();
-    int mode = static_cast<int>(brush.mode);
-    ImGui::RadioButton("refine", &mode, 0);
-    hover_tooltip("Adds detail up to the target level (key 1)");
-    ImGui::SameLine();
-    ImGui::RadioButton("coarsen", &mode, 1);
-    hover_tooltip("Removes detail down to the target level (key 2)");
-    ImGui::SameLine();
-    ImGui::RadioButton("set level", &mode, 2);
-    hover_tooltip("Makes the level exactly the target (key 3)");
-    brush.mode = static_cast<BrushMode>(mode);
-    int target = static_cast<int>(brush.target);
-    ImGui::RadioButton("level", &target, 0);
-    hover_tooltip("Dabs aim for a subdivision level");
-    ImGui::SameLine();
-    ImGui::RadioButton("detail size", &target, 1);
-    hover_tooltip("Dabs aim for an edge length: no green edge longer (transition diagonals can be),\n"
-            "as coarse as that allows (no falloff)");
-    ImGui::SameLine();
-    ImGui::RadioButton("tolerance", &target, 2);
-    hover_tooltip("Dabs aim for accuracy: the surface shown within the amount of the Loop limit surface\n"
-            "at its samples, as coarse as the criterion allows (no falloff)");
-    brush.target = static_cast<BrushSettings::Target>(target);
+    brush.mode = radio_row(brush.mode, {{"refine", "Adds detail up to the target level (key 1)"},
+                                        {"coarsen", "Removes detail down to the target level (key 2)"},
+                                        {"set level", "Makes the level exactly the target (key 3)"}});
+    brush.target = radio_row(brush.target, {{"level", "Dabs aim for a subdivision level"},
+                                            {"detail size",
+                                             "Dabs aim for an edge length: no green edge longer (transition diagonals can be),\n"
+                                             "as coarse as that allows (no falloff)"},
+                                            {"tolerance",
+                                             "Dabs aim for accuracy: the surface shown within the amount of the Loop limit surface\n"
+                                             "at its samples, as coarse as the criterion allows (no falloff)"}});
     if (brush.target == BrushSettings::Target::Level) {
         ImGui::SliderInt("target level", &brush.target_level, 0, kMaxBrushLevel);
         hover_tooltip("The level painting aims for (keys - and =, or Ctrl+F and drag)");
     } else {
-        int unit = static_cast<int>(brush.detail_unit);
-        ImGui::RadioButton("px##detail", &unit, 0);
-        hover_tooltip("Relative detail: the amount in screen pixels where the dab lands (zoom in for finer)");
-        ImGui::SameLine();
-        ImGui::RadioButton("world##detail", &unit, 1);
-        hover_tooltip("Constant detail: the amount in the mesh's units");
-        brush.detail_unit = static_cast<RadiusUnit>(unit);
+        brush.detail_unit = radio_row(brush.detail_unit,
+                                      {{"px##detail", "Relative detail: the amount in screen pixels where the dab lands (zoom in for finer)"},
+                                       {"world##detail", "Constant detail: the amount in the mesh's units"}});
         if (brush.detail_unit == RadiusUnit::ScreenPixels)
             ImGui::SliderFloat("amount (px)", &brush.detail_px, 0.1f, 100.0f, "%.3g px", ImGuiSliderFlags_Logarithmic);
         else
             ImGui::DragFloat("amount (world)", &brush.detail_world, brush.detail_world * 0.01f, 1e-6f, 1e6f, "%.4g units");
     }
-    int unit = static_cast<int>(brush.unit);
-    ImGui::RadioButton("screen", &unit, 0);
-    hover_tooltip("Radius in screen pixels: the brush looks the same size at any zoom");
-    ImGui::SameLine();
-    ImGui::RadioButton("world", &unit, 1);
-    hover_tooltip("Radius in the mesh's units: the brush covers the same surface at any zoom");
-    brush.unit = static_cast<RadiusUnit>(unit);
+    brush.unit = radio_row(brush.unit, {{"screen", "Radius in screen pixels: the brush looks the same size at any zoom"},
+                                        {"world", "Radius in the mesh's units: the brush covers the same surface at any zoom"}});
     if (brush.unit == RadiusUnit::ScreenPixels)
         ImGui::SliderFloat("radius (px)", &brush.radius_px, 2.0f, 400.0f, "%.0f px");
     else

@@ -12,6 +12,7 @@
 #include "app/editor_dialogs.h"
 #include "app/editor_panels.h"
 #include "app/hover_tooltip.h"
+#include "app/radio_row.h"
 
 namespace app {
 namespace {
@@ -62,16 +63,11 @@ void levels_table(Editor& editor, const LodLevels& levels) {
 
 void lod_panel(Editor& editor, PanelState& state) {
     LodExportSettings& settings = editor.lod_export_settings();
-    int criterion = static_cast<int>(settings.criterion);
-    ImGui::RadioButton("levels##lods", &criterion, 0);
-    hover_tooltip("Each LOD every face at a subdivision level (as rgbsub lods --levels)");
-    ImGui::SameLine();
-    ImGui::RadioButton("budgets##lods", &criterion, 1);
-    hover_tooltip("Each LOD at most so many triangles (as rgbsub lods --budgets)");
-    ImGui::SameLine();
-    ImGui::RadioButton("tolerances##lods", &criterion, 2);
-    hover_tooltip("Each LOD within a distance (or % of the size) of the limit surface (as rgbsub lods --tolerances)");
-    settings.criterion = static_cast<rgbio::LodSetCriterion>(criterion);
+    settings.criterion = radio_row(
+        settings.criterion,
+        {{"levels##lods", "Each LOD every face at a subdivision level (as rgbsub lods --levels)"},
+         {"budgets##lods", "Each LOD at most so many triangles (as rgbsub lods --budgets)"},
+         {"tolerances##lods", "Each LOD within a distance (or % of the size) of the limit surface (as rgbsub lods --tolerances)"}});
     text_field("values##lods", state.lod_values, settings.values);
     hover_tooltip("Comma-separated, in any order: 4,3,1 (levels), 20000,5000 (budgets), 0.1%,1% (tolerances)");
     const bool working = editor.lod_task() != nullptr;
