@@ -29,8 +29,8 @@ public:
     // are the evaluator's through it).
     FaceGridLimits& grid(std::uint32_t face, int level);
 
-    // Enough grids for the faces an edge's neighbourhood and its band's Morton run meet (measured:
-    // docs/benchmarks.md "Detail criteria").
+    // A few more than the faces an edge's two triangles and its neighbours in a band's Morton run meet
+    // (not tuned: docs/benchmarks.md "Detail criteria").
     static constexpr std::size_t kGrids = 8;
     // (2^8 + 1)^2 slots, 3.7 MB a grid, 30 MB for kGrids (at FaceGridLimits::kMaxLevel, 15 MB a grid):
     // the samples of triangles of level 6 and coarser, where nearly all of a tolerance's work is.
