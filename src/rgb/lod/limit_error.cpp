@@ -11,7 +11,6 @@
 #include "rgb/mesh/base_mesh.h"
 #include "rgb/mesh/detail_positions.h"
 #include "rgb/values/hierarchy_triangle.h"
-#include "rgb/values/surface_error.h"
 
 namespace rgb {
 
@@ -90,22 +89,22 @@ struct LimitErrorCriterion::Corner {
 };
 
 LimitErrorCriterion::LimitErrorCriterion(std::shared_ptr<const BaseMesh> base, double tolerance, Samples samples)
-    : base_(std::move(base)), evaluator_(*base_), tolerance_(tolerance), samples_(samples) {
+    : base_(std::move(base)), evaluator_(*base_), grids_(*base_, evaluator_), tolerance_(tolerance), samples_(samples) {
     if (!(tolerance > 0.0) || !std::isfinite(tolerance)) throw std::invalid_argument("the tolerance must be positive and finite");
 }
 
-LimitErrorCriterion::Corner LimitErrorCriterion::corner(const SurfacePoint& p, int level) {
+LimitErrorCriterion::Corner LimitErrorCriterion::corner(const SurfacePoint& p, int level, FaceGridLimits* grid) {
     Corner c;
     // A cage with detail shows a vertex at its detail point whatever its display level.
     if (const DetailPositions* detail = base_->detail()) {
         c.fine = c.coarse = detail->position(*base_, p);
         return c;
     }
-    const glm::dvec3 limit = evaluator_.limit_position(p);
-    c.fine = evaluator_.control_point(p, level);
+    const glm::dvec3 limit = grid->limit_position(p);
+    c.fine = grid->control_point(p, level);
     c.coarse = c.fine;
     for (int k = p.level; k < level; ++k) {
-        const glm::dvec3 at = evaluator_.control_point(p, k);
+        const glm::dvec3 at = grid->control_point(p, k);
         if (glm::distance(at, limit) <= tolerance_) {
             c.coarse = at;
             break;
@@ -125,19 +124,26 @@ const std::array<double, 3>& LimitErrorCriterion::triangle_values(const Hierarch
     for (std::size_t i = 0; i < 3; ++i) key.sum[i] = t.corners[0][i] + t.corners[1][i] + t.corners[2][i];
     if (const auto it = triangles_.find(key); it != triangles_.end()) return it->second;
 
+    // Without detail the limit points come from a grid of t's base face (the evaluator's bits, as
+    // target_position gives them).
+    const DetailPositions* detail = base_->detail();
+    FaceGridLimits* grid = detail ? nullptr : &grids_.grid(t.face, t.level + 2);
     std::array<Corner, 3> corners;
     std::array<glm::dvec3, 3> midpoints;  // of edge i
     for (int c = 0; c < 3; ++c) {
-        corners[static_cast<std::size_t>(c)] = corner(t.corner(c), t.level);
+        corners[static_cast<std::size_t>(c)] = corner(t.corner(c), t.level, grid);
         SampleWeights w{};
         w[static_cast<std::size_t>(c)] = 2;
         w[static_cast<std::size_t>((c + 1) % 3)] = 2;
         const SurfacePoint midpoint = t.sample(w);
         midpoints[static_cast<std::size_t>(c)] =
-            base_->detail() ? base_->detail()->position(*base_, midpoint) : evaluator_.insertion_position(midpoint);
+            detail ? detail->position(*base_, midpoint) : grid->control_point(midpoint, midpoint.level);
     }
     std::array<glm::dvec3, kSamplesPerTriangle> limits;
-    for (std::size_t s = 0; s < kSamplesPerTriangle; ++s) limits[s] = target_position(*base_, evaluator_, t.sample(sample_weights()[s]));
+    for (std::size_t s = 0; s < kSamplesPerTriangle; ++s) {
+        const SurfacePoint sample = t.sample(sample_weights()[s]);
+        limits[s] = detail ? detail->position(*base_, sample) : grid->limit_position(sample);
+    }
 
     std::array<double, 3> values{};
     for (std::size_t e = 0; e < 3; ++e) {

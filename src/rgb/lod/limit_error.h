@@ -25,6 +25,7 @@
 
 #include "rgb/lod/lod_criteria.h"
 #include "rgb/mesh/surface_point.h"
+#include "rgb/values/face_grid_cache.h"
 #include "rgb/values/hierarchy_evaluator.h"
 #include "rgb/values/hierarchy_triangle.h"
 
@@ -43,7 +44,8 @@ public:
     // Throws std::invalid_argument for a tolerance that is not positive and finite.
     LimitErrorCriterion(std::shared_ptr<const BaseMesh> base, double tolerance, Samples samples = Samples::AnyNeighbourhood);
 
-    // The value of the edge (a, b) of Σl, l = the finer of their levels.
+    // The value of the edge (a, b) of Σl, l = the finer of their levels. Not for several threads at
+    // once (the criterion fills its caches as it goes; the LOD driver and requests ask one edge at a time).
     double value(const SurfacePoint& a, const SurfacePoint& b);
     double tolerance() const { return tolerance_; }
 
@@ -59,13 +61,17 @@ private:
     struct TriangleKeyHash {
         std::size_t operator()(const TriangleKey& k) const noexcept;
     };
-    Corner corner(const SurfacePoint& p, int level);
+    // `grid` (t's base face's, null with detail) gives the limit points.
+    Corner corner(const SurfacePoint& p, int level, FaceGridLimits* grid);
     // The values of the three edges of t (edge i: corner i to corner i+1), t in its canonical
     // rotation (smallest corner first); each triangle is evaluated once for all its edges.
     const std::array<double, 3>& triangle_values(const HierarchyTriangle& t);
 
     std::shared_ptr<const BaseMesh> base_;
     HierarchyEvaluator evaluator_;
+    // The limit points a triangle's samples, corners and midpoints need, read from grids of its base
+    // face (the evaluator's bits, at a few array reads each instead of its address arithmetic).
+    FaceGridCache grids_;
     double tolerance_;
     Samples samples_;
     std::unordered_map<TriangleKey, std::array<double, 3>, TriangleKeyHash> triangles_;

@@ -41,6 +41,13 @@ glm::dvec3 FaceGridLimits::limit_position(const SurfacePoint& p) {
     return limit(q, level_of(q));
 }
 
+glm::dvec3 FaceGridLimits::control_point(const SurfacePoint& p, int k) {
+    if (p.face != face_ || p.level > level_ || k > kMaxLevel) return evaluator_.control_point(reduced(p), k);
+    const int shift = level_ - p.level;
+    const Point q{p.a[0] << shift, p.a[1] << shift, p.a[2] << shift};
+    return control_point(q, k);
+}
+
 glm::dvec3 FaceGridLimits::boundary_value(const Point& p, int k) {
     const int zeros = (p[0] == 0) + (p[1] == 0) + (p[2] == 0);
     if (zeros > 1) return evaluators_value(p, k);

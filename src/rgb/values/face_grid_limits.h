@@ -38,6 +38,11 @@ public:
     void start(std::uint32_t face, int level);
     // p^inf of a point of the started face at a level up to the started one (reduced or not).
     glm::dvec3 limit_position(const SurfacePoint& p);
+    // p^k of a point of the started face at a level up to the started one, for k from its level to
+    // kMaxLevel (so at its level its insertion position), as HierarchyEvaluator::control_point.
+    glm::dvec3 control_point(const SurfacePoint& p, int k);
+    std::uint32_t face() const { return face_; }
+    int level() const { return level_; }
 
 private:
     // A point as numerators (a0, a1, a2) over 2^level_ (any reducible form).
