@@ -1,6 +1,8 @@
 #include "io/lod_set_files.h"
 
+#include <atomic>
 #include <filesystem>
+#include <optional>
 #include <system_error>
 #include <variant>
 #include <utility>
@@ -11,6 +13,7 @@
 #include "io/gltf_export.h"
 #include "io/mesh_export.h"
 #include "io/script/triangle_limit.h"
+#include "rgb/support/parallel.h"
 #include "rgb/values/surface_error.h"
 
 namespace rgbio {
@@ -36,24 +39,58 @@ LodSet make_levels(const rgb::Mesh& input, const std::vector<ScriptLine>& reques
     const bool gltf_set = writing && format == OutputFormat::Gltf;
     LodSet set;
     set.size = rgb::bounding_box_diagonal(input.base());
-    std::vector<GltfMesh> gltf;  // for a glTF set: the levels, written together at the end
-    for (std::size_t i = 0; i < requests.size(); ++i) {
-        step(i);
-        LodSetLevel& level = set.levels.emplace_back(requests[i], lod_set_level(input, requests[i], options.max_triangles));
+    // Each level is a function of its request alone, so LOD0 is made (and written) on this thread
+    // while the coarser levels, about a third of its work together, are made on another, in order.
+    const std::size_t n = requests.size();
+    std::vector<std::optional<LodSetLevel>> made(n);
+    std::vector<GltfMesh> gltf(gltf_set ? n : 0);  // for a glTF set: the levels, written together at the end
+    std::vector<std::string> files(n);             // the file each level was written to, or none
+    const auto make = [&](std::size_t i) {
+        LodSetLevel& level = made[i].emplace(requests[i], lod_set_level(input, requests[i], options.max_triangles));
         if (gltf_set) {
-            GltfMesh& mesh = gltf.emplace_back(gltf_mesh(level.mesh, options.save));
-            if (const std::optional<std::string> repair = gltf_normal_repair(mesh))
-                set.warnings.push_back("LOD" + std::to_string(i) + ": " + *repair);
-            level.positions = mesh.positions;
-            continue;
+            gltf[i] = gltf_mesh(level.mesh, options.save);
+            level.positions = gltf[i].positions;
+            return;
         }
         ExportMesh flat = export_mesh(level.mesh, options.save);
         level.positions = flat.positions;
-        if (!writing) continue;
+        if (!writing) return;
         const std::string file = lod_file_name(*options.output, i);
         if (format == OutputFormat::Obj) save_mesh(level.mesh, file, options.save);
         else save_export_mesh(flat, file, format, options.save.msh);
-        written.push_back(file);
+        files[i] = file;
+    };
+    // Told of the coarser levels once they are all made: a stop asked for then takes effect there.
+    step(0);
+    std::atomic<bool> lod0_failed = false;  // then the coarser levels are not wanted
+    const auto collect_files = [&] {
+        for (const std::string& file : files)
+            if (!file.empty()) written.push_back(file);
+    };
+    try {
+        rgb::parallel_invoke(
+            [&] {
+                try {
+                    make(0);
+                } catch (...) {
+                    lod0_failed = true;
+                    throw;
+                }
+            },
+            [&] {
+                for (std::size_t i = 1; i < n && !lod0_failed; ++i) make(i);
+            });
+    } catch (...) {
+        collect_files();
+        throw;
+    }
+    collect_files();
+    for (std::size_t i = 0; i < n; ++i) {
+        if (i > 0) step(i);
+        set.levels.push_back(std::move(*made[i]));
+        if (!gltf_set) continue;
+        if (const std::optional<std::string> repair = gltf_normal_repair(gltf[i]))
+            set.warnings.push_back("LOD" + std::to_string(i) + ": " + *repair);
     }
     for (std::size_t i = 1; i < set.levels.size(); ++i)
         set.levels[i].nested = positions_nested(set.levels[i].positions, set.levels[i - 1].positions);

@@ -43,8 +43,10 @@ struct LodSetOptions {
     // Where to write the set (glTF: one file; else lod_file_name's, each written as it is made);
     // none: only make it. A set that fails part way removes the files it wrote.
     std::optional<std::string> output;
-    // Told before each step: making level i of n ("LOD<i>"), then measuring the errors (i == n).
-    // Returning false stops the work: make_lod_set throws LodSetStopped.
+    // Told before each step: making level i of n ("LOD<i>"), then measuring the errors (i == n); the
+    // coarser levels are made beside LOD0, on another thread, and told of once LOD0 and they are
+    // made. Called on the caller's thread only. Returning false stops the work: make_lod_set throws
+    // LodSetStopped.
     std::function<bool(std::size_t step, std::size_t levels)> progress;
 };
 

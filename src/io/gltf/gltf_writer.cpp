@@ -9,7 +9,6 @@
 #include <optional>
 #include <sstream>
 #include <stdexcept>
-#include <unordered_map>
 
 #include <glm/geometric.hpp>
 #include <tiny_gltf.h>
@@ -50,21 +49,31 @@ struct GltfVertices {
     std::vector<std::array<std::uint32_t, 3>> triangles;
 };
 
+// The glTF vertices of each mesh vertex are chained (first by mesh vertex, next by glTF vertex): a
+// vertex has one per texture coordinate it takes, so the chains are short, and flat arrays cost a
+// fraction of a hash table over every corner (a large share of writing a million triangles).
 GltfVertices unweld(const GltfMesh& mesh) {
     GltfVertices out;
-    std::unordered_map<std::uint64_t, std::uint32_t> index;
+    std::vector<std::uint32_t> first(mesh.positions.size(), kNoIndex), next;
     out.triangles.reserve(mesh.triangles.size());
+    out.position.reserve(mesh.positions.size());
+    out.texcoord.reserve(mesh.positions.size());
+    next.reserve(mesh.positions.size());
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
         std::array<std::uint32_t, 3> corners;
         for (int i = 0; i < 3; ++i) {
             const std::uint32_t v = mesh.triangles[t][i];
             const std::uint32_t uv = mesh.triangle_texcoords.empty() ? kNoIndex : mesh.triangle_texcoords[t][i];
-            const auto [it, inserted] = index.try_emplace((std::uint64_t(v) << 32) | uv, static_cast<std::uint32_t>(out.position.size()));
-            if (inserted) {
+            std::uint32_t g = first[v];
+            while (g != kNoIndex && out.texcoord[g] != uv) g = next[g];
+            if (g == kNoIndex) {
+                g = static_cast<std::uint32_t>(out.position.size());
                 out.position.push_back(v);
                 out.texcoord.push_back(uv);
+                next.push_back(first[v]);
+                first[v] = g;
             }
-            corners[i] = it->second;
+            corners[i] = g;
         }
         out.triangles.push_back(corners);
     }

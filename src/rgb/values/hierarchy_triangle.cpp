@@ -46,7 +46,7 @@ SurfacePoint HierarchyTriangle::sample_at_level(const SampleWeights& w) const {
     return p;
 }
 
-glm::dvec3 interpolate(const std::array<glm::dvec3, 3>& corners, const std::array<double, 3>& weights) {
+std::array<int, 3> interpolation_order(const std::array<glm::dvec3, 3>& corners) {
     std::array<int, 3> order{0, 1, 2};
     auto less = [&](int i, int j) {
         const glm::dvec3 &x = corners[static_cast<std::size_t>(i)], &y = corners[static_cast<std::size_t>(j)];
@@ -55,9 +55,11 @@ glm::dvec3 interpolate(const std::array<glm::dvec3, 3>& corners, const std::arra
         return x.z < y.z;
     };
     std::sort(order.begin(), order.end(), less);
-    glm::dvec3 sum(0.0);
-    for (int i : order) sum += weights[static_cast<std::size_t>(i)] * corners[static_cast<std::size_t>(i)];
-    return sum;
+    return order;
+}
+
+glm::dvec3 interpolate(const std::array<glm::dvec3, 3>& corners, const std::array<double, 3>& weights) {
+    return interpolate_in_order(corners, interpolation_order(corners), weights);
 }
 
 InlineVector<HierarchyTriangle, 2> triangles_beside(const BaseMesh& base, const SurfacePoint& a, const SurfacePoint& b) {

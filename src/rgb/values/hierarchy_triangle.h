@@ -43,5 +43,14 @@ InlineVector<HierarchyTriangle, 2> triangles_beside(const BaseMesh& base, const 
 // that depends only on the corners' positions, so that a sample shared by two tiles, or seen from a
 // criterion and from a measure, gets the same bits.
 glm::dvec3 interpolate(const std::array<glm::dvec3, 3>& corners, const std::array<double, 3>& weights);
+// interpolate in two steps, for many points on one triangle: the order of its corners once, then per
+// point the sum in that order (the same bits as interpolate).
+std::array<int, 3> interpolation_order(const std::array<glm::dvec3, 3>& corners);
+inline glm::dvec3 interpolate_in_order(const std::array<glm::dvec3, 3>& corners, const std::array<int, 3>& order,
+                                       const std::array<double, 3>& weights) {
+    glm::dvec3 sum(0.0);
+    for (int i : order) sum += weights[static_cast<std::size_t>(i)] * corners[static_cast<std::size_t>(i)];
+    return sum;
+}
 
 }  // namespace rgb

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -58,6 +59,7 @@ SurfaceError face_error_shown(const Mesh& mesh, FaceId f, const Shown& shown_at,
     const std::array<SurfacePoint, 3> t = parent_triangle(mesh, f, g);
     for (std::size_t c = 0; c < 3; ++c) parent.corners[c] = numerators_at(t[c], level);
     const std::int64_t area = cross(corners[0], corners[1], corners[2]);
+    const std::array<int, 3> order = interpolation_order(shown);
     for (const SampleWeights& w : sample_weights()) {
         const SurfacePoint s = parent.sample_at_level(w);
         const Numerators& q = s.a;
@@ -66,7 +68,7 @@ SurfaceError face_error_shown(const Mesh& mesh, FaceId f, const Shown& shown_at,
         if (w0 < 0 || w1 < 0 || w2 < 0) continue;
         const std::array<double, 3> weights{double(w0) / double(area), double(w1) / double(area), double(w2) / double(area)};
         const glm::dvec3 limit = target_at(s);
-        const double error = glm::distance(interpolate(shown, weights), limit);
+        const double error = glm::distance(interpolate_in_order(shown, order, weights), limit);
         ++out.samples;
         if (error > out.max_error) {
             out.max_error = error;
@@ -147,17 +149,20 @@ std::vector<SurfaceError> surface_errors_at(std::span<const Mesh* const> meshes,
         for (std::uint32_t g = 0; g < base.num_faces(); ++g)
             for (std::uint32_t k = groups[m].start[g]; k < groups[m].start[g + 1]; ++k)
                 deepest[g] = std::max(deepest[g], meshes[m]->level(FaceId(groups[m].faces[k])) + 2);
-    // Per block of chunks (one per thread) one evaluator, emptied between chunks, and one grid of the
-    // limit points inside a base face (face_grid_limits.h); within a base face every mesh in turn,
-    // finest first, so that a coarser mesh's samples that a finer one has are looked up.
+    // Per thread one evaluator, emptied between chunks, and one grid of the limit points inside a base
+    // face (face_grid_limits.h); within a base face every mesh in turn, finest first, so that a
+    // coarser mesh's samples that a finer one has are looked up. The threads take the chunks in turn
+    // as they finish the last (on a busy machine one may get far less of the processor than the
+    // other); each chunk's errors are its own and `take` keeps the same one whatever the order.
     const std::size_t blocks = parallel_blocks(chunks, 1);
     std::vector<std::vector<FaceError>> found(blocks, std::vector<FaceError>(meshes.size()));
     const DetailPositions* detail = base.detail();
-    parallel_blocks_for(chunks, blocks, [&](std::size_t b, std::size_t begin, std::size_t end) {
+    std::atomic<std::size_t> next_chunk = 0;
+    parallel_blocks_for(blocks, blocks, [&](std::size_t b, std::size_t, std::size_t) {
         HierarchyEvaluator evaluator(base);
         FaceGridLimits grid(base, evaluator);
         const auto target = [&](const SurfacePoint& s) { return detail ? detail->position(base, reduced(s)) : grid.limit_position(s); };
-        for (std::size_t c = begin; c < end; ++c) {
+        for (std::size_t c = next_chunk++; c < chunks; c = next_chunk++) {
             evaluator.clear();
             for (std::uint32_t g = chunk_start[c]; g < chunk_start[c + 1]; ++g) {
                 grid.start(g, deepest[g]);
