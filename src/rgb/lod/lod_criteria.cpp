@@ -143,7 +143,9 @@ double estimated_detail_triangles(const Mesh& mesh, const DetailRequest& r) {
 LodReport apply_detail_request(Mesh& mesh, const DetailRequest& r) {
     check(r);
     if (r.kind == RequestKind::Set && !r.sphere) {
-        LodDriver driver(mesh, whole_surface_settings(r));
+        LodSettings settings = whole_surface_settings(r);
+        settings.uniform_start = true;  // run to its end here, not a slice at a time
+        LodDriver driver(mesh, settings);
         driver.run();
         return driver.report();
     }
