@@ -269,33 +269,5 @@ TEST(LodDriver, AUniformStartWithUnwantedVerticesGivesTheOrdinaryResult) {
     expect_uniform_start_changes_nothing(icosahedron(), settings);
 }
 
-// A threshold run of the default value (max-edge over the whole surface: every vertex the topology
-// needs judged too) starts with the uniform levels whose every edge is above the threshold, checked
-// level by level: the ordinary result at thresholds that stop the start at each level, on regular and
-// irregular meshes, with the level cap binding, and with a budget that binds (the start undone).
-TEST(LodDriver, AThresholdRunsUniformStartGivesTheOrdinaryResult) {
-    TestMesh stretched = icosahedron();
-    stretched.name = "stretched icosahedron";
-    for (glm::dvec3& p : stretched.positions) p.x *= 10.0;
-    for (const TestMesh& base : {icosahedron(), perforated_slab(5, 5, 3), stretched}) {
-        double mean_edge = 0.0;
-        for (const rgb::Triangle& t : base.triangles)
-            for (int i = 0; i < 3; ++i) mean_edge += glm::distance(base.positions[t[i]], base.positions[t[(i + 1) % 3]]);
-        mean_edge /= 3.0 * static_cast<double>(base.triangles.size());
-        for (double fraction : {0.9, 0.3, 0.12}) {
-            rgb::LodSettings settings;
-            settings.threshold = fraction * mean_edge;
-            settings.split_past_dependencies = true;
-            settings.max_triangles = 10'000'000;
-            expect_uniform_start_changes_nothing(base, settings);
-            settings.max_level = 2;
-            expect_uniform_start_changes_nothing(base, settings);
-            settings.max_level = rgb::kMaxLevel;
-            settings.max_triangles = 30 * base.triangles.size();
-            expect_uniform_start_changes_nothing(base, settings);
-        }
-    }
-}
-
 }  // namespace
 }  // namespace rgbtest

@@ -143,9 +143,7 @@ double estimated_detail_triangles(const Mesh& mesh, const DetailRequest& r) {
 LodReport apply_detail_request(Mesh& mesh, const DetailRequest& r) {
     check(r);
     if (r.kind == RequestKind::Set && !r.sphere) {
-        LodSettings settings = whole_surface_settings(r);
-        settings.uniform_start = true;  // run to its end here, not a slice at a time
-        LodDriver driver(mesh, settings);
+        LodDriver driver(mesh, whole_surface_settings(r));
         driver.run();
         return driver.report();
     }

@@ -161,7 +161,7 @@ void LodDriver::start_refining() {
     key_base_vertices(vertices);
     report_before_start_ = report_;
     if (faces > 0 && !prefault_) prefault_room(faces, vertices);
-    if (settings_.uniform_start && !uniform_start_failed_) refine_uniform_start();
+    if (settings_.uniform_start && settings_.threshold <= 0.0 && !uniform_start_failed_) refine_uniform_start();
     // The green edges keyed and queued a block at a time, so that the lists stay small and in cache
     // (for the whole mesh they were megabytes of fresh memory: a page fault per 4 KiB written).
     constexpr std::size_t kEdgesPerBlock = 1 << 15;

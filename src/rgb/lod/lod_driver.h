@@ -64,9 +64,7 @@ struct LodSettings {
     // kept before the start. On a mesh of very different triangle sizes, where an estimate from the
     // base's edges shows it would prove wrong, it is not tried (uniform_start_hopeless); where the
     // same estimate from the start's own finest edges shows it, it is undone at once
-    // (uniform_start_overflows). A threshold run of the default value (max-edge over the whole
-    // surface) starts with the uniform levels whose every vertex it wants, checked level by level
-    // (make_threshold_start): the same mesh, the vertices in refine_uniform's slot order.
+    // (uniform_start_overflows).
     bool uniform_start = false;
 };
 
@@ -153,9 +151,6 @@ private:
     int uniform_start_level() const;
     bool uniform_start_hopeless(int level) const;
     bool uniform_start_overflows(int level, std::uint64_t lowest_key) const;
-    int make_budget_start();
-    bool every_edge_above_threshold(int level) const;
-    int make_threshold_start();
     void refine_uniform_start();
     void undo_uniform_start();
     bool split(const Candidate& c);

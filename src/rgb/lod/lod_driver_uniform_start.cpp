@@ -132,10 +132,14 @@ bool LodDriver::uniform_start_overflows(int level, std::uint64_t lowest_key) con
     return total > 1.25 * static_cast<double>(settings_.max_triangles);
 }
 
-// A budget's start: the level uniform_start_level chooses, unless hopeless. Returns the level made.
-int LodDriver::make_budget_start() {
+// Every vertex of the uniform levels, through refine_uniform, with its key as a split would give it
+// (a key depends on the vertex's edge alone). The run then goes on from that mesh; the result is the
+// same if every one of those vertices is wanted and outranks the split where the budget stops (then
+// the ordinary run holds them all, and from there the two make the same splits), which split_next
+// checks against the lowest of them.
+void LodDriver::refine_uniform_start() {
     const int level = uniform_start_level();
-    if (level == 0 || uniform_start_hopeless(level)) return 0;
+    if (level == 0 || uniform_start_hopeless(level)) return;
     // The mesh before the start (the base: a run removes the old detail first), to go back to in one
     // copy should the start prove wrong, rather than by removing its vertices one by one.
     before_uniform_start_ = std::make_unique<Mesh>(mesh_);
@@ -143,54 +147,6 @@ int LodDriver::make_budget_start() {
     refine_uniform(mesh_, level);
     keys_wait_ = false;
     if (plain_edge_length_) learn_uniform_limits(level);
-    return level;
-}
-
-// Whether every edge of the uniform mesh of `level` (the mesh as it is) has a value above the
-// threshold, by the value its key would take: then the run splits every one of them, whatever the
-// order, and the next uniform level is part of its result.
-bool LodDriver::every_edge_above_threshold(int level) const {
-    const std::size_t faces = mesh_.face_capacity();
-    const std::size_t blocks = parallel_blocks(faces, 8192);
-    std::vector<std::uint8_t> above(blocks, 1);
-    parallel_blocks_for(faces, blocks, [&](std::size_t block, std::size_t begin, std::size_t end) {
-        for (std::size_t i = begin; i < end && above[block]; ++i) {
-            const FaceId f(static_cast<std::uint32_t>(i));
-            if (!mesh_.is_live(f)) continue;
-            for (int k = 0; k < 3; ++k) {
-                const HalfedgeId h = Mesh::halfedge(f, k);
-                if (!(plain_edge_length(mesh_.from_vertex(h), mesh_.to_vertex(h), level) > settings_.threshold)) above[block] = 0;
-            }
-        }
-    });
-    return std::find(above.begin(), above.end(), 0) == above.end();
-}
-
-// A threshold run's start (the default value only): level by level, the next uniform level while
-// every edge of the last one is above the threshold and under the level cap, and the next level fits
-// the budget. Exact: every vertex it makes is wanted, so only a budget that binds above its lowest
-// vertex can prove it wrong (split_next: a run that fails on its budget anyway, then the ordinary way).
-int LodDriver::make_threshold_start() {
-    if (!plain_edge_length_) return 0;
-    int level = 0;
-    keys_wait_ = true;
-    while (level < settings_.max_level && (mesh_.num_faces() << 2) <= settings_.max_triangles && every_edge_above_threshold(level)) {
-        if (level == 0) before_uniform_start_ = std::make_unique<Mesh>(mesh_);
-        refine_uniform(mesh_, ++level);
-        learn_uniform_limits(level);
-    }
-    keys_wait_ = false;
-    return level;
-}
-
-// Every vertex of the uniform levels, through refine_uniform, with its key as a split would give it
-// (a key depends on the vertex's edge alone). The run then goes on from that mesh; the result is the
-// same if every one of those vertices is wanted and outranks the split where the budget stops (then
-// the ordinary run holds them all, and from there the two make the same splits), which split_next
-// checks against the lowest of them.
-void LodDriver::refine_uniform_start() {
-    const int level = settings_.threshold > 0.0 ? make_threshold_start() : make_budget_start();
-    if (level == 0) return;
     // Level by level (refine_uniform makes them in that order): a vertex's key needs its parents'.
     std::optional<Candidate> lowest;
     for (std::size_t first = 0; first < unkeyed_.size();) {
@@ -211,7 +167,7 @@ void LodDriver::refine_uniform_start() {
     steps_ += unkeyed_.size();
     unkeyed_.clear();
     uniform_lowest_ = lowest;
-    if (lowest->key == 0 || (settings_.threshold <= 0.0 && uniform_start_overflows(level, lowest->key))) undo_uniform_start();
+    if (lowest->key == 0 || uniform_start_overflows(level, lowest->key)) undo_uniform_start();
 }
 
 // The uniform start held a vertex the ordinary run would not have: back to the mesh the run started
