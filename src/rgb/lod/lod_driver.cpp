@@ -142,14 +142,17 @@ void LodDriver::start_refining() {
     // not regrow on the way (a split adds a vertex per two triangles, one per triangle on a boundary).
     // The room holds the split that crosses the budget too (undone at once): without it the mesh's
     // arrays doubled for those few faces, a copy of the whole mesh at the last step.
+    // A threshold run of the default value (max-edge over the whole surface) runs to its end too, to
+    // a size estimated from the base (room_for_threshold).
     std::size_t faces = 0, vertices = 0;
-    if (settings_.threshold <= 0.0) {
-        faces = room_for_run();
+    const std::size_t expected = settings_.threshold <= 0.0 ? settings_.max_triangles : room_for_threshold();
+    if (expected > 0) {
+        faces = settings_.threshold <= 0.0 ? room_for_run() : expected;
         vertices = faces / 2 + mesh_.num_vertices();
         mesh_.reserve(faces, vertices);
         // The coarser vertices get their limits cached (finer splits and keys need them): 268k for
         // a budget of 1.5M triangles on a torus, so a quarter of the budget leaves room to spare.
-        mesh_.reserve_limits(settings_.max_triangles / 4);
+        mesh_.reserve_limits(expected / 4);
         // The start's limits then land all over the table: its pages are faulted in on another core
         // meanwhile (33 ms of the main thread's time at 1.5M on a machine with slow page faults).
         limit_prefault_ = std::make_unique<Prefault>(std::vector{mesh_.limit_table()});
@@ -157,7 +160,7 @@ void LodDriver::start_refining() {
     }
     key_base_vertices(vertices);
     report_before_start_ = report_;
-    if (settings_.threshold <= 0.0 && !prefault_) prefault_room(faces, vertices);
+    if (faces > 0 && !prefault_) prefault_room(faces, vertices);
     if (settings_.uniform_start && settings_.threshold <= 0.0 && !uniform_start_failed_) refine_uniform_start();
     // The green edges keyed and queued a block at a time, so that the lists stay small and in cache
     // (for the whole mesh they were megabytes of fresh memory: a page fault per 4 KiB written).

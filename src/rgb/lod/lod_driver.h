@@ -143,8 +143,11 @@ private:
     void push_new_edges();
     void start_refining();
     std::size_t room_for_run() const;
+    std::size_t room_for_threshold() const;
     void stop_room_prefault();
     void prefault_room(std::size_t faces, std::size_t vertices);
+    static double triangles_down_to(double edge, double lowest);
+    std::vector<double> base_mean_edges(double& shortest) const;
     int uniform_start_level() const;
     bool uniform_start_hopeless(int level) const;
     bool uniform_start_overflows(int level, std::uint64_t lowest_key) const;

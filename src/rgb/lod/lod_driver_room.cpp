@@ -22,6 +22,17 @@ std::size_t LodDriver::room_for_run() const {
     return std::min(budget, mesh_.num_faces() << (2 * std::max(settings_.max_level, 0)));
 }
 
+// Face slots a threshold run of the default value (max-edge over the whole surface) will fill, from
+// the base: a face whose edges are r times the threshold on average split about log2(r) levels deep
+// (triangles_down_to; 0.7-1.3 times what the runs made on the benchmark meshes); 0 for other values, whose sizes are not estimated (those runs
+// grow their arrays as they go).
+std::size_t LodDriver::room_for_threshold() const {
+    if (!plain_edge_length_ || !(settings_.threshold > 0.0)) return 0;
+    double shortest = 0.0, triangles = 0.0;
+    for (double edge : base_mean_edges(shortest)) triangles += triangles_down_to(edge, settings_.threshold);
+    return static_cast<std::size_t>(std::min(triangles, static_cast<double>(room_for_run())));
+}
+
 // The room reserved for the run (face and vertex slots), in the mesh and in the driver's arrays, and
 // room for its candidates, faulted in on another core ahead of the splits that fill it. Before the
 // uniform start, whose new vertices fill the driver's arrays too (refine_uniform faults in the mesh's

@@ -54,22 +54,14 @@ int LodDriver::uniform_start_level() const {
 
 // The triangles the ordinary run makes of a face with edges `edge` long on average before it comes
 // down to splits of value `lowest` (each level halves the edges and quarters the triangles).
-namespace {
-double start_estimate_triangles(double edge, double lowest) {
+double LodDriver::triangles_down_to(double edge, double lowest) {
     return edge > lowest ? std::exp2(2.0 * std::ceil(std::log2(edge / lowest))) : 1.0;
 }
-}  // namespace
 
-// Whether the start would surely prove wrong, by an estimate from the base mesh alone (it decides only
-// whether to try: the result is the same either way). Its lowest vertex's edge is about the base's
-// shortest edge halved at each level below `level`; before the ordinary run comes down to that value,
-// a base face whose edges are r times as long is split about log2(r) levels deep, into 4^log2(r)
-// triangles. On a mesh of very different triangle sizes (a scan, a part with small details) that
-// overfills the budget by far, and the start would only be undone at the budget's end, after a whole
-// run on top of it (it was 3.5 times the cost per output triangle of a uniform level there).
-bool LodDriver::uniform_start_hopeless(int level) const {
+// Each base face's mean edge length, and the shortest edge of the base.
+std::vector<double> LodDriver::base_mean_edges(double& shortest) const {
     const BaseMesh& base = mesh_.base();
-    double shortest = std::numeric_limits<double>::infinity();
+    shortest = std::numeric_limits<double>::infinity();
     std::vector<double> mean_edge(base.num_faces());
     for (std::uint32_t f = 0; f < base.num_faces(); ++f) {
         const Triangle& t = base.face(f);
@@ -81,12 +73,25 @@ bool LodDriver::uniform_start_hopeless(int level) const {
         }
         mean_edge[f] = sum / 3.0;
     }
+    return mean_edge;
+}
+
+// Whether the start would surely prove wrong, by an estimate from the base mesh alone (it decides only
+// whether to try: the result is the same either way). Its lowest vertex's edge is about the base's
+// shortest edge halved at each level below `level`; before the ordinary run comes down to that value,
+// a base face whose edges are r times as long is split about log2(r) levels deep, into 4^log2(r)
+// triangles. On a mesh of very different triangle sizes (a scan, a part with small details) that
+// overfills the budget by far, and the start would only be undone at the budget's end, after a whole
+// run on top of it (it was 3.5 times the cost per output triangle of a uniform level there).
+bool LodDriver::uniform_start_hopeless(int level) const {
+    double shortest = 0.0;
+    const std::vector<double> mean_edge = base_mean_edges(shortest);
     const double lowest = std::ldexp(shortest, 1 - level);
     if (!(lowest > 0.0)) return true;
     const double budget = static_cast<double>(settings_.max_triangles);
     double triangles = 0.0;
     for (double edge : mean_edge) {
-        triangles += start_estimate_triangles(edge, lowest);
+        triangles += triangles_down_to(edge, lowest);
         if (triangles > budget) return true;
     }
     return false;
@@ -118,7 +123,7 @@ bool LodDriver::uniform_start_overflows(int level, std::uint64_t lowest_key) con
                 const HalfedgeId h = Mesh::halfedge(f, k);
                 mean += plain_edge_length(mesh_.from_vertex(h), mesh_.to_vertex(h), level) / 3.0;
             }
-            sum += start_estimate_triangles(mean, lowest);
+            sum += triangles_down_to(mean, lowest);
         }
         triangles[block] = sum;
     });
