@@ -143,7 +143,8 @@ void LodDriver::start_refining() {
     // The room holds the split that crosses the budget too (undone at once): without it the mesh's
     // arrays doubled for those few faces, a copy of the whole mesh at the last step.
     std::size_t faces = 0, vertices = 0;
-    if (settings_.threshold <= 0.0) {
+    const bool to_budget = settings_.threshold <= 0.0 || settings_.room_for_budget;
+    if (to_budget) {
         faces = room_for_run();
         vertices = faces / 2 + mesh_.num_vertices();
         mesh_.reserve(faces, vertices);
@@ -157,7 +158,7 @@ void LodDriver::start_refining() {
     }
     key_base_vertices(vertices);
     report_before_start_ = report_;
-    if (settings_.threshold <= 0.0 && !prefault_) prefault_room(faces, vertices);
+    if (to_budget && !prefault_) prefault_room(faces, vertices);
     if (settings_.uniform_start && settings_.threshold <= 0.0 && !uniform_start_failed_) refine_uniform_start();
     // The green edges keyed and queued a block at a time, so that the lists stay small and in cache
     // (for the whole mesh they were megabytes of fresh memory: a page fault per 4 KiB written).
