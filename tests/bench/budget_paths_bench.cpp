@@ -8,8 +8,8 @@
 //   - torus: the 52k-triangle torus of the engine speed table to 1.5M, where a script's budget keeps
 //     its uniform start;
 //   - detail: the same after "Set all" to level 2, against `level 2` then `budget B` (the budget line
-//     removes the detail first);
-//   - cage: a cage with detail (`rgbsub remesh` of the bunny at level 3), Automatic LOD at the least
+//     removes the detail first; level 1 for --smoke);
+//   - cage: a cage with detail (`rgbsub remesh` of the bunny at level 3; 1 for --smoke), Automatic LOD at the least
 //     *max distance* the panel offers, against `budget B` on the cage.
 // For each: engine time per split (the editor's job steps, the CLI's line), per output triangle, the
 // editor's wall time from the click to the mesh done and shown (no drawing here: the window adds its
@@ -219,6 +219,8 @@ int main(int argc, char** argv) {
     int rounds = 3;
     std::size_t budget = 700000, torus_budget = 1500000, cage_budget = 300000;
     std::string torus_size = "204 128";
+    int dense_level = 3;   // the cage's dense mesh: the bunny at this level
+    int detail_level = 2;  // the detail case's "Set all" and `level` line
     std::string cases = "plain,torus,detail,cage";
     bool editor_only = false;
     for (int i = 1; i < argc; ++i) {
@@ -228,6 +230,8 @@ int main(int argc, char** argv) {
             budget = 20000;
             torus_budget = 20000;
             torus_size = "40 20";
+            dense_level = 1;
+            detail_level = 1;
             cage_budget = 10000;
         } else if (a == "--rounds" && i + 1 < argc) {
             rounds = std::atoi(argv[++i]);
@@ -263,16 +267,19 @@ int main(int argc, char** argv) {
                            torus_budget, 0});
         }
         if (cases.find("detail") != std::string::npos)
-            all.push_back({"bunny at level 2, then the budget", bunny,
-                           script("level_budget.txt", "level 2\nbudget " + std::to_string(budget) + "\n"), budget, 2});
+            all.push_back({"bunny at level " + std::to_string(detail_level) + ", then the budget", bunny,
+                           script("level_budget.txt", "level " + std::to_string(detail_level) + "\nbudget " + std::to_string(budget) + "\n"),
+                           budget, detail_level});
         if (cases.find("cage") != std::string::npos) {
-            // A cage with detail: the bunny at level 3 (235k triangles) as the dense mesh.
-            run_or_throw(shell_quote(rgbsub) + " refine " + shell_quote(bunny) + " --level 3 --plain -o " + shell_quote(work / "dense.obj"),
+            // A cage with detail: the bunny at level 3 (235k triangles) as the dense mesh, a cage of 3000
+            // triangles (for --smoke level 1, 14,696 triangles, and 1500).
+            const std::string level = std::to_string(dense_level);
+            run_or_throw(shell_quote(rgbsub) + " refine " + shell_quote(bunny) + " --level " + level + " --plain -o " + shell_quote(work / "dense.obj"),
                          work / "setup.log");
-            run_or_throw(shell_quote(rgbsub) + " remesh " + shell_quote(work / "dense.obj") + " --cage-triangles 3000 -o " +
-                             shell_quote(work / "cage.obj"),
+            run_or_throw(shell_quote(rgbsub) + " remesh " + shell_quote(work / "dense.obj") + " --cage-triangles " +
+                             std::to_string(dense_level == 3 ? 3000 : 1500) + " -o " + shell_quote(work / "cage.obj"),
                          work / "setup.log");
-            all.push_back({"cage with detail (the bunny at level 3)", work / "cage.obj",
+            all.push_back({"cage with detail (the bunny at level " + level + ")", work / "cage.obj",
                            script("cage_budget.txt", "budget " + std::to_string(cage_budget) + "\n"), cage_budget, 0});
         }
         std::printf("slice %.1f ms a frame (JobPacer, drawing 4 ms); %d rounds, editor and CLI alternating first\n",
