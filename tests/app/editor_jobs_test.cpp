@@ -1,6 +1,7 @@
 // The editor's work over frames, scripted without X or GL: a large dab spreads over frames coarse to
 // fine with the display following, Esc keeps what is done as one undo step (a stroke's or automatic
-// LOD's), undo and redo give back every slot across a cancelled job, the undo memory bound as the
+// LOD's), automatic LOD to a budget is the mesh of a script's `budget` line, undo and redo give back
+// every slot across a cancelled job, the undo memory bound as the
 // editor uses it, the brush paints only what faces the viewer unless told to paint through, and the
 // session's strokes saved as a script replay to the identical mesh, whole or in two halves with a
 // save and reload between.
@@ -17,8 +18,10 @@
 #include "editor_fixture.h"
 #include "io/mesh_file.h"
 #include "io/script/lod_script.h"
+#include "rgb/lod/lod_driver.h"
 #include "rgb/mesh/invariants.h"
 #include "rgb/values/loop_geometry.h"
+#include "rgb/values/surface_error.h"
 #include "support/same_mesh.h"
 #include "support/same_slots.h"
 
@@ -165,6 +168,45 @@ TEST_F(EditorJobs, EscKeepsTheWorkDoneAsOneStepAndUndoRedoCrossItExactly) {
     ASSERT_TRUE(editor.save_strokes(scratch("cancelled_session.lod").string()));
     EXPECT_TRUE(editor.message_is_error());
     EXPECT_NE(editor.message().find("replay will differ"), std::string::npos) << editor.message();
+}
+
+// Automatic LOD to a budget that stops it above its *max edge*, in slices of a frame, is the canonical
+// mesh of a script's `budget` line (the run reserves and faults in room for the budget as the script's
+// does: LodSettings::room_for_budget); where the max edge stops it first, it is the driver's run with
+// that threshold and budget and no room; either way Ctrl+Z gives back every slot.
+TEST_F(EditorJobs, AutomaticLodToABudgetIsTheScriptsBudget) {
+    const rgb::Mesh original = editor.document().mesh();
+    constexpr std::size_t kBudget = 12000;
+    AutoLodSettings& settings = editor.auto_lod_settings();
+    settings.triangle_budget = kBudget;
+    settings.max_edge_fraction = 0.05 / 100.0;  // the least the panel offers
+    editor.start_auto_lod();
+    int frames = 0;
+    for (; editor.job() != nullptr && frames < 100000; ++frames) editor.update(std::chrono::milliseconds(1));
+    EXPECT_GT(frames, 1) << "the job runs in slices";
+    rgb::Mesh by_script = original;
+    replay(by_script, "budget " + std::to_string(kBudget) + "\n");
+    EXPECT_TRUE(rgbtest::same_mesh(editor.document().mesh(), by_script));
+    EXPECT_LE(editor.document().mesh().num_faces(), kBudget);
+    EXPECT_GT(editor.document().mesh().num_faces(), kBudget - kBudget / 10);
+    editor.key_pressed(Key::Z, {.ctrl = true});
+    editor.finish_work();
+    EXPECT_TRUE(rgbtest::same_slots(editor.document().mesh(), original));
+
+    settings.max_edge_fraction = 5.0 / 100.0;
+    editor.start_auto_lod();
+    editor.finish_work();
+    rgb::LodSettings thresholded;
+    thresholded.threshold = 5.0 / 100.0 * rgb::bounding_box_diagonal(original.base());
+    thresholded.max_triangles = kBudget;
+    rgb::Mesh by_driver = original;
+    rgb::LodDriver(by_driver, thresholded).run();
+    ASSERT_LT(by_driver.num_faces(), kBudget / 2) << "the max edge, not the budget, stops this run";
+    ASSERT_GT(by_driver.num_faces(), original.num_faces());
+    EXPECT_TRUE(rgbtest::same_mesh(editor.document().mesh(), by_driver));
+    editor.key_pressed(Key::Z, {.ctrl = true});
+    editor.finish_work();
+    EXPECT_TRUE(rgbtest::same_slots(editor.document().mesh(), original));
 }
 
 // Automatic LOD stopped by Esc part way: the work done so far stays, as one step that Ctrl+Z takes

@@ -145,9 +145,11 @@ void LodDriver::start_refining() {
     // A threshold run of the default value (max-edge over the whole surface) runs to its end too, to
     // a size estimated from the base (room_for_threshold).
     std::size_t faces = 0, vertices = 0;
-    const std::size_t expected = settings_.threshold <= 0.0 ? settings_.max_triangles : room_for_threshold();
+    // A threshold run that asks for the budget's room (the editor's Automatic LOD) gets it as well.
+    const bool to_budget = settings_.threshold <= 0.0 || settings_.room_for_budget;
+    const std::size_t expected = to_budget ? settings_.max_triangles : room_for_threshold();
     if (expected > 0) {
-        faces = settings_.threshold <= 0.0 ? room_for_run() : expected;
+        faces = to_budget ? room_for_run() : expected;
         vertices = faces / 2 + mesh_.num_vertices();
         mesh_.reserve(faces, vertices);
         // The coarser vertices get their limits cached (finer splits and keys need them): 268k for

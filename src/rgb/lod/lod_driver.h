@@ -66,6 +66,12 @@ struct LodSettings {
     // same estimate from the start's own finest edges shows it, it is undone at once
     // (uniform_start_overflows).
     bool uniform_start = false;
+    // For a run with a threshold that its budget usually stops first (the editor's automatic LOD,
+    // whose threshold is a floor under the budget): room for the budget reserved and faulted in ahead,
+    // as a run with every split wanted has it (not the uniform start, whose undo replaces the mesh
+    // under its observers). The result is the same; where the threshold stops the run well short of
+    // the budget, what was faulted in meanwhile (on another core, until the run ends) is spent in vain.
+    bool room_for_budget = false;
 };
 
 struct LodReport {
