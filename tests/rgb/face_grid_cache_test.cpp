@@ -59,10 +59,7 @@ void expect_evaluators_values(const rgb::BaseMesh& base) {
 }
 
 TEST(FaceGridCache, GivesTheEvaluatorsValuesWithCreasesCornersAndSemiSharpEdges) {
-    const TestMesh m = bipyramid(5);
-    rgb::SharpFeatures f;
-    f.edges = {{5, 0, 10}, {5, 2, 1}, {5, 3, 1}, {0, 1, 3}};
-    expect_evaluators_values(rgb::BaseMesh(m.positions, m.triangles, f));
+    expect_evaluators_values(tagged_bipyramid());
 }
 
 TEST(FaceGridCache, GivesTheEvaluatorsValuesOnAnOpenMesh) {

@@ -60,10 +60,7 @@ TEST(FaceGridLimits, AreTheEvaluatorsOnAnOpenMesh) {
 }
 
 TEST(FaceGridLimits, AreTheEvaluatorsWithCreasesCornersAndSemiSharpEdges) {
-    const TestMesh m = bipyramid(5);
-    rgb::SharpFeatures f;
-    f.edges = {{5, 0, 10}, {5, 2, 1}, {5, 3, 1}, {0, 1, 3}};
-    expect_evaluators_limits(rgb::BaseMesh(m.positions, m.triangles, f));
+    expect_evaluators_limits(tagged_bipyramid());
 }
 
 TEST(FaceGridLimits, AnswerForUnreducedPointsDeeperThanTheGridAndOfOtherFaces) {

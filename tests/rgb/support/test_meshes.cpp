@@ -103,6 +103,13 @@ TestMesh bipyramid(int n) {
     return m;
 }
 
+rgb::BaseMesh tagged_bipyramid() {
+    const TestMesh m = bipyramid(5);
+    rgb::SharpFeatures features;
+    features.edges = {{5, 0, 10}, {5, 2, 1}, {5, 3, 1}, {0, 1, 3}};
+    return rgb::BaseMesh(m.positions, m.triangles, features);
+}
+
 TestMesh fan(int n) {
     TestMesh m{"fan" + std::to_string(n), {{0, 0, 0.3}}, {}};
     const auto un = static_cast<std::uint32_t>(n);

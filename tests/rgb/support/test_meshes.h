@@ -30,6 +30,9 @@ TestMesh octahedron();
 TestMesh icosahedron();
 // Two apexes of valence n over an n-gon (n >= 3); the equator vertices have valence 4.
 TestMesh bipyramid(int n);
+// The pentagonal bipyramid with a tag of every kind: apex 5 a corner (edge 5-0 infinitely sharp, 5-2
+// and 5-3 of sharpness 1), equator vertex 0 a crease of sharpness 3 along 0-1.
+rgb::BaseMesh tagged_bipyramid();
 // An open disc: one interior vertex of valence n, n boundary vertices.
 TestMesh fan(int n);
 // An open nx-by-ny grid of quads, each cut into two triangles (interior valence 6, boundary 3 or 4,
