@@ -47,11 +47,12 @@ unmount_all() {
   for ((i = ${#mounted[@]} - 1; i >= 0; i--)); do umount -l "${mounted[i]}" || true; done
 }
 trap unmount_all EXIT
+# Binds left by an earlier run that was killed (no EXIT trap runs on SIGKILL) are reused and undone
+# at this run's end too: a root left with the host's /dev bound inside is a trap, since deleting the
+# root with a plain `rm -rf` then deletes the host's device files.
 for dir in proc sys dev dev/pts; do
-  if ! mountpoint -q "$root/$dir"; then
-    mount --bind "/$dir" "$root/$dir"
-    mounted+=("$root/$dir")
-  fi
+  mountpoint -q "$root/$dir" || mount --bind "/$dir" "$root/$dir"
+  mounted+=("$root/$dir")
 done
 
 # A root made earlier already has ca-certificates: its bundle is made again with the copied ones.
