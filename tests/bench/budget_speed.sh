@@ -10,6 +10,8 @@
 #
 # MESHES are names of the set (default: all): bunny (3,674 triangles, assets/), torus52k (make_bench_mesh),
 # scan (59k, scan-like) and mixed (26k, triangles of very different sizes), both by make_irregular_mesh.py.
+# LINES (environment, default "budget max_edge tolerance") picks the lines timed: the whole-surface
+# tolerance is far slower (its criterion), so `LINES="budget max_edge"` leaves it out; budget must stay.
 # Prints one line per mesh and measure; docs/benchmarks.md's budget table is copied from it.
 set -euo pipefail
 
@@ -18,6 +20,8 @@ repeat=${2:-5}
 shift $(($# > 2 ? 2 : $#))
 meshes=("$@")
 [[ ${#meshes[@]} -gt 0 ]] || meshes=(bunny torus52k scan mixed)
+read -r -a lines <<< "${LINES:-budget max_edge tolerance}"
+[[ " ${lines[*]} " == *" budget "* ]] || { echo "budget_speed: LINES must include budget (the region path is timed at its level)" >&2; exit 1; }
 rgbsub=$build/rgbsub
 here="$(cd "$(dirname "$0")" && pwd)"
 work=$(mktemp -d "${TMPDIR:-/tmp}/rgbsub_budget_speed.XXXXXX")
@@ -60,7 +64,7 @@ for mesh in "${meshes[@]}"; do
     echo "tolerance 0.01%" > "$work/tolerance.txt"
     # The uniform levels above each line's result.
     declare -A level=()
-    for line in budget max_edge tolerance; do
+    for line in "${lines[@]}"; do
         "$rgbsub" apply "$work/$mesh.obj" "$work/$line.txt" -o "$work/out.obj" > /dev/null
         level[$line]=$(level_above "$work/$mesh.obj" "$(triangles_of "$work/out.obj")")
         echo "level ${level[$line]}" > "$work/level_$line.txt"
@@ -68,14 +72,14 @@ for mesh in "${meshes[@]}"; do
     echo "level ${level[budget]} sphere 0 0 0 1e6" > "$work/region.txt"
     rm -f "$work"/*.s "$work"/*.ns
     for _ in $(seq "$repeat"); do
-        for line in budget max_edge tolerance; do
+        for line in "${lines[@]}"; do
             time_run "$line" "$work/$line.txt" "$mesh"
             time_run "level_$line" "$work/level_$line.txt" "$mesh"
         done
         time_run region "$work/region.txt" "$mesh"
     done
     ns() { echo "$(median < "$work/$1.s") * 1000000000" | bc -l; }
-    for line in budget max_edge tolerance; do
+    for line in "${lines[@]}"; do
         printf '%s: %s per output triangle %.0f ns, level %d %.0f ns, ratio %.2f; engine per split %.0f ns, level %d %.0f ns, ratio %.2f\n' \
             "$mesh" "$(cat "$work/$line.txt")" "$(ns "$line")" "${level[$line]}" "$(ns "level_$line")" \
             "$(echo "$(ns "$line") / $(ns "level_$line")" | bc -l)" "$(median < "$work/$line.ns")" "${level[$line]}" \
