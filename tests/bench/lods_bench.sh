@@ -13,7 +13,7 @@
 #
 # Prints per case the wall seconds of each (min / median / max), the ratio of the medians and the
 # median of the pairs' ratios, and the load average before and after. Tolerance sets are not timed
-# here: the tolerance criterion itself makes about 4,000 triangles a second (docs/benchmarks.md).
+# here: the tolerance criterion itself makes about 20,000 triangles a second (docs/benchmarks.md).
 #
 # Usage: tests/bench/lods_bench.sh BUILD_DIR [RUNS] [CASE...]   (default 3 runs, every case)
 # Not a test: run it on demand; say how busy the machine was.
