@@ -86,17 +86,30 @@ SurfaceError face_error_shown(const Mesh& mesh, FaceId f, std::uint32_t g, const
     if (area <= 0 || !std::has_single_bit(static_cast<std::uint64_t>(area)))
         throw std::logic_error("face_error_shown: a face's lattice area is no power of two");
     const double inverse = 1.0 / double(area);
+    // A whole triangle of Σl (area 16: every face of a uniform level) holds all 15 samples, and the
+    // crosses are affine in the sample, so its weight at a face corner is its parent weight at the
+    // same corner times 1/4, the quotient's bits: no inside test and no crosses per sample.
+    const bool whole = area == 16;
+    std::array<std::size_t, 3> parent_corner{};
+    for (std::size_t c = 0; whole && c < 3; ++c)
+        for (std::size_t k = 0; k < 3; ++k)
+            if (corners[c] == Numerators{4 * lattice.parent[k][0], 4 * lattice.parent[k][1], 4 * lattice.parent[k][2]}) parent_corner[c] = k;
     const std::array<int, 3> order = interpolation_order(shown);
     // The largest error is kept as its square too: sqrt is monotone, so a sample whose square is no
     // larger than the largest square yet cannot have a larger error, and only the others need sqrt.
     double max_squared = 0.0;
     for (const SampleWeights& w : sample_weights()) {
         const SurfacePoint s = parent.sample_at_level(w);
-        const Numerators& q = s.a;
-        const std::int64_t w0 = cross(q, corners[1], corners[2]), w1 = cross(corners[0], q, corners[2]),
-                           w2 = cross(corners[0], corners[1], q);
-        if (w0 < 0 || w1 < 0 || w2 < 0) continue;
-        const std::array<double, 3> weights{double(w0) * inverse, double(w1) * inverse, double(w2) * inverse};
+        std::array<double, 3> weights;
+        if (whole) {
+            for (std::size_t c = 0; c < 3; ++c) weights[c] = double(w[parent_corner[c]]) * 0.25;
+        } else {
+            const Numerators& q = s.a;
+            const std::int64_t w0 = cross(q, corners[1], corners[2]), w1 = cross(corners[0], q, corners[2]),
+                               w2 = cross(corners[0], corners[1], q);
+            if (w0 < 0 || w1 < 0 || w2 < 0) continue;
+            weights = {double(w0) * inverse, double(w1) * inverse, double(w2) * inverse};
+        }
         const glm::dvec3 limit = target_at(s);
         // glm::distance(shown point, limit), as sqrt(dot(d, d)) of d = limit - shown point.
         const glm::dvec3 d = limit - interpolate_in_order(shown, order, weights);
