@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <bit>
+#include <cmath>
+#include <stdexcept>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -37,39 +40,84 @@ glm::dvec3 target_position(const BaseMesh& base, HierarchyEvaluator& evaluator, 
 
 namespace {
 
-// face_surface_error with the face's corners shown at shown_at(v) and the samples' target points
-// from target_at(sample), the sample as numerators over 2^(l+2) (not reduced).
+// A face's corners as numerators over 2^(l+2) in base face g (l its level), and the corners of the
+// triangle of Σl it is a piece of, in parent_triangle's order, over 2^l: from its corners' addresses
+// at l + 1 (a face's corners are of level l + 1 at most), converted only where a corner's address is
+// in another face (a corner on a base edge), with none of parent_triangle's reducing.
+struct FaceLattice {
+    std::array<Numerators, 3> corners, parent;
+};
+
+FaceLattice face_lattice(const Mesh& mesh, FaceId f, std::uint32_t g, int level) {
+    FaceCorners at;
+    at.base_face = g;
+    at.top = level + 1;
+    for (std::size_t c = 0; c < 3; ++c) {
+        const SurfacePoint a = mesh.address(mesh.face_vertices(f)[c]);
+        at.numerators[c] = numerators_at(a.face == g ? a : *in_face(mesh.base(), a, g), level + 1);
+    }
+    FaceLattice out;
+    out.corners = corners_at(at, level + 2);
+    out.parent = parent_corners(at, level);  // over 2^(l+1), the lattice's corners even
+    for (Numerators& corner : out.parent)
+        for (std::uint32_t& x : corner) x >>= 1;
+    return out;
+}
+
+// face_surface_error of face f in base face g, with the face's corners shown at shown_at(v) and the
+// samples' target points from target_at(sample), the sample as numerators over 2^(l+2) (not reduced).
 template <class Shown, class Target>
-SurfaceError face_error_shown(const Mesh& mesh, FaceId f, const Shown& shown_at, Target&& target_at) {
-    const BaseMesh& base = mesh.base();
+SurfaceError face_error_shown(const Mesh& mesh, FaceId f, std::uint32_t g, const Shown& shown_at, Target&& target_at) {
     SurfaceError out;
     const int level = mesh.level(f);
-    const std::uint32_t g = base_face_of(mesh, f);
-    std::array<Numerators, 3> corners;
+    const FaceLattice lattice = face_lattice(mesh, f, g, level);
+    const std::array<Numerators, 3>& corners = lattice.corners;
     std::array<glm::dvec3, 3> shown;
-    for (int c = 0; c < 3; ++c) {
-        const VertexId v = mesh.face_vertices(f)[static_cast<std::size_t>(c)];
-        corners[static_cast<std::size_t>(c)] = numerators_at(*in_face(base, mesh.address(v), g), level + 2);
-        shown[static_cast<std::size_t>(c)] = shown_at(v);
-    }
+    for (std::size_t c = 0; c < 3; ++c) shown[c] = shown_at(mesh.face_vertices(f)[c]);
     // The samples of the face are those of the triangle of Σl it is a piece of that lie in it.
     HierarchyTriangle parent;
     parent.face = g;
     parent.level = level;
-    const std::array<SurfacePoint, 3> t = parent_triangle(mesh, f, g);
-    for (std::size_t c = 0; c < 3; ++c) parent.corners[c] = numerators_at(t[c], level);
+    parent.corners = lattice.parent;
     const std::int64_t area = cross(corners[0], corners[1], corners[2]);
+    // A face's area is a power of two in units of Σ(l+2) (16 for a whole triangle of Σl, 8 for a
+    // half, 4 for a quarter), so a weight is its numerator times 1/area, exactly the quotient: no
+    // division per sample.
+    if (area <= 0 || !std::has_single_bit(static_cast<std::uint64_t>(area)))
+        throw std::logic_error("face_error_shown: a face's lattice area is no power of two");
+    const double inverse = 1.0 / double(area);
+    // A whole triangle of Σl (area 16: every face of a uniform level) holds all 15 samples, and the
+    // crosses are affine in the sample, so its weight at a face corner is its parent weight at the
+    // same corner times 1/4, the quotient's bits: no inside test and no crosses per sample.
+    const bool whole = area == 16;
+    std::array<std::size_t, 3> parent_corner{};
+    for (std::size_t c = 0; whole && c < 3; ++c)
+        for (std::size_t k = 0; k < 3; ++k)
+            if (corners[c] == Numerators{4 * lattice.parent[k][0], 4 * lattice.parent[k][1], 4 * lattice.parent[k][2]}) parent_corner[c] = k;
     const std::array<int, 3> order = interpolation_order(shown);
+    // The largest error is kept as its square too: sqrt is monotone, so a sample whose square is no
+    // larger than the largest square yet cannot have a larger error, and only the others need sqrt.
+    double max_squared = 0.0;
     for (const SampleWeights& w : sample_weights()) {
         const SurfacePoint s = parent.sample_at_level(w);
-        const Numerators& q = s.a;
-        const std::int64_t w0 = cross(q, corners[1], corners[2]), w1 = cross(corners[0], q, corners[2]),
-                           w2 = cross(corners[0], corners[1], q);
-        if (w0 < 0 || w1 < 0 || w2 < 0) continue;
-        const std::array<double, 3> weights{double(w0) / double(area), double(w1) / double(area), double(w2) / double(area)};
+        std::array<double, 3> weights;
+        if (whole) {
+            for (std::size_t c = 0; c < 3; ++c) weights[c] = double(w[parent_corner[c]]) * 0.25;
+        } else {
+            const Numerators& q = s.a;
+            const std::int64_t w0 = cross(q, corners[1], corners[2]), w1 = cross(corners[0], q, corners[2]),
+                               w2 = cross(corners[0], corners[1], q);
+            if (w0 < 0 || w1 < 0 || w2 < 0) continue;
+            weights = {double(w0) * inverse, double(w1) * inverse, double(w2) * inverse};
+        }
         const glm::dvec3 limit = target_at(s);
-        const double error = glm::distance(interpolate_in_order(shown, order, weights), limit);
+        // glm::distance(shown point, limit), as sqrt(dot(d, d)) of d = limit - shown point.
+        const glm::dvec3 d = limit - interpolate_in_order(shown, order, weights);
+        const double squared = glm::dot(d, d);
         ++out.samples;
+        if (squared <= max_squared) continue;
+        max_squared = squared;
+        const double error = std::sqrt(squared);
         if (error > out.max_error) {
             out.max_error = error;
             out.where = limit;
@@ -81,7 +129,7 @@ SurfaceError face_error_shown(const Mesh& mesh, FaceId f, const Shown& shown_at,
 }  // namespace
 
 SurfaceError face_surface_error(const Mesh& mesh, HierarchyEvaluator& evaluator, FaceId f) {
-    return face_error_shown(mesh, f, [&](VertexId v) { return displayed_position(mesh, v); },
+    return face_error_shown(mesh, f, base_face_of(mesh, f), [&](VertexId v) { return displayed_position(mesh, v); },
                             [&](const SurfacePoint& s) { return target_position(mesh.base(), evaluator, reduced(s)); });
 }
 
@@ -171,7 +219,7 @@ std::vector<SurfaceError> surface_errors_at(std::span<const Mesh* const> meshes,
                     const FacesByBaseFace& group = groups[m];
                     for (std::uint32_t k = group.start[g]; k < group.start[g + 1]; ++k) {
                         const FaceId f(group.faces[k]);
-                        take(found[b][m], face_error_shown(*meshes[m], f, [&](VertexId v) { return shown[v.idx]; }, target), f.idx);
+                        take(found[b][m], face_error_shown(*meshes[m], f, g, [&](VertexId v) { return shown[v.idx]; }, target), f.idx);
                     }
                 }
             }
