@@ -96,15 +96,15 @@ struct ShownCorner {
     glm::dvec3 fine, coarse;
 };
 
-// `grid`: the corner's base face's (null with detail).
-ShownCorner shown_corner(const BaseMesh& base, const SurfacePoint& p, int level, FaceGridLimits* grid, double tolerance) {
+// `grid`: the corner's base face's (null with detail); `limit`: the corner's limit point (its sample's).
+ShownCorner shown_corner(const BaseMesh& base, const SurfacePoint& p, int level, FaceGridLimits* grid, const glm::dvec3& limit,
+                         double tolerance) {
     ShownCorner c;
     // A cage with detail shows a vertex at its detail point whatever its display level.
     if (const DetailPositions* detail = base.detail()) {
         c.fine = c.coarse = detail->position(base, p);
         return c;
     }
-    const glm::dvec3 limit = grid->limit_position(p);
     c.fine = grid->control_point(p, level);
     c.coarse = c.fine;
     for (int k = p.level; k < level; ++k) {
@@ -229,18 +229,20 @@ const std::array<double, 3>& LimitErrorCriterion::triangle_values(const Hierarch
     const DetailPositions* detail = base_->detail();
     FaceGridLimits* grid = detail ? nullptr : &grids_.grid(t.face, t.level + 2);
     TrianglePoints points;
+    for (std::size_t s = 0; s < kSamplesPerTriangle; ++s) {
+        const SurfacePoint sample = t.sample(sample_weights()[s]);
+        points.limits[s] = detail ? detail->position(*base_, sample) : grid->limit_position(sample);
+    }
     for (int c = 0; c < 3; ++c) {
-        points.corners[static_cast<std::size_t>(c)] = shown_corner(*base_, t.corner(c), t.level, grid, tolerance_);
+        // The plan's sample 0, X0 itself, is corner c when X0 is.
+        const glm::dvec3& limit = points.limits[rotated_samples()[static_cast<std::size_t>(c)][0]];
+        points.corners[static_cast<std::size_t>(c)] = shown_corner(*base_, t.corner(c), t.level, grid, limit, tolerance_);
         SampleWeights w{};
         w[static_cast<std::size_t>(c)] = 2;
         w[static_cast<std::size_t>((c + 1) % 3)] = 2;
         const SurfacePoint midpoint = t.sample(w);
         points.midpoints[static_cast<std::size_t>(c)] =
             detail ? detail->position(*base_, midpoint) : grid->control_point(midpoint, midpoint.level);
-    }
-    for (std::size_t s = 0; s < kSamplesPerTriangle; ++s) {
-        const SurfacePoint sample = t.sample(sample_weights()[s]);
-        points.limits[s] = detail ? detail->position(*base_, sample) : grid->limit_position(sample);
     }
     return triangles_.emplace(key, edge_values(points, samples_)).first->second;
 }
