@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <span>
 #include <stdexcept>
@@ -35,13 +36,15 @@ const std::array<Tiling, 4> kTilings{{
     {{{X1, M12, M20}, {X1, M20, X0}}},
 }};
 
-// A sample in a tile: the tile's nodes and the sample's barycentric weights over them.
-struct Interpolation {
-    bool covered = false;  // the sample lies in a tile of level l
-    std::size_t tile = 0;  // which of the tiling's tiles (the first that holds it)
+// A sample in a tile of level l: which sample, its barycentric weights over the tile's nodes, and
+// the nodes it does not depend on (bit i for node i: weight 0).
+struct TileSample {
+    std::size_t sample = 0;
     std::array<double, 3> weights{};
+    unsigned unused_nodes = 0;
 };
-using SamplePlan = std::array<std::array<Interpolation, kSamplesPerTriangle>, 4>;
+// [tiling][tile]: the samples each tile holds (a sample on a cut in the first).
+using SamplePlan = std::array<std::array<InlineVector<TileSample, kSamplesPerTriangle>, 2>, 4>;
 
 std::int64_t cross(const SampleWeights& p, const SampleWeights& q, const SampleWeights& r) {
     const std::int64_t ux = q[1] - p[1], uy = q[2] - p[2], vx = r[1] - p[1], vy = r[2] - p[2];
@@ -59,7 +62,8 @@ SamplePlan make_plan() {
                 const std::int64_t area = cross(a, b, d), wa = cross(q, b, d), wb = cross(a, q, d), wd = cross(a, b, q);
                 if (wa < 0 || wb < 0 || wd < 0) continue;
                 // Dyadic fractions: exact in doubles.
-                plan[c][s] = {true, k, {double(wa) / double(area), double(wb) / double(area), double(wd) / double(area)}};
+                const unsigned unused = (wa == 0 ? 1u : 0u) | (wb == 0 ? 2u : 0u) | (wd == 0 ? 4u : 0u);
+                plan[c][k].push_back({s, {double(wa) / double(area), double(wb) / double(area), double(wd) / double(area)}, unused});
                 break;
             }
         }
@@ -94,6 +98,7 @@ const SamplePlan& sample_plan() {
 // A corner of T as the rest of the mesh may show it: at T's level, or as coarse as its own error allows.
 struct ShownCorner {
     glm::dvec3 fine, coarse;
+    bool coarser = false;  // coarse is not fine, bit for bit (else showing it coarse repeats showing it fine)
 };
 
 // `grid`: the corner's base face's (null with detail); `limit`: the corner's limit point (its sample's).
@@ -114,6 +119,7 @@ ShownCorner shown_corner(const BaseMesh& base, const SurfacePoint& p, int level,
             break;
         }
     }
+    c.coarser = std::memcmp(&c.coarse, &c.fine, sizeof(glm::dvec3)) != 0;
     return c;
 }
 
@@ -136,33 +142,31 @@ const glm::dvec3& node_position(const TrianglePoints& t, std::size_t e, Node n, 
     }
 }
 
+// Whether node n, X0 at corner e, has a coarser position than its fine one (a midpoint has none).
+bool has_coarser(const TrianglePoints& t, std::size_t e, Node n) {
+    return n != M12 && n != M20 && t.corners[(e + static_cast<std::size_t>(n)) % 3].coarser;
+}
+
 // The largest distance to the limit surface of tiling c's pieces with X0 at corner e, over their
-// samples and every choice of fine or coarse for the corners a sample depends on. Each piece's
-// corners are ordered once per choice, for all its samples (the bits of interpolate), and the
-// square root is taken once, of the largest square (it is monotone: the same bits as the largest root).
+// samples and every choice of fine or coarse for the corners a sample depends on. A choice that
+// repeats another (coarse where the sample does not depend on the node, or where the node has no
+// coarser position) is left out: the same bits. Each piece's corners are ordered once per choice, for
+// all its samples (the bits of interpolate), and the square root is taken once, of the largest
+// square (it is monotone: the same bits as the largest root).
 double tiling_error(const TrianglePoints& t, std::size_t c, std::size_t e) {
-    const std::array<Interpolation, kSamplesPerTriangle>& plan = sample_plan()[c];
     double worst_squared = 0.0;
     for (std::size_t k = 0; k < kTilings[c].tiles.size(); ++k) {
         const Tile& tile = kTilings[c].tiles[k];
+        unsigned coarser = 0;  // bit i: node i has a coarser position
+        for (std::size_t i = 0; i < 3; ++i) coarser |= has_coarser(t, e, tile[i]) ? 1u << i : 0u;
         for (unsigned choice = 0; choice < 8; ++choice) {
+            if ((choice & coarser) != choice) continue;
             std::array<glm::dvec3, 3> at;
-            bool repeats = false;  // a midpoint has no coarser position: the choice with it fine
-            for (std::size_t i = 0; i < 3; ++i) {
-                const bool coarse = (choice >> i) & 1u;
-                repeats |= coarse && (tile[i] == M12 || tile[i] == M20);
-                at[i] = node_position(t, e, tile[i], coarse);
-            }
-            if (repeats) continue;
+            for (std::size_t i = 0; i < 3; ++i) at[i] = node_position(t, e, tile[i], (choice >> i) & 1u);
             const std::array<int, 3> order = interpolation_order(at);
-            for (std::size_t s = 0; s < kSamplesPerTriangle; ++s) {
-                const Interpolation& in = plan[s];
-                if (!in.covered || in.tile != k) continue;
-                // A corner the sample does not depend on: the choice is the same as with it fine.
-                bool repeated = false;
-                for (std::size_t i = 0; i < 3; ++i) repeated |= ((choice >> i) & 1u) && in.weights[i] == 0.0;
-                if (repeated) continue;
-                const glm::dvec3 d = t.limits[rotated_samples()[e][s]] - interpolate_in_order(at, order, in.weights);
+            for (const TileSample& in : sample_plan()[c][k]) {
+                if (choice & in.unused_nodes) continue;
+                const glm::dvec3 d = t.limits[rotated_samples()[e][in.sample]] - interpolate_in_order(at, order, in.weights);
                 worst_squared = std::max(worst_squared, glm::dot(d, d));
             }
         }
