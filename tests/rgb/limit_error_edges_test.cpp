@@ -41,7 +41,7 @@ std::vector<std::vector<Piece>> tilings(bool beside_the_edge) {
     return all;
 }
 
-long long cross(const Weights& p, const Weights& q, const Weights& r) {
+long long signed_area(const Weights& p, const Weights& q, const Weights& r) {
     return static_cast<long long>(q[1] - p[1]) * (r[2] - p[2]) - static_cast<long long>(q[2] - p[2]) * (r[1] - p[1]);
 }
 
@@ -69,13 +69,13 @@ double value_by_definition(rgb::HierarchyEvaluator& evaluator, const rgb::BaseMe
         for (const std::vector<Piece>& tiling : tilings(beside_the_edge))
             for (const Weights& q : rgb::sample_weights()) {
                 const auto piece = std::find_if(tiling.begin(), tiling.end(), [&](const Piece& p) {
-                    return cross(q, p[1], p[2]) >= 0 && cross(p[0], q, p[2]) >= 0 && cross(p[0], p[1], q) >= 0;
+                    return signed_area(q, p[1], p[2]) >= 0 && signed_area(p[0], q, p[2]) >= 0 && signed_area(p[0], p[1], q) >= 0;
                 });
                 if (piece == tiling.end()) continue;
                 const Piece& p = *piece;
-                const double area = double(cross(p[0], p[1], p[2]));
-                const std::array<double, 3> weights{double(cross(q, p[1], p[2])) / area, double(cross(p[0], q, p[2])) / area,
-                                                    double(cross(p[0], p[1], q)) / area};
+                const double area = double(signed_area(p[0], p[1], p[2]));
+                const std::array<double, 3> weights{double(signed_area(q, p[1], p[2])) / area, double(signed_area(p[0], q, p[2])) / area,
+                                                    double(signed_area(p[0], p[1], q)) / area};
                 const glm::dvec3& limit = limits.at(q);
                 for (int choice = 0; choice < 8; ++choice) {
                     std::array<glm::dvec3, 3> at;
