@@ -50,7 +50,6 @@ public:
     double tolerance() const { return tolerance_; }
 
 private:
-    struct Corner;
     struct TriangleKey {
         std::uint32_t face;
         int level;
@@ -61,8 +60,6 @@ private:
     struct TriangleKeyHash {
         std::size_t operator()(const TriangleKey& k) const noexcept;
     };
-    // `grid` (t's base face's, null with detail) gives the limit points.
-    Corner corner(const SurfacePoint& p, int level, FaceGridLimits* grid);
     // The values of the three edges of t (edge i: corner i to corner i+1), t in its canonical
     // rotation (smallest corner first); each triangle is evaluated once for all its edges.
     const std::array<double, 3>& triangle_values(const HierarchyTriangle& t);
