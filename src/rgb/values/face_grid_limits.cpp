@@ -4,7 +4,7 @@
 #include <array>
 #include <bit>
 
-#include "rgb/mesh/vertex_rules.h"
+#include "rgb/mesh/base_mesh.h"
 #include "rgb/rules/loop_rules.h"
 #include "rgb/values/hierarchy_evaluator.h"
 
@@ -19,6 +19,22 @@ void FaceGridLimits::start(std::uint32_t face, int level) {
         edge_slots_.resize(3 * stride_);
         evaluated_.resize(edge_slots_.size() * (kMaxLevel + 2));
         evaluated_stamps_.resize(evaluated_.size());
+        band_.resize(3 * 2 * (stride_ - 1));
+    }
+    for (std::size_t e = 0; e < 3; ++e) {
+        // Edge e runs from corner e + 1 to corner e + 2: base halfedge 3 face + e + 1.
+        const std::uint32_t h = 3 * face + static_cast<std::uint32_t>((e + 1) % 3), twin = base_.opposite(h);
+        Edge& edge = edges_[e];
+        if (twin == BaseMesh::kNone) {
+            edge.rule = EdgeRule::kBoundary;
+            edge.gamma = loop_gamma(6, true);
+        } else if (base_.edge_sharpness(h) == 0) {
+            // The twin runs from this face's corner e + 2 to its corner e + 1.
+            const std::uint8_t c = static_cast<std::uint8_t>(twin % 3);
+            edge = {EdgeRule::kDiamond, twin / 3, {static_cast<std::uint8_t>((c + 1) % 3), c, static_cast<std::uint8_t>((c + 2) % 3)}, loop_gamma(6, false)};
+        } else {
+            edge.rule = EdgeRule::kTagged;
+        }
     }
     ++stamp_;
 }
@@ -52,25 +68,80 @@ glm::dvec3 FaceGridLimits::boundary_value(const Point& p, int k) {
     const int zeros = (p[0] == 0) + (p[1] == 0) + (p[2] == 0);
     if (zeros > 1) return evaluators_value(p, k);
     const int edge = p[0] == 0 ? 0 : p[1] == 0 ? 1 : 2;
-    EdgeSlot& e = edge_slots_[std::size_t(edge) * stride_ + p[static_cast<std::size_t>((edge + 1) % 3)]];
+    const Edge& rule = edges_[static_cast<std::size_t>(edge)];
+    if (rule.rule == EdgeRule::kTagged) return evaluators_value(p, k);
+    const std::uint32_t t = p[static_cast<std::size_t>((edge + 1) % 3)];
+    EdgeSlot& e = edge_slots_[std::size_t(edge) * stride_ + t];
+    const int level = level_of(p);
     if (e.stamp != stamp_) {
-        const SurfacePoint q = surface_point(p);
-        e.tagged = !follows_untagged_rules(base_, q);
-        if (!e.tagged) {
-            e.insertion = evaluator_.insertion_position(q);
-            e.gamma = loop_gamma(6, is_boundary(base_, q));
-        }
+        e.insertion = rule.rule == EdgeRule::kDiamond ? diamond_insertion(edge, t, level) : evaluator_.insertion_position(surface_point(p));
         e.stamp = stamp_;
     }
-    if (e.tagged) return evaluators_value(p, k);
-    const int level = level_of(p);
     if (k <= level) return e.insertion;
     if (e.limit_stamp != stamp_) {
-        e.limit = evaluator_.limit_position(surface_point(p));
+        e.limit = rule.rule == EdgeRule::kDiamond ? diamond_limit(edge, t, level) : evaluator_.limit_position(surface_point(p));
         e.limit_stamp = stamp_;
     }
     // As HierarchyEvaluator::control_point, and its limit where k is beyond every level.
-    return k > kMaxLevel ? e.limit : closed_form(e.insertion, e.limit, e.gamma, k - level);
+    return k > kMaxLevel ? e.limit : closed_form(e.insertion, e.limit, rule.gamma, k - level);
+}
+
+FaceGridLimits::Point FaceGridLimits::on_edge(int edge, std::uint32_t t) const {
+    Point p;
+    p[static_cast<std::size_t>(edge)] = 0;
+    p[static_cast<std::size_t>((edge + 1) % 3)] = t;
+    p[static_cast<std::size_t>((edge + 2) % 3)] = (std::uint32_t(1) << level_) - t;
+    return p;
+}
+
+// The edge point's parent edge runs along the base edge; its opposite points are one step of the
+// parent level into this face and into the neighbour.
+glm::dvec3 FaceGridLimits::diamond_insertion(int edge, std::uint32_t t, int level) {
+    const std::uint32_t unit = std::uint32_t(1) << (level_ - level);
+    Point inward = on_edge(edge, t - unit);
+    inward[static_cast<std::size_t>(edge)] = 2 * unit, inward[static_cast<std::size_t>((edge + 2) % 3)] -= 2 * unit;
+    return interior_edge_point(control_point(on_edge(edge, t + unit), level - 1), control_point(on_edge(edge, t - unit), level - 1),
+                               control_point(inward, level - 1), band_insertion(edge, level - 1, (t - unit) / (2 * unit)));
+}
+
+// The ring: two neighbours along the edge, two in this face, two in the neighbour.
+glm::dvec3 FaceGridLimits::diamond_limit(int edge, std::uint32_t t, int level) {
+    const std::uint32_t unit = std::uint32_t(1) << (level_ - level);
+    const std::size_t e = static_cast<std::size_t>(edge), next = (e + 1) % 3, previous = (e + 2) % 3;
+    Point inward[2] = {on_edge(edge, t), on_edge(edge, t)};
+    inward[0][e] = unit, inward[0][next] -= unit;
+    inward[1][e] = unit, inward[1][previous] -= unit;
+    std::array<glm::dvec3, 6> ring{control_point(on_edge(edge, t + unit), level), control_point(on_edge(edge, t - unit), level),
+                                   control_point(inward[0], level),        control_point(inward[1], level),
+                                   band_insertion(edge, level, t / unit - 1), band_insertion(edge, level, t / unit)};
+    return interior_limit(diamond_insertion(edge, t, level), ring);
+}
+
+// The neighbour's point (b, 2^level - 1 - b, 1) over its corners at the edge's next and previous
+// corners and opposite the edge, at its own level (its far numerator is odd). Inside the neighbour,
+// its parent edge runs from the base edge to the band one level coarser, and so do its opposites.
+glm::dvec3 FaceGridLimits::band_insertion(int edge, int level, std::uint32_t b) {
+    BandSlot& slot = band_[std::size_t(edge) * 2 * (stride_ - 1) + (std::size_t(1) << level) + b];
+    if (slot.stamp == stamp_) return slot.insertion;
+    const std::uint32_t across = (std::uint32_t(1) << level) - 1 - b;
+    if (b == 0 || across == 0) {
+        // On another edge of the neighbour (or its far corner): the evaluator's.
+        const Edge& rule = edges_[static_cast<std::size_t>(edge)];
+        SurfacePoint q{rule.neighbour, {}, level};
+        q.a[rule.corners[0]] = b, q.a[rule.corners[1]] = across, q.a[rule.corners[2]] = 1;
+        slot.insertion = evaluator_.control_point(reduced(q), level);
+    } else {
+        const std::uint32_t unit = std::uint32_t(1) << (level_ - level);
+        const int parent = level - 1;
+        // b odd: the parent edge runs from (b + 1, across, 0) to (b - 1, across, 2); b even, from
+        // (b, across + 1, 0) to (b, across - 1, 2).
+        const std::uint32_t shift = b & 1u;
+        slot.insertion = interior_edge_point(control_point(on_edge(edge, (b + shift) * unit), parent), band_insertion(edge, parent, (b - shift) / 2),
+                                             control_point(on_edge(edge, (b + 2 - 3 * shift) * unit), parent),
+                                             band_insertion(edge, parent, (b + 3 * shift - 2) / 2));
+    }
+    slot.stamp = stamp_;
+    return slot.insertion;
 }
 
 glm::dvec3 FaceGridLimits::evaluators_value(const Point& p, int k) {
