@@ -39,7 +39,8 @@ std::vector<rgb::SurfacePoint> face_points(std::uint32_t g, int k, std::uint32_t
 
 // Every vertex of Σlevel of every face, its limit and its control points at each level from its own
 // to the grid's deepest, in a shuffled order.
-void expect_evaluators_values(const rgb::BaseMesh& base, int level = kGridTestLevel) {
+// With `fill`, the grid computes every point first (FaceGridLimits::fill).
+void expect_evaluators_values(const rgb::BaseMesh& base, int level = kGridTestLevel, bool fill = false) {
     rgb::HierarchyEvaluator fallback(base), reference(base);
     rgb::FaceGridLimits grid(base, fallback);
     std::size_t inside = 0;
@@ -49,6 +50,7 @@ void expect_evaluators_values(const rgb::BaseMesh& base, int level = kGridTestLe
     };
     for (std::uint32_t g = 0; g < base.num_faces(); ++g) {
         grid.start(g, level);
+        if (fill) grid.fill();
         for (const rgb::SurfacePoint& p : face_points(g, level, g)) {
             ASSERT_NO_FATAL_FAILURE(expect_same(grid.limit_position(p), reference.limit_position(p), p, -1));
             for (int k = p.level; k <= rgb::FaceGridLimits::kMaxLevel; ++k)
@@ -102,6 +104,13 @@ TEST(FaceGridLimits, AreTheEvaluatorsBesideCreasesSemiSharpEdgesAndCornersOfAnOp
     features.corners = {{5, rgb::kInfiniteSharpness}};
     features.boundary = rgb::BoundaryInterpolation::EdgeAndCorner;
     expect_evaluators_values(rgb::BaseMesh(m.positions, m.triangles, features));
+}
+
+TEST(FaceGridLimits, FilledAreTheEvaluatorsOnClosedOpenAndTaggedMeshes) {
+    const TestMesh closed = bipyramid(7), open = grid_with_holes(4, 4, 3);
+    expect_evaluators_values(rgb::BaseMesh(closed.positions, closed.triangles), kGridTestLevel, true);
+    expect_evaluators_values(rgb::BaseMesh(open.positions, open.triangles), kGridTestLevel, true);
+    expect_evaluators_values(tagged_bipyramid(), 5, true);
 }
 
 TEST(FaceGridLimits, AnswerForUnreducedPointsDeeperThanTheGridAndOfOtherFaces) {

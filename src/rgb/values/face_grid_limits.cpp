@@ -10,6 +10,15 @@
 
 namespace rgb {
 
+namespace {
+// As HierarchyEvaluator::gamma for a point inside a face or an untagged interior edge (valence 6, not
+// on the boundary).
+double regular_gamma() {
+    static const double gamma = loop_gamma(6, false);
+    return gamma;
+}
+}  // namespace
+
 void FaceGridLimits::start(std::uint32_t face, int level) {
     face_ = face;
     level_ = std::clamp(level, 0, kMaxLevel);
@@ -31,7 +40,7 @@ void FaceGridLimits::start(std::uint32_t face, int level) {
         } else if (base_.edge_sharpness(h) == 0) {
             // The twin runs from this face's corner e + 2 to its corner e + 1.
             const std::uint8_t c = static_cast<std::uint8_t>(twin % 3);
-            edge = {EdgeRule::kDiamond, twin / 3, {static_cast<std::uint8_t>((c + 1) % 3), c, static_cast<std::uint8_t>((c + 2) % 3)}, loop_gamma(6, false)};
+            edge = {EdgeRule::kDiamond, twin / 3, {static_cast<std::uint8_t>((c + 1) % 3), c, static_cast<std::uint8_t>((c + 2) % 3)}, regular_gamma()};
         } else {
             edge.rule = EdgeRule::kTagged;
         }
@@ -199,12 +208,64 @@ glm::dvec3 FaceGridLimits::limit(const Point& p, int level) {
 
 glm::dvec3 FaceGridLimits::control_point(const Point& p, int k) {
     if (!inside(p)) return boundary_value(p, k);
-    // As HierarchyEvaluator::control_point for an interior point (valence 6, not on the boundary).
-    static const double gamma = loop_gamma(6, false);
     const int level = level_of(p);
     const glm::dvec3 own = insertion(p, level);
     if (k <= level) return own;
-    return closed_form(own, limit(p, level), gamma, k - level);
+    return closed_form(own, limit(p, level), regular_gamma(), k - level);
+}
+
+// Level by level: every point's value at level j from the slots (those of coarser levels by the
+// closed form, the new ones by the edge rule over level j - 1's values), then the new points' limits
+// over their rings at level j; the points on the face's boundary as boundary_value gives them.
+void FaceGridLimits::fill() {
+    std::vector<glm::dvec3>&previous = fill_values_[0], &current = fill_values_[1];
+    previous.resize(4);
+    for (std::uint32_t b1 = 0; b1 <= 1; ++b1)
+        for (std::uint32_t b2 = 0; b1 + b2 <= 1; ++b2) {
+            const std::uint32_t n = std::uint32_t(1) << level_;
+            previous[b1 * 2 + b2] = boundary_value({n - (b1 + b2) * n, b1 * n, b2 * n}, 0);
+        }
+    for (int j = 1; j <= level_; ++j) {
+        const std::uint32_t side = std::uint32_t(1) << j, unit = std::uint32_t(1) << (level_ - j);
+        const std::size_t row = side + 1, parent_row = side / 2 + 1;
+        current.resize(row * row);
+        // Level j - 1's value of a point given by its level-j numerators (all even).
+        const auto parent = [&](std::uint32_t b1, std::uint32_t b2) { return previous[(b1 / 2) * parent_row + b2 / 2]; };
+        for (std::uint32_t b1 = 0; b1 <= side; ++b1)
+            for (std::uint32_t b2 = 0; b1 + b2 <= side; ++b2) {
+                const std::uint32_t b0 = side - b1 - b2;
+                const Point p{b0 * unit, b1 * unit, b2 * unit};
+                glm::dvec3& value = current[b1 * row + b2];
+                if (!inside(p)) {
+                    value = boundary_value(p, j);
+                    continue;
+                }
+                Slot& s = slots_[slot(p)];
+                if (((b0 | b1 | b2) & 1u) == 0) {
+                    value = closed_form(s.insertion, s.limit, regular_gamma(), j - level_of(p));
+                    continue;
+                }
+                // As insertion(): the parent edge joins the two odd numerators' neighbours.
+                if ((b0 & 1u) == 0)
+                    value = interior_edge_point(parent(b1 - 1, b2 + 1), parent(b1 + 1, b2 - 1), parent(b1 - 1, b2 - 1), parent(b1 + 1, b2 + 1));
+                else if ((b1 & 1u) == 0)
+                    value = interior_edge_point(parent(b1, b2 + 1), parent(b1, b2 - 1), parent(b1 + 2, b2 - 1), parent(b1 - 2, b2 + 1));
+                else
+                    value = interior_edge_point(parent(b1 + 1, b2), parent(b1 - 1, b2), parent(b1 - 1, b2 + 2), parent(b1 + 1, b2 - 2));
+                s.insertion = value;
+                s.insertion_stamp = stamp_;
+            }
+        for (std::uint32_t b1 = 1; b1 < side; ++b1)
+            for (std::uint32_t b2 = 1; b1 + b2 < side; ++b2) {
+                if ((((side - b1 - b2) | b1 | b2) & 1u) == 0) continue;
+                std::array<glm::dvec3, 6> ring{current[(b1 + 1) * row + b2], current[(b1 - 1) * row + b2],    current[b1 * row + b2 + 1],
+                                               current[b1 * row + b2 - 1],   current[(b1 + 1) * row + b2 - 1], current[(b1 - 1) * row + b2 + 1]};
+                Slot& s = slots_[slot({(side - b1 - b2) * unit, b1 * unit, b2 * unit})];
+                s.limit = interior_limit(current[b1 * row + b2], ring);
+                s.limit_stamp = stamp_;
+            }
+        std::swap(previous, current);
+    }
 }
 
 }  // namespace rgb

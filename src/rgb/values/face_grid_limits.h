@@ -48,6 +48,10 @@ public:
     // p^k of a point of the started face at a level up to the started one, for k from its level to
     // kMaxLevel (so at its level its insertion position), as HierarchyEvaluator::control_point.
     glm::dvec3 control_point(const SurfacePoint& p, int k);
+    // Computes the values of every point of the started face at once, level by level over arrays,
+    // for a caller that will ask for (nearly) all of them: a few times cheaper than asking for them
+    // one by one, which recurses through each point's stencil and ring. The same values.
+    void fill();
     std::uint32_t face() const { return face_; }
     int level() const { return level_; }
 
@@ -114,6 +118,8 @@ private:
         std::uint32_t stamp = 0;
     };
     std::vector<BandSlot> band_;
+    // fill()'s values of every point at the level before and at the level it computes.
+    std::array<std::vector<glm::dvec3>, 2> fill_values_;
 };
 
 }  // namespace rgb
