@@ -26,15 +26,19 @@ bool lexicographic_less(const glm::dvec3& a, const glm::dvec3& b) {
     return a.z < b.z;
 }
 
-// Sorts a regular vertex's six ring points with 12 compare-exchanges (an optimal sorting network,
-// checked on every 0-1 input) instead of std::sort's general loop. Points that compare equal
-// have equal coordinates (at most zeros of either sign, which add alike), so any correct sort gives
-// the same sum.
-void sort_six(std::span<glm::dvec3> ring) {
+// The sum of a regular vertex's six ring points in sorted order, sorted by 12 compare-exchanges of
+// pointers (an optimal sorting network, checked on every 0-1 input) instead of std::sort moving the
+// points. Points that compare equal have equal coordinates (at most zeros of either sign, which add
+// alike), so any correct sort gives the same sum.
+glm::dvec3 sorted_sum_of_six(std::span<const glm::dvec3> ring) {
     static constexpr std::array<std::array<std::uint8_t, 2>, 12> kNetwork{
         {{0, 5}, {1, 3}, {2, 4}, {1, 2}, {3, 4}, {0, 3}, {2, 5}, {0, 1}, {2, 3}, {4, 5}, {1, 2}, {3, 4}}};
+    std::array<const glm::dvec3*, 6> order{&ring[0], &ring[1], &ring[2], &ring[3], &ring[4], &ring[5]};
     for (const auto& [i, j] : kNetwork)
-        if (lexicographic_less(ring[j], ring[i])) std::swap(ring[i], ring[j]);
+        if (lexicographic_less(*order[j], *order[i])) std::swap(order[i], order[j]);
+    glm::dvec3 sum(0.0);
+    for (const glm::dvec3* p : order) sum += *p;
+    return sum;
 }
 }  // namespace
 
@@ -60,12 +64,13 @@ glm::dvec3 interior_edge_point(const glm::dvec3& a, const glm::dvec3& b, const g
 glm::dvec3 boundary_edge_point(const glm::dvec3& a, const glm::dvec3& b) { return 0.5 * (a + b); }
 
 glm::dvec3 interior_limit(const glm::dvec3& centre, std::span<glm::dvec3> ring) {
-    if (ring.size() == 6)
-        sort_six(ring);
-    else
-        std::sort(ring.begin(), ring.end(), lexicographic_less);
     glm::dvec3 sum(0.0);
-    for (const glm::dvec3& p : ring) sum += p;
+    if (ring.size() == 6) {
+        sum = sorted_sum_of_six(ring);
+    } else {
+        std::sort(ring.begin(), ring.end(), lexicographic_less);
+        for (const glm::dvec3& p : ring) sum += p;
+    }
     const int n = static_cast<int>(ring.size());
     static const double regular = loop_limit_ring_weight(6);
     const double c = n == 6 ? regular : loop_limit_ring_weight(n);
