@@ -50,7 +50,8 @@ public:
     glm::dvec3 control_point(const SurfacePoint& p, int k);
     // Computes the values of every point of the started face at once, level by level over arrays,
     // for a caller that will ask for (nearly) all of them: a few times cheaper than asking for them
-    // one by one, which recurses through each point's stencil and ring. The same values.
+    // one by one, which recurses through each point's stencil and ring. The same values. Two arrays
+    // of one level's values beside the slots: 12 MB more at kMaxLevel.
     void fill();
     std::uint32_t face() const { return face_; }
     int level() const { return level_; }
