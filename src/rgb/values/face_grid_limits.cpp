@@ -88,7 +88,7 @@ glm::dvec3 FaceGridLimits::boundary_value(const Point& p, int k) {
     }
     if (k <= level) return e.insertion;
     if (e.limit_stamp != stamp_) {
-        e.limit = rule.rule == EdgeRule::kDiamond ? diamond_limit(edge, t, level) : evaluator_.limit_position(surface_point(p));
+        e.limit = rule.rule == EdgeRule::kDiamond ? diamond_limit(edge, t, level, e.insertion) : evaluator_.limit_position(surface_point(p));
         e.limit_stamp = stamp_;
     }
     // As HierarchyEvaluator::control_point, and its limit where k is beyond every level.
@@ -114,7 +114,7 @@ glm::dvec3 FaceGridLimits::diamond_insertion(int edge, std::uint32_t t, int leve
 }
 
 // The ring: two neighbours along the edge, two in this face, two in the neighbour.
-glm::dvec3 FaceGridLimits::diamond_limit(int edge, std::uint32_t t, int level) {
+glm::dvec3 FaceGridLimits::diamond_limit(int edge, std::uint32_t t, int level, const glm::dvec3& insertion) {
     const std::uint32_t unit = std::uint32_t(1) << (level_ - level);
     const std::size_t e = static_cast<std::size_t>(edge), next = (e + 1) % 3, previous = (e + 2) % 3;
     Point inward[2] = {on_edge(edge, t), on_edge(edge, t)};
@@ -123,7 +123,7 @@ glm::dvec3 FaceGridLimits::diamond_limit(int edge, std::uint32_t t, int level) {
     std::array<glm::dvec3, 6> ring{control_point(on_edge(edge, t + unit), level), control_point(on_edge(edge, t - unit), level),
                                    control_point(inward[0], level),        control_point(inward[1], level),
                                    band_insertion(edge, level, t / unit - 1), band_insertion(edge, level, t / unit)};
-    return interior_limit(diamond_insertion(edge, t, level), ring);
+    return interior_limit(insertion, ring);
 }
 
 // The neighbour's point (b, 2^level - 1 - b, 1) over its corners at the edge's next and previous

@@ -80,9 +80,9 @@ private:
     // The point of base edge `edge` (the one opposite that corner) whose next corner's numerator is t.
     Point on_edge(int edge, std::uint32_t t) const;
     // An untagged interior edge's point at numerator t of its own level: Loop's rules over the two
-    // faces.
+    // faces (its limit from its insertion position).
     glm::dvec3 diamond_insertion(int edge, std::uint32_t t, int level);
-    glm::dvec3 diamond_limit(int edge, std::uint32_t t, int level);
+    glm::dvec3 diamond_limit(int edge, std::uint32_t t, int level, const glm::dvec3& insertion);
     // The insertion position of the neighbour's point across `edge` at `level` one step from the
     // edge, `b` steps from the edge's next corner.
     glm::dvec3 band_insertion(int edge, int level, std::uint32_t b);
