@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cstdint>
 #include <cmath>
 #include <numbers>
 
@@ -31,11 +30,17 @@ bool lexicographic_less(const glm::dvec3& a, const glm::dvec3& b) {
 // points. Points that compare equal have equal coordinates (at most zeros of either sign, which add
 // alike), so any correct sort gives the same sum.
 glm::dvec3 sorted_sum_of_six(std::span<const glm::dvec3> ring) {
-    static constexpr std::array<std::array<std::uint8_t, 2>, 12> kNetwork{
-        {{0, 5}, {1, 3}, {2, 4}, {1, 2}, {3, 4}, {0, 3}, {2, 5}, {0, 1}, {2, 3}, {4, 5}, {1, 2}, {3, 4}}};
     std::array<const glm::dvec3*, 6> order{&ring[0], &ring[1], &ring[2], &ring[3], &ring[4], &ring[5]};
-    for (const auto& [i, j] : kNetwork)
+    // Written out rather than looped over a table, so that the pointers stay in registers.
+    const auto exchange = [&order](std::size_t i, std::size_t j) {
         if (lexicographic_less(*order[j], *order[i])) std::swap(order[i], order[j]);
+    };
+    // The network's five layers.
+    exchange(0, 5), exchange(1, 3), exchange(2, 4);
+    exchange(1, 2), exchange(3, 4);
+    exchange(0, 3), exchange(2, 5);
+    exchange(0, 1), exchange(2, 3), exchange(4, 5);
+    exchange(1, 2), exchange(3, 4);
     glm::dvec3 sum(0.0);
     for (const glm::dvec3* p : order) sum += *p;
     return sum;
