@@ -23,7 +23,8 @@ glm::dvec3 interior_edge_point(const glm::dvec3& a, const glm::dvec3& b, const g
 // The odd rule on a boundary edge: the midpoint.
 glm::dvec3 boundary_edge_point(const glm::dvec3& a, const glm::dvec3& b);
 // The limit of an interior vertex from its own-level value and its ring's values at that level. The
-// ring is sorted in place first, so the order in which it was gathered cannot change the bits.
+// ring is summed in sorted order, so the order in which it was gathered cannot change the bits (it
+// may be left reordered).
 glm::dvec3 interior_limit(const glm::dvec3& centre, std::span<glm::dvec3> ring);
 // The limit of a boundary vertex from its two boundary neighbours at its own level.
 glm::dvec3 boundary_limit(const glm::dvec3& centre, const glm::dvec3& u, const glm::dvec3& w);

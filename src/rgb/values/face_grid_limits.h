@@ -10,8 +10,15 @@
 // valence-6 mask over its six neighbours, and its value at a finer level the closed form between the
 // two: the formulas of loop_rules.h that the evaluator applies, on the same values (the edge rule and
 // the limit mask do not depend on the order of their points), so the same bits. Those values are kept
-// in arrays indexed by the point's numerators. Every point on the base face's boundary (its edges and
-// corners, where base faces meet, tags apply and the base mesh's valences show) is the evaluator's.
+// in arrays indexed by the point's numerators.
+//
+// A point strictly inside an untagged interior base edge is such a vertex too, and so are the points
+// of the neighbouring face across it: the grid computes those the same way (the "diamond" of the two
+// faces), keeping the neighbour's points in a band along the edge. Only their insertion positions are
+// ever needed there, and only of the points one step of their own level away from the edge (the
+// edge points' stencils and rings, and those points' stencils, reach no further), so the band holds
+// 2^(m+1) points of each level m. The evaluator answers for the rest: base vertices, points on
+// boundary or tagged base edges, and the neighbour's points on its other edges.
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -41,6 +48,11 @@ public:
     // p^k of a point of the started face at a level up to the started one, for k from its level to
     // kMaxLevel (so at its level its insertion position), as HierarchyEvaluator::control_point.
     glm::dvec3 control_point(const SurfacePoint& p, int k);
+    // Computes the values of every point of the started face at once, level by level over arrays,
+    // for a caller that will ask for (nearly) all of them: a few times cheaper than asking for them
+    // one by one, which recurses through each point's stencil and ring. The same values. Two arrays
+    // of one level's values beside the slots: 12 MB more at kMaxLevel.
+    void fill();
     std::uint32_t face() const { return face_; }
     int level() const { return level_; }
 
@@ -60,11 +72,20 @@ private:
     glm::dvec3 control_point(const Point& p, int k);
     // The value of a point on the face's boundary at level k (kMaxLevel + 1: its limit), kept: the
     // points inside next to the boundary ask for each several times. A point on an untagged base edge
-    // keeps its insertion position and limit from the evaluator and gives its values at finer levels
-    // by the closed form, as the evaluator does; a base vertex or tagged point asks the evaluator for
-    // each level.
+    // keeps its insertion position and limit (the diamond's, or on a boundary edge the evaluator's)
+    // and gives its values at finer levels by the closed form, as the evaluator does; a base vertex
+    // or tagged point asks the evaluator for each level.
     glm::dvec3 boundary_value(const Point& p, int k);
     glm::dvec3 evaluators_value(const Point& p, int k);
+    // The point of base edge `edge` (the one opposite that corner) whose next corner's numerator is t.
+    Point on_edge(int edge, std::uint32_t t) const;
+    // An untagged interior edge's point at numerator t of its own level: Loop's rules over the two
+    // faces (its limit from its insertion position).
+    glm::dvec3 diamond_insertion(int edge, std::uint32_t t, int level);
+    glm::dvec3 diamond_limit(int edge, std::uint32_t t, int level, const glm::dvec3& insertion);
+    // The insertion position of the neighbour's point across `edge` at `level` one step from the
+    // edge, `b` steps from the edge's next corner.
+    glm::dvec3 band_insertion(int edge, int level, std::uint32_t b);
 
     const BaseMesh& base_;
     HierarchyEvaluator& evaluator_;
@@ -73,17 +94,33 @@ private:
     std::size_t stride_ = 1;
     std::uint32_t stamp_ = 0;  // the slots written since the last start hold it
     std::vector<Slot> slots_;
+    // How the started face's edges' points are computed, and across an interior edge the neighbour
+    // and its corners at the edge's next and previous corners and opposite it.
+    enum class EdgeRule : std::uint8_t { kDiamond, kBoundary, kTagged };
+    struct Edge {
+        EdgeRule rule = EdgeRule::kTagged;
+        std::uint32_t neighbour = 0;
+        std::array<std::uint8_t, 3> corners{};
+        double gamma = 0.0;
+    };
+    std::array<Edge, 3> edges_;
     // Points on the boundary by edge (the first zero numerator) and position along it (the next
     // numerator); the evaluator's values by that and level.
     struct EdgeSlot {
         glm::dvec3 insertion{0.0}, limit{0.0};
-        double gamma = 0.0;
         std::uint32_t stamp = 0, limit_stamp = 0;
-        bool tagged = false;
     };
     std::vector<EdgeSlot> edge_slots_;
     std::vector<glm::dvec3> evaluated_;
     std::vector<std::uint32_t> evaluated_stamps_;
+    // The neighbours' bands: by edge, then 2^m + b for the point of level m b steps along.
+    struct BandSlot {
+        glm::dvec3 insertion{0.0};
+        std::uint32_t stamp = 0;
+    };
+    std::vector<BandSlot> band_;
+    // fill()'s values of every point at the level before and at the level it computes.
+    std::array<std::vector<glm::dvec3>, 2> fill_values_;
 };
 
 }  // namespace rgb

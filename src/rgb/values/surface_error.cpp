@@ -214,6 +214,11 @@ std::vector<SurfaceError> surface_errors_at(std::span<const Mesh* const> meshes,
             evaluator.clear();
             for (std::uint32_t g = chunk_start[c]; g < chunk_start[c + 1]; ++g) {
                 grid.start(g, deepest[g]);
+                // The finest mesh refines g uniformly (4^l faces of level l = deepest - 2): its samples
+                // are every point of the grid, cheaper computed at once.
+                if (grid.level() == deepest[g] && deepest[g] >= 2 &&
+                    groups[0].start[g + 1] - groups[0].start[g] == std::uint32_t(1) << (2 * (deepest[g] - 2)))
+                    grid.fill();
                 for (std::size_t m = 0; m < meshes.size(); ++m) {
                     const std::vector<glm::dvec3>& shown = corner_positions[m];
                     const FacesByBaseFace& group = groups[m];
