@@ -29,7 +29,7 @@ void expect_exact(const glm::dvec3& got, const glm::dvec3& expected, const rgb::
         << "face " << p.face << " point " << p.a[0] << ',' << p.a[1] << ',' << p.a[2] << '/' << p.level << " at level " << k;
 }
 
-void expect_evaluators_values(const rgb::BaseMesh& base) {
+void expect_cache_gives_evaluators_values(const rgb::BaseMesh& base) {
     struct Ask {
         rgb::SurfacePoint point;
         int grid_level;
@@ -59,12 +59,12 @@ void expect_evaluators_values(const rgb::BaseMesh& base) {
 }
 
 TEST(FaceGridCache, GivesTheEvaluatorsValuesWithCreasesCornersAndSemiSharpEdges) {
-    expect_evaluators_values(tagged_bipyramid());
+    expect_cache_gives_evaluators_values(tagged_bipyramid());
 }
 
 TEST(FaceGridCache, GivesTheEvaluatorsValuesOnAnOpenMesh) {
     const TestMesh m = grid(3, 2);
-    expect_evaluators_values(rgb::BaseMesh(m.positions, m.triangles));
+    expect_cache_gives_evaluators_values(rgb::BaseMesh(m.positions, m.triangles));
 }
 
 TEST(DisplayedSurfaceError, IsThePerFaceMeasureThroughTheEvaluator) {
