@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <map>
 #include <random>
+#include <span>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -59,6 +60,11 @@ TEST(BandLists, ReusesTheChunksOfTakenBands) {
     const std::size_t capacity = lists.capacity();
     EXPECT_EQ(capacity * sizeof(Item), room.size());
     EXPECT_TRUE(lists.reserve(50000).empty());  // there is room already
+    // ... which memory() still gives, for a faulting-in that starts again.
+    const std::vector<std::span<std::byte>> memory = lists.memory();
+    ASSERT_EQ(memory.size(), 1u);
+    EXPECT_EQ(memory[0].data(), room.data());
+    EXPECT_EQ(memory[0].size(), room.size());
     std::vector<Item> taken;
     for (std::uint32_t round = 0; round < 10; ++round) {
         for (std::uint32_t i = 0; i < 90000; ++i) lists.push(i % 3, Item{round, i, i});

@@ -53,6 +53,13 @@ public:
         add_block((items - free_.size() * kChunk + kChunk - 1) / kChunk);
         return std::as_writable_bytes(std::span(blocks_.back()));
     }
+    // The whole pool's memory, held or free: for a faulting-in that starts again after one stopped
+    // part way (a run that begins anew), where reserve finds the room there and returns none.
+    std::vector<std::span<std::byte>> memory() {
+        std::vector<std::span<std::byte>> spans;
+        for (ZeroedVector<Item>& block : blocks_) spans.push_back(std::as_writable_bytes(std::span(block)));
+        return spans;
+    }
 
     // The band's items, in the order pushed, into `out` (replacing what it held); the band is empty after.
     template <class Vector>

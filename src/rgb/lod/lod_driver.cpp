@@ -151,19 +151,23 @@ void LodDriver::start_refining() {
     if (expected > 0) {
         faces = to_budget ? room_for_run() : expected;
         vertices = faces / 2 + mesh_.num_vertices();
-        mesh_.reserve(faces, vertices);
-        // The coarser vertices get their limits cached (finer splits and keys need them): 268k for
-        // a budget of 1.5M triangles on a torus, so a quarter of the budget leaves room to spare.
-        mesh_.reserve_limits(expected / 4);
-        // The start's limits then land all over the table: its pages are faulted in on another core
-        // meanwhile (33 ms of the main thread's time at 1.5M on a machine with slow page faults).
-        limit_prefault_ = std::make_unique<Prefault>(std::vector{mesh_.limit_table()});
-        face_added_.resize(std::max(face_added_.size(), faces));
     }
+    // The mesh before a uniform start, to go back to in one copy should the start prove wrong (rather
+    // than by removing its vertices one by one): copied before the table of limits is reserved, whose
+    // room the copy would take too (megabytes of fresh pages, a tenth of a budget's engine time).
+    const int start_level = uniform_start_to_try();
+    if (start_level > 0) before_uniform_start_ = std::make_unique<Mesh>(mesh_);
     key_base_vertices(vertices);
     report_before_start_ = report_;
-    if (faces > 0 && !prefault_) prefault_room(faces, vertices);
-    if (settings_.uniform_start && settings_.threshold <= 0.0 && !uniform_start_failed_) refine_uniform_start();
+    // The coarser vertices get their limits cached (finer splits and keys need them): 268k for a
+    // budget of 1.5M triangles on a torus, so a quarter of the budget leaves room to spare.
+    if (expected > 0) reserve_room(faces, vertices, expected / 4);
+    if (start_level > 0) {
+        refine_uniform_start(start_level);
+        // Undone at once, it went back to the copy, whose table of limits has no room, and the
+        // assignment stopped the threads faulting the room in.
+        if (uniform_start_failed_ && expected > 0) reserve_room(faces, vertices, expected / 4);
+    }
     // The green edges keyed and queued a block at a time, so that the lists stay small and in cache
     // (for the whole mesh they were megabytes of fresh memory: a page fault per 4 KiB written).
     constexpr std::size_t kEdgesPerBlock = 1 << 15;

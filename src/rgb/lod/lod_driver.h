@@ -63,8 +63,8 @@ struct LodSettings {
     // split where the budget stops) the run starts again the ordinary way, from a copy of the mesh
     // kept before the start. On a mesh of very different triangle sizes, where an estimate from the
     // base's edges shows it would prove wrong, it is not tried (uniform_start_hopeless); where the
-    // same estimate from the start's own finest edges shows it, it is undone at once
-    // (uniform_start_overflows).
+    // same estimate from the start's own finest edges shows it, it is undone at once, judged from the
+    // level below before the finest is made (uniform_start_overflows).
     bool uniform_start = false;
     // For a run with a threshold that its budget usually stops first (the editor's automatic LOD,
     // whose threshold is a floor under the budget): room for the budget reserved and faulted in ahead,
@@ -151,13 +151,16 @@ private:
     std::size_t room_for_run() const;
     std::size_t room_for_threshold() const;
     void stop_room_prefault();
+    void reserve_room(std::size_t faces, std::size_t vertices, std::size_t limits);
     void prefault_room(std::size_t faces, std::size_t vertices);
     static double triangles_down_to(double edge, double lowest);
     std::vector<double> base_mean_edges(double& shortest) const;
     int uniform_start_level() const;
     bool uniform_start_hopeless(int level) const;
-    bool uniform_start_overflows(int level, std::uint64_t lowest_key) const;
-    void refine_uniform_start();
+    int uniform_start_to_try() const;
+    bool uniform_start_overflows(int level, const std::optional<Candidate>& lowest) const;
+    void make_uniform_levels(int level, std::optional<Candidate>& lowest);
+    void refine_uniform_start(int level);
     void undo_uniform_start();
     bool split(const Candidate& c);
     void undo(const std::vector<VertexId>& vertices);

@@ -33,6 +33,24 @@ std::size_t LodDriver::room_for_threshold() const {
     return static_cast<std::size_t>(std::min(triangles, static_cast<double>(room_for_run())));
 }
 
+// Room for the run in the mesh (face and vertex slots, `limits` entries of its table of limits) and
+// in the driver, with the threads that fault it in ahead started where they are not running: again
+// after a uniform start undone, whose copy of the mesh has a table of limits without the room and
+// whose assignment stopped the threads (a run on from there faulted the rest of its room in on its
+// own thread, and its table grew as it went).
+void LodDriver::reserve_room(std::size_t faces, std::size_t vertices, std::size_t limits) {
+    mesh_.reserve(faces, vertices);
+    mesh_.reserve_limits(limits);
+    // The start's limits then land all over the table: its pages are faulted in on another core
+    // meanwhile (33 ms of the main thread's time at 1.5M on a machine with slow page faults).
+    if (!limit_prefault_) limit_prefault_ = std::make_unique<Prefault>(std::vector{mesh_.limit_table()});
+    if (face_added_.size() < faces) {
+        stop_room_prefault();
+        face_added_.resize(faces);
+    }
+    if (!prefault_) prefault_room(faces, vertices);
+}
+
 // The room reserved for the run (face and vertex slots), in the mesh and in the driver's arrays, and
 // room for its candidates, faulted in on another core ahead of the splits that fill it. Before the
 // uniform start, whose new vertices fill the driver's arrays too (refine_uniform faults in the mesh's
@@ -55,7 +73,10 @@ void LodDriver::prefault_room(std::size_t faces, std::size_t vertices) {
     // each band it works off; at most 1.0 per triangle of the budget are held at once there (1.51M),
     // so 1.25 leaves room to spare without faulting in pages never used (a third of the pool was).
     // More than that grows the pool, whose new chunks then fault in as they are written.
-    room.push_back(bands_.reserve(faces + faces / 4));
+    // All of the pool, not only what reserve adds: after a uniform start undone (whose faulting-in
+    // stopped part way) the pool has the room, untouched for the most part, and reserve adds none.
+    bands_.reserve(faces + faces / 4);
+    for (std::span<std::byte> block : bands_.memory()) room.push_back(block);
     // The longest band: 457k candidates there (30% of the budget); a longer one grows the list.
     for (ZeroedVector<Candidate>* list : {&band_list_, &merged_}) {
         list->reserve(faces * 2 / 5);

@@ -19,6 +19,7 @@
 #include "rgb/mesh/operators.h"
 #include "rgb/support/parallel.h"
 #include "rgb/values/loop_geometry.h"
+#include "rgb/values/loop_split.h"
 
 namespace rgb {
 
@@ -76,6 +77,14 @@ std::vector<double> LodDriver::base_mean_edges(double& shortest) const {
     return mean_edge;
 }
 
+// The level of the uniform start to try, 0 for none: a budget run's (every split wanted) that has
+// not proved wrong already, unless uniform_start_hopeless.
+int LodDriver::uniform_start_to_try() const {
+    if (!settings_.uniform_start || settings_.threshold > 0.0 || uniform_start_failed_) return 0;
+    const int level = uniform_start_level();
+    return level == 0 || uniform_start_hopeless(level) ? 0 : level;
+}
+
 // Whether the start would surely prove wrong, by an estimate from the base mesh alone (it decides only
 // whether to try: the result is the same either way). Its lowest vertex's edge is about the base's
 // shortest edge halved at each level below `level`; before the ordinary run comes down to that value,
@@ -97,33 +106,72 @@ bool LodDriver::uniform_start_hopeless(int level) const {
     return false;
 }
 
-// Whether the start, made, would surely prove wrong: the same estimate as uniform_start_hopeless,
-// now from what the start knows exactly, the edges of its finest level (Loop's positions, which
-// smoothing draws in where a region is small or curved) and its lowest vertex's band. The ordinary
-// run holds every vertex outranking that one, about 4^d triangles for a face of the start whose
-// edges are 2^d times as long on average. Over the corpus of budget_corpus.sh that estimate was
-// 0.78-1.28 times the triangles the run held when it passed below the lowest vertex; every start
-// that proved wrong had an estimate at least 1.40 times its budget, every one that held at most 1.03.
-// Above 1.25 times the budget the start is undone at once (its result would be the same; it would
-// prove wrong only at the budget's end, after a whole run on top of it: half the engine time of
-// `budget 700000` on the bunny). Only with the default value, whose halving per level it assumes.
-bool LodDriver::uniform_start_overflows(int level, std::uint64_t lowest_key) const {
+// Whether the start at `level` would surely prove wrong: the same estimate as
+// uniform_start_hopeless, from what the start knows exactly, the edges of its finest level (Loop's
+// positions, which smoothing draws in where a region is small or curved) and its lowest vertex's
+// band. The ordinary run holds every vertex outranking that one, about 4^d triangles for a face of
+// the start whose edges are 2^d times as long on average. Over the corpus of budget_corpus.sh that
+// estimate was 0.78-1.28 times the triangles the run held when it passed below the lowest vertex;
+// every start that proved wrong had an estimate at least 1.40 times its budget, every one that held
+// at most 1.03. Above 1.25 times the budget the start is undone at once (its result would be the
+// same; it would prove wrong only at the budget's end, after a whole run on top of it: half the
+// engine time of `budget 700000` on the bunny). Only with the default value, whose halving per level
+// it assumes.
+//
+// Judged from the mesh one level short of the start (made, with its limits and keys; `lowest` its
+// lowest vertex, none at the base), before the finest level is made, which is three quarters of the
+// start's cost: the finest level's vertices split this mesh's edges (split_position, the bits
+// refine_uniform gives them), their keys' bands are those of these edges' values, and each face of
+// this mesh becomes four. Making the finest level before judging it was about a quarter of the engine
+// time of `budget 1500000` on the machined part, whose start is undone (docs/benchmarks.md). Every
+// vertex of this mesh has its limit cached (learn_uniform_limits), so split_position only reads.
+bool LodDriver::uniform_start_overflows(int level, const std::optional<Candidate>& lowest) const {
     if (!plain_edge_length_) return false;
-    const double lowest = std::exp2((static_cast<double>(lowest_key >> 48) - 32768.0) / 2.0);  // its band's least value
+    if (lowest && lowest->key == 0) return true;
+    const int coarser = level - 1;
     const std::size_t faces = mesh_.face_capacity();
     const std::size_t blocks = parallel_blocks(faces, 8192);
+    // The finest vertices' least band (a key's band is the least of its own and its ends', so the
+    // lowest vertex's is the least of every vertex's own), or none wanted.
+    std::vector<std::uint64_t> least_band(blocks, value_band(std::numeric_limits<double>::infinity()));
+    std::vector<std::uint8_t> unwanted(blocks, 0);
+    parallel_blocks_for(faces, blocks, [&](std::size_t block, std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+            const FaceId f(static_cast<std::uint32_t>(i));
+            if (!mesh_.is_live(f)) continue;
+            for (int k = 0; k < 3; ++k) {
+                const HalfedgeId h = Mesh::halfedge(f, k);
+                const double value = plain_edge_length(mesh_.from_vertex(h), mesh_.to_vertex(h), coarser);
+                if (!(value > settings_.threshold)) unwanted[block] = 1;
+                least_band[block] = std::min(least_band[block], value_band(value));
+            }
+        }
+    });
+    if (std::find(unwanted.begin(), unwanted.end(), 1) != unwanted.end()) return true;
+    std::uint64_t band = *std::min_element(least_band.begin(), least_band.end());
+    if (lowest) band = std::min(band, lowest->key >> 48);
+    const double least = std::exp2((static_cast<double>(band) - 32768.0) / 2.0);  // the band's least value
     std::vector<double> triangles(blocks, 0.0);
     parallel_blocks_for(faces, blocks, [&](std::size_t block, std::size_t begin, std::size_t end) {
+        // A face's edges' mean length, as a sum of thirds. The finer mesh may list a face's corners
+        // from another one, so the sum may differ in its last bit from one taken there, which changes
+        // a face's estimate only at an exact power of two: the totals were those of the finer mesh on
+        // every mesh of budget_corpus.sh at budgets of 2,000 to 3,000,000.
+        auto mean = [](const glm::dvec3& p, const glm::dvec3& q, const glm::dvec3& r) {
+            return glm::distance(p, q) / 3.0 + glm::distance(q, r) / 3.0 + glm::distance(r, p) / 3.0;
+        };
         double sum = 0.0;
         for (std::size_t i = begin; i < end; ++i) {
             const FaceId f(static_cast<std::uint32_t>(i));
             if (!mesh_.is_live(f)) continue;
-            double mean = 0.0;
+            glm::dvec3 corner[3], split[3];  // at `level`: the corners' control points, the new vertices on the edges from them
             for (int k = 0; k < 3; ++k) {
                 const HalfedgeId h = Mesh::halfedge(f, k);
-                mean += plain_edge_length(mesh_.from_vertex(h), mesh_.to_vertex(h), level) / 3.0;
+                corner[k] = known_control_point(mesh_.from_vertex(h), level);
+                split[k] = split_position(mesh_, h);
             }
-            sum += triangles_down_to(mean, lowest);
+            for (int k = 0; k < 3; ++k) sum += triangles_down_to(mean(corner[k], split[k], split[(k + 2) % 3]), least);
+            sum += triangles_down_to(mean(split[0], split[1], split[2]), least);
         }
         triangles[block] = sum;
     });
@@ -132,23 +180,15 @@ bool LodDriver::uniform_start_overflows(int level, std::uint64_t lowest_key) con
     return total > 1.25 * static_cast<double>(settings_.max_triangles);
 }
 
-// Every vertex of the uniform levels, through refine_uniform, with its key as a split would give it
-// (a key depends on the vertex's edge alone). The run then goes on from that mesh; the result is the
-// same if every one of those vertices is wanted and outranks the split where the budget stops (then
-// the ordinary run holds them all, and from there the two make the same splits), which split_next
-// checks against the lowest of them.
-void LodDriver::refine_uniform_start() {
-    const int level = uniform_start_level();
-    if (level == 0 || uniform_start_hopeless(level)) return;
-    // The mesh before the start (the base: a run removes the old detail first), to go back to in one
-    // copy should the start prove wrong, rather than by removing its vertices one by one.
-    before_uniform_start_ = std::make_unique<Mesh>(mesh_);
+// The uniform levels up to `level` from the mesh as it is (the base, or the levels below made), with
+// their limits and their vertices' keys as a split would give them (a key depends on the vertex's
+// edge alone), `lowest` the lowest of those vertices so far.
+void LodDriver::make_uniform_levels(int level, std::optional<Candidate>& lowest) {
     keys_wait_ = true;
     refine_uniform(mesh_, level);
     keys_wait_ = false;
     if (plain_edge_length_) learn_uniform_limits(level);
     // Level by level (refine_uniform makes them in that order): a vertex's key needs its parents'.
-    std::optional<Candidate> lowest;
     for (std::size_t first = 0; first < unkeyed_.size();) {
         const int parent_level = mesh_.level(unkeyed_[first].v) - 1;
         std::vector<Edge> parents;
@@ -166,14 +206,32 @@ void LodDriver::refine_uniform_start() {
     }
     steps_ += unkeyed_.size();
     unkeyed_.clear();
+}
+
+// Every vertex of the uniform levels up to `level`, through refine_uniform, keyed. The run then goes
+// on from that mesh; the result is the same if every one of those vertices is wanted and outranks the
+// split where the budget stops (then the ordinary run holds them all, and from there the two make
+// the same splits), which split_next checks against the lowest of them. The mesh before it is in
+// before_uniform_start_, to go back to.
+void LodDriver::refine_uniform_start(int level) {
+    std::optional<Candidate> lowest;
+    // One level short first, where uniform_start_overflows can judge the whole start (refine_uniform
+    // goes level by level: the mesh is the one it would have made on its way).
+    make_uniform_levels(level - 1, lowest);
+    if (uniform_start_overflows(level, lowest)) {
+        undo_uniform_start();
+        return;
+    }
+    make_uniform_levels(level, lowest);
     uniform_lowest_ = lowest;
-    if (lowest->key == 0 || uniform_start_overflows(level, lowest->key)) undo_uniform_start();
+    if (lowest->key == 0) undo_uniform_start();
 }
 
 // The uniform start held a vertex the ordinary run would not have: back to the mesh the run started
 // from, copied before the start, with no candidates, no limits known by slot (the copy's table of
 // limits holds only what the base had), and the report of before the start, for the ordinary way from
-// there. The copy keeps the arrays' room (a vector assigned a shorter one keeps its capacity).
+// there. The copy keeps the arrays' room (a vector assigned a shorter one keeps its capacity), but
+// not the table of limits' (copied before it was reserved): start_refining reserves it again.
 void LodDriver::undo_uniform_start() {
     uniform_start_failed_ = true;
     uniform_lowest_.reset();
