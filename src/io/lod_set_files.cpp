@@ -28,6 +28,13 @@ std::vector<glm::dvec3> positions_by_slot(const rgb::Mesh& mesh, const std::vect
     return out;
 }
 
+// Caches the limits of the mesh's live vertices, given in slot order.
+void cache_limits(const rgb::Mesh& mesh, const std::vector<glm::dvec3>& limits) {
+    mesh.reserve_limits(mesh.num_vertices());
+    std::size_t k = 0;
+    for (rgb::VertexId v : mesh.vertices()) mesh.cache_limit(v, limits[k++]);
+}
+
 // Makes and writes the levels; `written` collects the files as they are written.
 LodSet make_levels(const rgb::Mesh& input, const std::vector<ScriptLine>& requests, const LodSetOptions& options,
                    std::vector<std::string>& written) {
@@ -39,12 +46,20 @@ LodSet make_levels(const rgb::Mesh& input, const std::vector<ScriptLine>& reques
     const bool gltf_set = writing && format == OutputFormat::Gltf;
     LodSet set;
     set.size = rgb::bounding_box_diagonal(input.base());
-    // Each level is a function of its request alone, so LOD0 is made (and written) on this thread
-    // while the coarser levels, about a third of its work together, are made on another, in order.
+    // Each level is a function of its request alone, so LOD0 is made on this thread while the
+    // coarser levels, about a third of its work together, are made and written on another, in order.
+    // LOD0's own file is written while the error is measured: the two take about as long.
     const std::size_t n = requests.size();
     std::vector<std::optional<LodSetLevel>> made(n);
     std::vector<GltfMesh> gltf(gltf_set ? n : 0);  // for a glTF set: the levels, written together at the end
-    std::vector<std::string> files(n);             // the file each level was written to, or none
+    // Never on two threads at once: the coarser levels are written on one, LOD0 later on one.
+    const auto write = [&](const rgb::Mesh& mesh, std::size_t i, const ExportMesh& flat) {
+        const std::string file = lod_file_name(*options.output, i);
+        if (format == OutputFormat::Obj) save_mesh(mesh, file, options.save);
+        else save_export_mesh(flat, file, format, options.save.msh);
+        written.push_back(file);
+    };
+    std::optional<ExportMesh> lod0_file;  // LOD0 as written, kept until it is
     const auto make = [&](std::size_t i) {
         LodSetLevel& level = made[i].emplace(requests[i], lod_set_level(input, requests[i], options.max_triangles));
         if (gltf_set) {
@@ -55,36 +70,31 @@ LodSet make_levels(const rgb::Mesh& input, const std::vector<ScriptLine>& reques
         ExportMesh flat = export_mesh(level.mesh, options.save);
         level.positions = flat.positions;
         if (!writing) return;
-        const std::string file = lod_file_name(*options.output, i);
-        if (format == OutputFormat::Obj) save_mesh(level.mesh, file, options.save);
-        else save_export_mesh(flat, file, format, options.save.msh);
-        files[i] = file;
+        if (i > 0) return write(level.mesh, i, flat);
+        // The OBJ writer asks the mesh for limits, which it caches, while the measure reads the mesh:
+        // with every limit cached first (the positions just computed) the writer only reads it, and
+        // computes none again. With displayed positions it would compute some: written now.
+        if (format == OutputFormat::Obj) {
+            if (options.save.positions != SavedPositions::Limit) return write(level.mesh, 0, flat);
+            cache_limits(level.mesh, level.positions);
+        }
+        lod0_file = std::move(flat);
     };
     // Told of the coarser levels once they are all made: a stop asked for then takes effect there.
     step(0);
     std::atomic<bool> lod0_failed = false;  // then the coarser levels are not wanted
-    const auto collect_files = [&] {
-        for (const std::string& file : files)
-            if (!file.empty()) written.push_back(file);
-    };
-    try {
-        rgb::parallel_invoke(
-            [&] {
-                try {
-                    make(0);
-                } catch (...) {
-                    lod0_failed = true;
-                    throw;
-                }
-            },
-            [&] {
-                for (std::size_t i = 1; i < n && !lod0_failed; ++i) make(i);
-            });
-    } catch (...) {
-        collect_files();
-        throw;
-    }
-    collect_files();
+    rgb::parallel_invoke(
+        [&] {
+            try {
+                make(0);
+            } catch (...) {
+                lod0_failed = true;
+                throw;
+            }
+        },
+        [&] {
+            for (std::size_t i = 1; i < n && !lod0_failed; ++i) make(i);
+        });
     for (std::size_t i = 0; i < n; ++i) {
         if (i > 0) step(i);
         set.levels.push_back(std::move(*made[i]));
@@ -101,7 +111,12 @@ LodSet make_levels(const rgb::Mesh& input, const std::vector<ScriptLine>& reques
         measured.push_back(&level.mesh);
         corners.push_back(positions_by_slot(level.mesh, level.positions));
     }
-    const std::vector<rgb::SurfaceError> errors = rgb::surface_errors_at(measured, corners);
+    std::vector<rgb::SurfaceError> errors;
+    rgb::parallel_invoke([&] { errors = rgb::surface_errors_at(measured, corners); },
+                         [&] {
+                             if (lod0_file) write(set.levels[0].mesh, 0, *lod0_file);
+                         });
+    lod0_file.reset();
     std::vector<double> error_values;
     for (std::size_t i = 0; i < set.levels.size(); ++i) error_values.push_back(set.levels[i].error = errors[i].max_error);
     const std::vector<double> coverage = switch_coverage(error_values, set.size);

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -322,6 +323,20 @@ TEST_F(HostileFiles, TheOutputIsCheckedBeforeTheWork) {
         EXPECT_NE(run.output.find("cannot save " + refused), std::string::npos) << command[0] << ": " << run.output;
         EXPECT_EQ(run.output.find("would make about"), std::string::npos) << command[0] << ": " << run.output;
     }
+}
+
+// A set of OBJ files whose finest level cannot be written leaves none of its files: the coarser
+// levels are written first, LOD0 while the error is measured, and a file-size limit of 8 KiB lets the
+// small ones through but not LOD0 (22 KiB).
+TEST_F(HostileFiles, ASetWhoseFinestLevelCannotBeWrittenLeavesNoFile) {
+    const std::string in = write_file("octahedron.obj", rgbio::test::kOctahedron);
+    const Outcome run = run_rgbsub({"lods", in, "-o", path("lv.obj"), "--levels", "3,1,0"}, "ulimit -f 16;");
+    EXPECT_EQ(run.exit_code, cli::exit_io_failure) << run.output;
+    EXPECT_NE(run.output.find("cannot save " + path("lv_LOD0.obj")), std::string::npos) << run.output;
+    std::vector<std::string> left;
+    for (const auto& entry : std::filesystem::directory_iterator(path("")))
+        if (entry.path().filename() != "octahedron.obj") left.push_back(entry.path().filename().string());
+    EXPECT_TRUE(left.empty()) << left.size() << " files left, the first " << left.front();
 }
 
 // A state that says format 2 but uses the -as- records of format 3 is bad input; before, it was
