@@ -24,6 +24,7 @@
 // the hierarchy (base-space positions, levels, values of uniform meshes): no storage order or history
 // reaches it.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -48,16 +49,13 @@ inline std::uint64_t value_band(double value) {
     return static_cast<std::uint64_t>(std::clamp(half_octave(value), -32767L, 32767L) + 32768L);
 }
 
-// The low 21 bits of x spread to every third bit position (Morton interleaving).
-inline std::uint64_t spread_bits(std::uint64_t x) {
-    x &= 0x1fffff;
-    x = (x | (x << 32)) & 0x1f00000000ffffull;
-    x = (x | (x << 16)) & 0x1f0000ff0000ffull;
-    x = (x | (x << 8)) & 0x100f00f00f00f00full;
-    x = (x | (x << 4)) & 0x10c30c30c30c30c3ull;
-    x = (x | (x << 2)) & 0x1249249249249249ull;
-    return x;
-}
+// Each bit b of a byte moved to bit 3b (Morton interleaving), for the bytes of a grid coordinate.
+inline constexpr std::array<std::uint32_t, 256> kSpreadByte = [] {
+    std::array<std::uint32_t, 256> spread{};
+    for (std::uint32_t byte = 0; byte < 256; ++byte)
+        for (std::uint32_t bit = 0; bit < 8; ++bit) spread[byte] |= ((byte >> bit) & 1u) << (3 * bit);
+    return spread;
+}();
 
 // The base mesh's bounding box mapped onto the 16-bit grid of the Morton order.
 struct MortonFrame {
@@ -70,20 +68,25 @@ struct MortonFrame {
         frame.scale = double((1 << kBitsPerAxis) - 1) / glm::max(hi - lo, glm::dvec3(1e-300));
         return frame;
     }
-    // The Morton code of a base-space point (x in the highest bit of each triple).
+    // The grid coordinate of a cell position: clamped to [0, 65535] (a point on or past the box's
+    // far side in the last cell), then truncated.
+    static std::uint32_t grid(double cell) { return static_cast<std::uint32_t>(std::min(std::max(0.0, cell), 65535.0)); }
+    // The Morton code of a base-space point (x in the highest bit of each triple): the three
+    // coordinates' low bytes interleaved into the low 24 bits, their high bytes into the 24 above.
+    // Per byte from a table: a key is computed for every edge a split makes.
     std::uint64_t code(const glm::dvec3& point) const {
-        const glm::dvec3 cell = (point - lo) * scale;
-        std::uint64_t morton = 0;
-        for (int i = 0; i < 3; ++i) morton |= spread_bits(static_cast<std::uint64_t>(std::clamp(cell[i], 0.0, 65535.0))) << (2 - i);
-        return morton;
+        const std::uint32_t x = grid((point.x - lo.x) * scale.x), y = grid((point.y - lo.y) * scale.y),
+                            z = grid((point.z - lo.z) * scale.z);
+        const std::uint32_t low = kSpreadByte[x & 0xff] << 2 | kSpreadByte[y & 0xff] << 1 | kSpreadByte[z & 0xff];
+        const std::uint32_t high = kSpreadByte[x >> 8] << 2 | kSpreadByte[y >> 8] << 1 | kSpreadByte[z >> 8];
+        return std::uint64_t(high) << 24 | low;
     }
 };
 
-// The key of a wanted split (steps 1-3 above) from its value, its base-space midpoint and its
-// endpoints' keys.
-inline std::uint64_t split_key(const MortonFrame& frame, double value, const glm::dvec3& midpoint, std::uint64_t end_key_a,
-                               std::uint64_t end_key_b) {
-    return std::min((value_band(value) << 48) | frame.code(midpoint), std::min(end_key_a, end_key_b));
+// The key of a wanted split (steps 1-3 above) from its value, its base-space midpoint and the lesser
+// of its endpoints' keys.
+inline std::uint64_t split_key(const MortonFrame& frame, double value, const glm::dvec3& midpoint, std::uint64_t ends_key) {
+    return std::min((value_band(value) << 48) | frame.code(midpoint), ends_key);
 }
 
 // Whether the split (key x, base-space midpoint mx) comes before (y, my): the higher key, and between

@@ -85,7 +85,8 @@ SplitSurroundings LodDriver::surroundings(const Candidate& c) const {
 }
 
 std::uint64_t LodDriver::edge_key(VertexId a, VertexId b, int level) {
-    if (std::min(key_of(a), key_of(b)) == 0) return 0;
+    const std::uint64_t ends_key = std::min(key_of(a), key_of(b));
+    if (ends_key == 0) return 0;
     double value = 0.0;
     if (plain_edge_length_) {
         for (VertexId v : {a, b})
@@ -97,19 +98,9 @@ std::uint64_t LodDriver::edge_key(VertexId a, VertexId b, int level) {
         value = settings_.value(mesh_, a, b, level);
     }
     bool level_capped = false;
-    const std::uint64_t key = key_from_value(a, b, level, value, level_capped);
+    const std::uint64_t key = key_from_value(a, b, level, value, ends_key, level_capped);
     if (level_capped) report_.level_cap_bound = true;
     return key;
-}
-
-// Only reads, so that keys can be computed on several threads.
-std::uint64_t LodDriver::key_from_value(VertexId a, VertexId b, int level, double value, bool& level_capped) const {
-    if (!(value > settings_.threshold)) return 0;
-    if (level >= settings_.max_level) {
-        level_capped = true;
-        return 0;
-    }
-    return split_key(morton_, value, midpoint(a, b), key_of(a), key_of(b));
 }
 
 void LodDriver::vertex_added(const Mesh&, VertexId v, VertexId a, VertexId b) {

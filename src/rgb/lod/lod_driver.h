@@ -132,7 +132,16 @@ private:
     };
     std::uint64_t edge_key(VertexId a, VertexId b, int level);
     void edge_keys(std::span<const Edge> edges, std::vector<std::uint64_t>& keys);
-    std::uint64_t key_from_value(VertexId a, VertexId b, int level, double value, bool& level_capped) const;
+    // The key of the edge from its value and the lesser of its ends' keys (not 0). Only reads, so
+    // that keys can be computed on several threads; here, so that both callers have it inline.
+    std::uint64_t key_from_value(VertexId a, VertexId b, int level, double value, std::uint64_t ends_key, bool& level_capped) const {
+        if (!(value > settings_.threshold)) return 0;
+        if (level >= settings_.max_level) {
+            level_capped = true;
+            return 0;
+        }
+        return split_key(morton_, value, midpoint(a, b), ends_key);
+    }
     double plain_edge_length(VertexId a, VertexId b, int level) const;
     glm::dvec3 midpoint(VertexId a, VertexId b) const { return 0.5 * (base_space_[a.idx] + base_space_[b.idx]); }
     std::uint64_t key_of(VertexId v) const { return v.idx < vertex_key_.size() ? vertex_key_[v.idx] : 0; }

@@ -37,8 +37,9 @@ void LodDriver::edge_keys(std::span<const Edge> edges, std::vector<std::uint64_t
         bool level_capped = false;
         for (std::size_t i = begin; i < end; ++i) {
             const Edge& e = edges[i];
-            if (std::min(key_of(e.a), key_of(e.b)) == 0) continue;
-            keys[i] = key_from_value(e.a, e.b, e.level, plain_edge_length(e.a, e.b, e.level), level_capped);
+            const std::uint64_t ends_key = std::min(key_of(e.a), key_of(e.b));
+            if (ends_key == 0) continue;
+            keys[i] = key_from_value(e.a, e.b, e.level, plain_edge_length(e.a, e.b, e.level), ends_key, level_capped);
         }
         capped[block] = level_capped;
     });
@@ -82,7 +83,7 @@ void LodDriver::learn_limit(VertexId v) {
 
 glm::dvec3 LodDriver::known_control_point(VertexId v, int level) const {
     if (level <= mesh_.level(v)) return mesh_.insertion_position(v);
-    return control_point(mesh_, v, level, limit_[v.idx]);
+    return untagged_control_point(mesh_, v, level, limit_[v.idx]);  // plain_edge_length_: no vertex is tagged
 }
 
 }  // namespace rgb

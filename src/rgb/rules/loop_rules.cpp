@@ -86,10 +86,4 @@ glm::dvec3 boundary_limit(const glm::dvec3& centre, const glm::dvec3& u, const g
     return (2.0 / 3.0) * centre + (1.0 / 6.0) * (u + w);
 }
 
-glm::dvec3 closed_form(const glm::dvec3& own_level, const glm::dvec3& limit, double gamma, int steps) {
-    double g = 1.0;
-    for (int j = 0; j < steps; ++j) g *= gamma;
-    return g * own_level + (1.0 - g) * limit;
-}
-
 }  // namespace rgb

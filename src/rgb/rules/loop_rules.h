@@ -28,7 +28,12 @@ glm::dvec3 boundary_edge_point(const glm::dvec3& a, const glm::dvec3& b);
 glm::dvec3 interior_limit(const glm::dvec3& centre, std::span<glm::dvec3> ring);
 // The limit of a boundary vertex from its two boundary neighbours at its own level.
 glm::dvec3 boundary_limit(const glm::dvec3& centre, const glm::dvec3& u, const glm::dvec3& w);
-// Spec §4.2: p^(l+j) = gamma^j p^l + (1 - gamma^j) p_inf.
-glm::dvec3 closed_form(const glm::dvec3& own_level, const glm::dvec3& limit, double gamma, int steps);
+// Spec §4.2: p^(l+j) = gamma^j p^l + (1 - gamma^j) p_inf. Inline: the LOD driver's keys and every
+// split's stencil take a few of these each.
+inline glm::dvec3 closed_form(const glm::dvec3& own_level, const glm::dvec3& limit, double gamma, int steps) {
+    double g = 1.0;
+    for (int j = 0; j < steps; ++j) g *= gamma;
+    return g * own_level + (1.0 - g) * limit;
+}
 
 }  // namespace rgb

@@ -51,9 +51,8 @@ bool tagged(const Mesh& mesh, VertexId v) {
 // p^k(v) for k > level(v), the limit given by `limit` (cached or not).
 template <class Limit>
 glm::dvec3 later_control_point(const Mesh& mesh, VertexId v, int k, Limit&& limit) {
+    if (!tagged(mesh, v)) return untagged_control_point(mesh, v, k, limit());
     const int l = mesh.level(v);
-    if (!tagged(mesh, v))
-        return closed_form(mesh.insertion_position(v), limit(), loop_gamma(mesh.uniform_valence(v), mesh.is_boundary(v)), k - l);
     // One rule with a two-term closed form (a crease or corner for ever): spec §4.2's form with the
     // rule's eigenvalue, from the cached limit. Otherwise the closed forms of several regimes or a
     // dart's mask: the evaluator's, which computes the same bits for the single-rule case.
@@ -82,6 +81,10 @@ glm::dvec3 limit_position(const Mesh& mesh, VertexId v) {
 
 void limit_position_where_uniform(const Mesh& mesh, VertexId v) {
     if (!mesh.has_cached_limit(v) && ring_is_direct(mesh, v)) limit_position(mesh, v);
+}
+
+glm::dvec3 untagged_control_point(const Mesh& mesh, VertexId v, int k, const glm::dvec3& limit) {
+    return closed_form(mesh.insertion_position(v), limit, loop_gamma(mesh.uniform_valence(v), mesh.is_boundary(v)), k - mesh.level(v));
 }
 
 glm::dvec3 control_point(const Mesh& mesh, VertexId v, int k) {

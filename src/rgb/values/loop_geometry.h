@@ -31,6 +31,11 @@ glm::dvec3 control_point(const Mesh& mesh, VertexId v, int k);
 // the lookup in the mesh's limit table.
 glm::dvec3 control_point(const Mesh& mesh, VertexId v, int k, const glm::dvec3& limit);
 
+// The same for a vertex whose rules the base mesh's tags leave as Loop's (every vertex of a mesh
+// without sharp features) and k > level(v): the closed form alone, for a caller that knows this of
+// every vertex it asks about (the LOD driver's keys).
+glm::dvec3 untagged_control_point(const Mesh& mesh, VertexId v, int k, const glm::dvec3& limit);
+
 // The level at which v is displayed: max(level(v), min level of its incident edges), red included.
 int display_level(const Mesh& mesh, VertexId v);
 
