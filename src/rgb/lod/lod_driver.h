@@ -197,7 +197,7 @@ private:
     // the canonical order and a budget stops at exactly the right one, without a heap over everything.
     BandLists<Candidate> bands_;
     ZeroedVector<Candidate> band_list_;  // the current band's, once sorted
-    ZeroedVector<Candidate> merged_;     // where a long band's sorted halves are merged
+    ZeroedVector<Candidate> band_spare_;  // the radix sort's second list (sort_band_list)
     std::size_t band_ = 0, band_next_ = 0;
     bool band_sorted_ = false;
     std::priority_queue<Candidate, std::vector<Candidate>, Lower> queue_;

@@ -78,7 +78,7 @@ void LodDriver::prefault_room(std::size_t faces, std::size_t vertices) {
     bands_.reserve(faces + faces / 4);
     for (std::span<std::byte> block : bands_.memory()) room.push_back(block);
     // The longest band: 457k candidates there (30% of the budget); a longer one grows the list.
-    for (ZeroedVector<Candidate>* list : {&band_list_, &merged_}) {
+    for (ZeroedVector<Candidate>* list : {&band_list_, &band_spare_}) {
         list->reserve(faces * 2 / 5);
         room.push_back(std::as_writable_bytes(std::span(list->data(), list->capacity())));
     }

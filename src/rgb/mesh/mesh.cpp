@@ -109,9 +109,22 @@ HalfedgeId Mesh::find_halfedge(VertexId a, VertexId b) const {
     return HalfedgeId();
 }
 
+// One walk around a rather than a walk around each end: every face at a that holds the edge holds it
+// as a->b (h itself) or as b->a (the halfedge before h, whose opposite is a->b where there is one), so
+// the walk stops at the edge's first face, and an edge missing costs one ring instead of two.
 HalfedgeId Mesh::find_edge(VertexId a, VertexId b) const {
-    HalfedgeId h = find_halfedge(a, b);
-    return h.valid() ? h : find_halfedge(b, a);
+    if (!is_live(a) || !is_live(b)) return HalfedgeId();
+    const HalfedgeId start = vertex_halfedge_[a.idx];
+    HalfedgeId h = start;
+    do {
+        const std::array<VertexId, 3>& corners = face_vertices_[h.idx / 3];
+        const std::uint32_t corner = h.idx % 3;
+        const HalfedgeId before = prev(h), turned = opposite(before);  // turned: ccw_rotated(h)
+        if (corners[(corner + 1) % 3] == b) return h;
+        if (corners[(corner + 2) % 3] == b) return turned.valid() ? turned : before;  // before is b->a
+        h = turned;
+    } while (h.valid() && h != start);
+    return HalfedgeId();
 }
 
 int Mesh::corner_of(FaceId f, VertexId v) const {
