@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <filesystem>
+#include <mutex>
 #include <optional>
 #include <system_error>
 #include <variant>
@@ -56,11 +57,14 @@ LodSet make_levels(const rgb::Mesh& input, const std::vector<ScriptLine>& reques
     const std::size_t n = requests.size();
     std::vector<std::optional<LodSetLevel>> made(n);
     std::vector<GltfMesh> gltf(gltf_set ? n : 0);  // for a glTF set: the levels, written together at the end
-    // Never on two threads at once: the coarser levels are written on one, LOD0 later on one.
+    // LOD0 with displayed positions is written on its thread while the other writes the coarser
+    // levels, so the list of files written is shared.
+    std::mutex written_mutex;
     const auto write = [&](const rgb::Mesh& mesh, std::size_t i, const ExportMesh& flat) {
         const std::string file = lod_file_name(*options.output, i);
         if (format == OutputFormat::Obj) save_mesh(mesh, file, options.save);
         else save_export_mesh(flat, file, format, options.save.msh);
+        const std::lock_guard lock(written_mutex);
         written.push_back(file);
     };
     std::optional<ExportMesh> lod0_file;  // LOD0 as written, kept until it is
